@@ -1,0 +1,284 @@
+"""All forces on the boat at one instant: one compiled kernel over the force models.
+
+:func:`boat_forces` is a pure function of (time, generalised position and velocity, packed
+parameters, wind arrays). It calls the force models of this package and returns each term's
+wrench, the hinge moments and the generalised forces MuJoCo needs. The packing of
+:class:`~sailmujoco.params.BoatParams` into the flat array ``P`` (numba dispatches a flat
+array in well under a microsecond; a record of 60 fields takes many) is defined here too.
+
+Term order (rows of ``terms``), each a body-frame wrench about CO:
+``TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external")``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import hull as hull_geometry
+from .._jit import kernel
+from ..constants import GRAVITY
+from ..params import BoatParams
+from .added_mass import added_mass_velocity_terms
+from .damping import hull_damping
+from .foil import (foil_world_force, hydrofoil_coefficients, lift_drag_components,
+                   sail_coefficients, section_flow)
+from .hydrostatics import geometric_buoyancy, paper_restoring
+from .wind import wind_velocity
+
+TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external")
+T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT = range(len(TERMS))
+HYDROSTATIC_MODES = ("off", "paper", "geometric")
+
+# ---- layout of the packed parameter array P -------------------------------------------
+(P_RHO_W, P_RHO_A, P_NU_W, P_G, P_MASS, P_CG_X, P_CG_Z,
+ P_A1, P_A2, P_A3, P_A4, P_A5, P_A6,
+ P_D11, P_D22, P_D33, P_D55, P_D66, P_BF0, P_BL, P_OMEGA_ROLL, P_LENGTH, P_WETTED, P_FORM_K,
+ P_CROSSFLOW_CD,
+ P_RIGHTING_K, P_RIGHTING_SIN, P_K_HEAVE, P_K_PITCH,
+ P_KEEL_AREA, P_KEEL_AR, P_KEEL_TC, P_KEEL_CHORD, P_KEEL_X, P_KEEL_Z,
+ P_RUD_AREA, P_RUD_AR, P_RUD_TC, P_RUD_CHORD, P_RUD_X, P_RUD_Z,
+ P_SAIL_AREA, P_MAST_X, P_BOOM_Z, P_CE_AFT, P_CE_HEIGHT, P_SUCTION, P_STALL, P_CF_SAIL,
+ P_ON_SAIL, P_ON_KEEL, P_ON_RUDDER, P_HYDRO_MODE, P_ON_DAMPING, P_ON_ADDED, P_TANGENTIAL,
+ P_WIND_SPEED, P_WIND_FROM, P_CURRENT_E, P_CURRENT_N, P_WANDER_DT,
+ P_SIZE) = range(62)
+
+# ---- diagnostics (``diag`` output) ------------------------------------------------------
+(D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
+ D_WIND_X, D_WIND_Y, D_WIND_Z, D_CE_HEIGHT, D_SUBMERGED, D_CN, D_CT, D_SAIL_HINGE,
+ D_SIZE) = range(15)
+
+STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
+
+
+def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
+                    keel: bool = True, rudder: bool = True, damping: bool = True,
+                    added_mass: bool = True, sail_tangential: bool = True, wind=None,
+                    wander_dt: float = 0.1) -> np.ndarray:
+    """Flatten boat parameters and switches into the array the kernel reads."""
+    if hydrostatics not in HYDROSTATIC_MODES:
+        raise ValueError(f"unknown hydrostatics mode {hydrostatics!r}; "
+                         f"choose one of {HYDROSTATIC_MODES}")
+    h = p.hull
+    volume = p.displaced_volume
+    P = np.zeros(P_SIZE)
+    P[P_RHO_W], P[P_RHO_A], P[P_NU_W], P[P_G] = p.rho_water, p.rho_air, p.nu_water, GRAVITY
+    P[P_MASS], P[P_CG_X], P[P_CG_Z] = p.mass, p.cg_x, p.cg_z
+    P[P_A1:P_A6 + 1] = p.added_mass_diagonal
+    P[P_D11:P_D66 + 1] = p.linear_damping
+    P[P_BF0], P[P_BL], P[P_OMEGA_ROLL] = p.roll_friction, p.roll_lift, p.roll_frequency
+    P[P_LENGTH], P[P_WETTED], P[P_FORM_K] = h.length, p.wetted_surface, p.form_factor
+    P[P_CROSSFLOW_CD] = p.crossflow_cd
+    P[P_RIGHTING_K] = p.rho_water * GRAVITY * volume * p.gm_t
+    P[P_RIGHTING_SIN] = 1.0 if p.paper_righting == "sin" else 0.0
+    P[P_K_HEAVE] = p.rho_water * GRAVITY * hull_geometry.waterplane_area(h)
+    P[P_K_PITCH] = p.rho_water * GRAVITY * volume * hull_geometry.gm_longitudinal(h, p.cg_z)
+    for base, foil in ((P_KEEL_AREA, p.keel), (P_RUD_AREA, p.rudder)):
+        P[base:base + 6] = (foil.area, foil.aspect_ratio, foil.thickness_ratio, foil.chord,
+                            foil.x, foil.z)
+    s = p.sail
+    P[P_SAIL_AREA], P[P_MAST_X], P[P_BOOM_Z] = s.area, s.mast_x, s.boom_height
+    P[P_CE_AFT], P[P_CE_HEIGHT] = s.ce_aft, s.ce_height
+    P[P_SUCTION], P[P_STALL], P[P_CF_SAIL] = (s.suction_efficiency, s.suction_stall,
+                                              s.friction_coefficient)
+    P[P_ON_SAIL], P[P_ON_KEEL], P[P_ON_RUDDER] = float(sail), float(keel), float(rudder)
+    P[P_HYDRO_MODE] = HYDROSTATIC_MODES.index(hydrostatics)
+    P[P_ON_DAMPING], P[P_ON_ADDED], P[P_TANGENTIAL] = (float(damping), float(added_mass),
+                                                       float(sail_tangential))
+    if wind is not None:
+        P[P_WIND_SPEED], P[P_WIND_FROM] = wind.speed, wind.direction_from
+        P[P_CURRENT_E], P[P_CURRENT_N] = wind.current_east, wind.current_north
+    P[P_WANDER_DT] = wander_dt
+    return P
+
+
+@kernel
+def rotation_from_quat(q, out):
+    """Body->world rotation matrix of a unit quaternion (w, x, y, z) into ``out`` (3x3)."""
+    w, x, y, z = q[0], q[1], q[2], q[3]
+    n = w * w + x * x + y * y + z * z
+    s = 2.0 / n
+    out[0, 0] = 1.0 - s * (y * y + z * z)
+    out[0, 1] = s * (x * y - w * z)
+    out[0, 2] = s * (x * z + w * y)
+    out[1, 0] = s * (x * y + w * z)
+    out[1, 1] = 1.0 - s * (x * x + z * z)
+    out[1, 2] = s * (y * z - w * x)
+    out[2, 0] = s * (x * z - w * y)
+    out[2, 1] = s * (y * z + w * x)
+    out[2, 2] = 1.0 - s * (x * x + y * y)
+
+
+@kernel
+def _accumulate(terms, row, force, point):
+    """terms[row] += wrench of a body-frame ``force`` acting at body ``point`` (about CO)."""
+    terms[row, 0] += force[0]
+    terms[row, 1] += force[1]
+    terms[row, 2] += force[2]
+    terms[row, 3] += point[1] * force[2] - point[2] * force[1]
+    terms[row, 4] += point[2] * force[0] - point[0] * force[2]
+    terms[row, 5] += point[0] * force[1] - point[1] * force[0]
+
+
+@kernel
+def _point_flow(fluid_body, v, w, point, extra, out):
+    """Fluid velocity relative to a point: fluid - (v + w x point + extra) (body frame)."""
+    out[0] = fluid_body[0] - (v[0] + w[1] * point[2] - w[2] * point[1] + extra[0])
+    out[1] = fluid_body[1] - (v[1] + w[2] * point[0] - w[0] * point[2] + extra[1])
+    out[2] = fluid_body[2] - (v[2] + w[0] * point[1] - w[1] * point[0] + extra[2])
+
+
+@kernel
+def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
+                cd_table, gust_f, gust_phase, gust_amp, log_z, wander, external,
+                terms, diag, qfrc, madd):
+    """Every force on the boat for the state (qpos, qvel) at time t.
+
+    ``idx`` = (qpos index of the rudder hinge, its dof, qpos index of the sail hinge, its dof).
+    Writes ``terms`` (len(TERMS), 6) body wrenches about CO, ``diag`` (D_SIZE,), ``qfrc`` (nv,)
+    generalised forces, and ``madd`` (3, 3), the world-frame translational added-mass block
+    R diag(a1, a2, a3) R^T. Returns a status: STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
+    """
+    for k in range(qpos.shape[0]):
+        if not math.isfinite(qpos[k]):
+            return STATUS_NONFINITE
+    for k in range(qvel.shape[0]):
+        if not math.isfinite(qvel[k]):
+            return STATUS_NONFINITE
+    terms[:, :] = 0.0
+    qfrc[:] = 0.0
+    R = np.empty((3, 3))
+    rotation_from_quat(qpos[3:7], R)
+    if R[2, 2] < 0.0:
+        return STATUS_CAPSIZED  # |heel| or |pitch| beyond 90 deg
+
+    # body-frame velocities: v of CO, w, and v_r relative to the current (eq. 5)
+    v = np.empty(3)
+    w = np.empty(3)
+    current_b = np.empty(3)
+    for i in range(3):
+        v[i] = R[0, i] * qvel[0] + R[1, i] * qvel[1] + R[2, i] * qvel[2]
+        w[i] = qvel[3 + i]
+        current_b[i] = R[0, i] * P[P_CURRENT_E] + R[1, i] * P[P_CURRENT_N]
+    nu_r = np.empty(6)
+    for i in range(3):
+        nu_r[i] = v[i] - current_b[i]
+        nu_r[3 + i] = w[i]
+
+    zero3 = np.zeros(3)
+    flow = np.empty(3)
+    point = np.empty(3)
+    chord = np.zeros(3)
+    normal = np.zeros(3)
+    force = np.empty(3)
+    wrench = np.empty(6)
+
+    # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
+    if P[P_ON_KEEL] > 0.0:
+        point[0], point[1], point[2] = P[P_KEEL_X], 0.0, P[P_KEEL_Z]
+        _point_flow(current_b, v, w, point, zero3, flow)
+        chord[0], chord[1], chord[2] = 1.0, 0.0, 0.0
+        normal[0], normal[1], normal[2] = 0.0, 1.0, 0.0
+        wc, wn, speed, alpha = section_flow(flow, chord, normal)
+        re = speed * P[P_KEEL_CHORD] / P[P_NU_W]
+        c_l, c_d = hydrofoil_coefficients(alpha, re, P[P_KEEL_AR], P[P_KEEL_TC], alpha_grid,
+                                          log_re_grid, cl_table, cd_table)
+        q_area = 0.5 * P[P_RHO_W] * speed * speed * P[P_KEEL_AREA]
+        fc, fn = lift_drag_components(wc, wn, speed, q_area, c_l, c_d)
+        foil_world_force(fc, fn, chord, normal, force)
+        _accumulate(terms, T_KEEL, force, point)
+        diag[D_ALPHA_KEEL], diag[D_SPEED_KEEL] = alpha, speed
+
+    # ---- rudder: turns by sigma about -z through its CP (Wille eqs. 34-36) ----
+    if P[P_ON_RUDDER] > 0.0:
+        sigma = qpos[idx[0]]
+        point[0], point[1], point[2] = P[P_RUD_X], 0.0, P[P_RUD_Z]
+        _point_flow(current_b, v, w, point, zero3, flow)
+        chord[0], chord[1], chord[2] = math.cos(sigma), -math.sin(sigma), 0.0
+        normal[0], normal[1], normal[2] = math.sin(sigma), math.cos(sigma), 0.0
+        wc, wn, speed, alpha = section_flow(flow, chord, normal)
+        re = speed * P[P_RUD_CHORD] / P[P_NU_W]
+        c_l, c_d = hydrofoil_coefficients(alpha, re, P[P_RUD_AR], P[P_RUD_TC], alpha_grid,
+                                          log_re_grid, cl_table, cd_table)
+        q_area = 0.5 * P[P_RHO_W] * speed * speed * P[P_RUD_AREA]
+        fc, fn = lift_drag_components(wc, wn, speed, q_area, c_l, c_d)
+        foil_world_force(fc, fn, chord, normal, force)
+        _accumulate(terms, T_RUDDER, force, point)
+        diag[D_ALPHA_RUDDER], diag[D_SPEED_RUDDER] = alpha, speed
+
+    # ---- sail: turns by lambda about the mast (-z); flow at its CE (Wille eqs. 25-29) ----
+    sail_hinge = 0.0
+    if P[P_ON_SAIL] > 0.0:
+        lam = qpos[idx[2]]
+        lam_rate = qvel[idx[3]]
+        cl_, sl_ = math.cos(lam), math.sin(lam)
+        arm_x, arm_y = -P[P_CE_AFT] * cl_, P[P_CE_AFT] * sl_  # CE from the mast axis
+        point[0], point[1], point[2] = P[P_MAST_X] + arm_x, arm_y, P[P_CE_HEIGHT]
+        # hinge-rate velocity (-lambda_dot z) x arm = lambda_dot l2 (sin, cos, 0), eq. 26
+        extra = np.empty(3)
+        extra[0], extra[1], extra[2] = lam_rate * P[P_CE_AFT] * sl_, lam_rate * P[P_CE_AFT] * cl_, 0.0
+        z_ce = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
+        wind_w = np.empty(3)
+        wind_velocity(t, z_ce, P[P_WIND_SPEED], P[P_WIND_FROM], gust_f, gust_phase, gust_amp,
+                      log_z, P[P_WANDER_DT], wander, wind_w)
+        wind_b = np.empty(3)
+        for i in range(3):
+            wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
+        _point_flow(wind_b, v, w, point, extra, flow)
+        chord[0], chord[1], chord[2] = cl_, -sl_, 0.0
+        normal[0], normal[1], normal[2] = sl_, cl_, 0.0
+        wc, wn, speed, alpha = section_flow(flow, chord, normal)
+        c_n, c_t = sail_coefficients(alpha, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
+                                     P[P_CF_SAIL])
+        q_area = 0.5 * P[P_RHO_A] * speed * speed * P[P_SAIL_AREA]
+        foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, force)  # F = qA(C_T c - C_N n)
+        _accumulate(terms, T_SAIL, force, point)
+        # moment about the hinge axis (-z): -(arm x F)_z
+        sail_hinge = -(arm_x * force[1] - arm_y * force[0])
+        diag[D_ALPHA_SAIL], diag[D_SPEED_SAIL] = alpha, speed
+        diag[D_WIND_X], diag[D_WIND_Y], diag[D_WIND_Z] = wind_w[0], wind_w[1], wind_w[2]
+        diag[D_CE_HEIGHT], diag[D_CN], diag[D_CT] = z_ce, c_n, c_t
+    diag[D_SAIL_HINGE] = sail_hinge
+
+    # ---- hydrostatics ----
+    mode = P[P_HYDRO_MODE]
+    if mode == 2.0:
+        diag[D_SUBMERGED] = geometric_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
+        terms[T_HYDRO, :] = wrench
+    elif mode == 1.0:
+        paper_restoring(qpos[2], R, P[P_MASS] * P[P_G], P[P_RIGHTING_K], P[P_RIGHTING_SIN] > 0.0,
+                        P[P_K_HEAVE], P[P_K_PITCH], P[P_CG_X], P[P_CG_Z], wrench)
+        terms[T_HYDRO, :] = wrench
+
+    # ---- hull damping, eqs. 12-19 ----
+    if P[P_ON_DAMPING] > 0.0:
+        hull_damping(nu_r, P[P_RHO_W], P[P_D11:P_D66 + 1], P[P_WETTED], P[P_FORM_K], P[P_LENGTH],
+                     P[P_NU_W], P[P_CROSSFLOW_CD], strips[0], strips[1], strips[2], P[P_BF0],
+                     P[P_BL], P[P_OMEGA_ROLL], wrench)
+        terms[T_DAMP, :] = wrench
+
+    # ---- added mass: velocity terms here, inertia via madd in the mass matrix ----
+    for i in range(3):
+        for j in range(3):
+            madd[i, j] = 0.0
+    if P[P_ON_ADDED] > 0.0:
+        added_mass_velocity_terms(nu_r, P[P_A1:P_A6 + 1], wrench)
+        terms[T_ADDED, :] = wrench
+        for i in range(3):
+            for j in range(3):
+                madd[i, j] = (R[i, 0] * P[P_A1] * R[j, 0] + R[i, 1] * P[P_A2] * R[j, 1]
+                              + R[i, 2] * P[P_A3] * R[j, 2])
+
+    terms[T_EXT, :] = external
+
+    # ---- generalised forces: free joint (world force, body torque about CO) + sail hinge ----
+    total = np.zeros(6)
+    for row in range(terms.shape[0]):
+        for i in range(6):
+            total[i] += terms[row, i]
+    for i in range(3):
+        qfrc[i] = R[i, 0] * total[0] + R[i, 1] * total[1] + R[i, 2] * total[2]
+        qfrc[3 + i] = total[3 + i]
+    qfrc[idx[3]] = sail_hinge
+    return STATUS_OK

@@ -1,0 +1,108 @@
+"""Hydrostatic restoring in two switchable modes. Gravity itself is MuJoCo's.
+
+``paper``
+    Wille (2016a) eq. 20: roll moment -rho g V GM_t sin(phi) cos(phi) (or Saoud eq. 4,
+    -m g l_phi sin(phi), for the Saoud robot), plus the linear heave and pitch springs of the
+    upright waterplane (k_z = rho g A_wp, k_theta = rho g V GM_L) that hold heave and pitch
+    near their design values. Buoyancy equal to the weight acts vertically through the CG.
+``geometric``
+    Buoyancy integrated over the hull's columns against the flat water plane z = 0
+    (:func:`sailmujoco.hull.column_quadrature`). Each column is cut exactly along its axis;
+    heave, pitch and roll restoring and the large-heel righting curve (deck-edge immersion,
+    bilge emergence) follow from the geometry. At small heel it reproduces GM_t.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .._jit import kernel
+
+
+@kernel
+def submerged_volume(pos_z, rot, columns):
+    """(V, Qx, Qy, Qz): submerged volume and its first moment in body coordinates.
+
+    ``rot`` is body->world (3x3), ``columns`` rows = (x, y, area, z_bottom, z_top). Along a
+    column at body (x, y) the world height is pos_z + R20 x + R21 y + R22 z, so it is wet
+    below body z_w = -(pos_z + R20 x + R21 y) / R22 (above it when R22 < 0, upside down).
+    """
+    r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
+    vol = 0.0
+    qx = 0.0
+    qy = 0.0
+    qz = 0.0
+    n = columns.shape[1]
+    for k in range(n):
+        x = columns[0, k]
+        y = columns[1, k]
+        area = columns[2, k]
+        zb = columns[3, k]
+        zt = columns[4, k]
+        h = pos_z + r20 * x + r21 * y  # world height of the column's body-z origin
+        if abs(r22) < 1e-12:
+            lo, hi = (zb, zt) if h < 0.0 else (0.0, 0.0)
+        elif r22 > 0.0:
+            zw = -h / r22
+            lo, hi = zb, min(zt, zw)
+        else:
+            zw = -h / r22
+            lo, hi = max(zb, zw), zt
+        if hi <= lo:
+            continue
+        dv = area * (hi - lo)
+        vol += dv
+        qx += dv * x
+        qy += dv * y
+        qz += dv * 0.5 * (lo + hi)
+    return vol, qx, qy, qz
+
+
+@kernel
+def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
+    """Buoyancy wrench (body frame, about CO) into ``out``; returns the submerged volume.
+
+    F_b = rho g V e_z,b and M_b = Q x F_b / V = rho g (Q x e_z,b), where e_z,b = R^T e_z is the
+    world vertical in body axes and Q the first moment of the submerged volume.
+    """
+    vol, qx, qy, qz = submerged_volume(pos_z, rot, columns)
+    ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
+    rg = rho * g
+    out[0] = rg * vol * ex
+    out[1] = rg * vol * ey
+    out[2] = rg * vol * ez
+    out[3] = rg * (qy * ez - qz * ey)
+    out[4] = rg * (qz * ex - qx * ez)
+    out[5] = rg * (qx * ey - qy * ex)
+    return vol
+
+
+@kernel
+def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k_heave,
+                    k_pitch, cg_x, cg_z, out):
+    """Paper-mode restoring wrench (body frame, about CO) into ``out``.
+
+    ``righting_stiffness`` = rho g V GM_t (= m g l_phi). Roll moment about body x:
+    -K sin(phi) cos(phi), Wille eq. 20, or -K sin(phi), Saoud eq. 4 (``righting_sin_only``).
+    Heave: world-vertical force weight - k_heave z through the CG. Pitch: k_pitch sin(theta)
+    about body y (theta > 0 bow up; a positive body-y moment pushes the bow down).
+    """
+    heel = math.atan2(rot[2, 1], rot[2, 2])
+    pitch = math.asin(max(-1.0, min(1.0, rot[2, 0])))
+    fz = weight - k_heave * pos_z
+    ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
+    fx, fy, fz_b = fz * ex, fz * ey, fz * ez
+    # r_G x F with r_G = (cg_x, 0, cg_z)
+    mx = -cg_z * fy
+    my = cg_z * fx - cg_x * fz_b
+    mz = cg_x * fy
+    if righting_sin_only:
+        roll = -righting_stiffness * math.sin(heel)
+    else:
+        roll = -righting_stiffness * math.sin(heel) * math.cos(heel)
+    out[0] = fx
+    out[1] = fy
+    out[2] = fz_b
+    out[3] = mx + roll
+    out[4] = my + k_pitch * math.sin(pitch)
+    out[5] = mz

@@ -1,0 +1,238 @@
+"""Wind and current, Wille (2016a) eqs. 5 and 37-43.
+
+* Mean wind: log profile, eq. 40, U_m(z) = U_m10 (5/2) sqrt(k) ln(z / z0),
+  z0 = 10 exp(-2 / (5 sqrt(k))), k = 0.0026 (so U_m(10 m) = U_m10).
+* Gusts: NORSOK N-003 spectrum, eqs. 37-38, as a sum of cosines, eq. 39,
+  U_g(z, t) = sum_k sqrt(2 S(f_k, z) df) cos(2 pi f_k t + Y_k), f in (0, 0.4] Hz.
+  The paper uses evenly spaced f_k; we draw one f_k uniformly inside each of the n bins
+  (same df) so the series does not repeat every 1/df seconds. Phases Y_k and the f_k come
+  from the seed, fixed for the run (the paper keeps Y fixed between simulations).
+* Total speed U(z) = U_m(z) + U_g(z), eq. 41, evaluated at the sail CE's actual height
+  (eq. 42 uses -h1 cos(phi) in NED; in 6-DOF the CE height comes from the full pose).
+* Direction wander, eq. 43: beta_flux_dot = w (white noise), saturated at 5 deg. We integrate
+  it on a 0.1 s grid (Euler-Maruyama, clipped at the limit) from the seed and interpolate
+  linearly. The noise intensity is not given in the paper; the default is a guess.
+* Current, eq. 5: a constant world velocity; hydrodynamic forces use nu_r = nu - J^T V_c.
+
+Wind direction is where the wind comes *from* (compass bearing), see :mod:`sailmujoco.frames`.
+"""
+
+from __future__ import annotations
+
+import math
+import tomllib
+from dataclasses import dataclass, fields
+from pathlib import Path
+
+import numpy as np
+
+from .. import constants as c
+from .._jit import kernel
+
+F_MAX = 0.4  # Hz, upper end of the simulated gust band (Wille §2.1)
+WANDER_DT = 0.1  # s, grid of the direction-wander random walk
+# Heights of the gust-amplitude table (log spaced); the amplitude is interpolated in ln z.
+_Z_TABLE = np.geomspace(0.05, 60.0, 48)
+
+
+@dataclass(frozen=True)
+class WindConfig:
+    """Wind and current for one simulation. Angles in radians, speeds in m/s.
+
+    A TOML file with the same keys (angles with a ``_deg`` suffix allowed) loads through
+    :meth:`from_toml`.
+    """
+
+    speed: float = 0.0  # U_m10, mean wind speed at 10 m
+    direction_from: float = 0.0  # compass bearing the wind comes from
+    gusts: bool = True  # NORSOK gusts on/off
+    wander: bool = True  # direction wander on/off
+    wander_intensity: float = math.radians(0.5)  # rad/sqrt(s), guess (not in the paper)
+    wander_limit: float = math.radians(5.0)  # rad, eq. 43
+    n_frequencies: int = 100  # number of gust components
+    current_east: float = 0.0  # m/s, world current (where it flows to)
+    current_north: float = 0.0  # m/s
+    seed: int = 0
+
+    def __post_init__(self):
+        numbers = {f.name: getattr(self, f.name) for f in fields(self)}
+        for name, value in numbers.items():
+            if isinstance(value, bool) or name == "seed":
+                continue
+            if not isinstance(value, (int, float)) or not math.isfinite(value):
+                raise ValueError(f"wind: {name} must be a finite number, got {value!r}")
+        if self.speed < 0.0:
+            raise ValueError(f"wind: speed must be >= 0 m/s, got {self.speed}")
+        if self.n_frequencies < 1:
+            raise ValueError(f"wind: n_frequencies must be >= 1, got {self.n_frequencies}")
+        if self.wander_intensity < 0 or self.wander_limit < 0:
+            raise ValueError("wind: wander_intensity and wander_limit must be >= 0")
+
+    @classmethod
+    def from_dict(cls, values: dict, source: str = "wind config") -> WindConfig:
+        """Build from a mapping; ``*_deg`` keys are converted to radians."""
+        known = {f.name for f in fields(cls)}
+        kwargs = {}
+        for key, value in values.items():
+            name = key[:-4] if key.endswith("_deg") else key
+            if name not in known:
+                allowed = sorted(known | {"direction_from_deg", "wander_intensity_deg",
+                                          "wander_limit_deg"})
+                raise ValueError(f"{source}: unknown key {key!r}; allowed: {', '.join(allowed)}")
+            if key.endswith("_deg"):
+                if not isinstance(value, (int, float)) or isinstance(value, bool):
+                    raise ValueError(f"{source}: {key} must be a number, got {value!r}")
+                value = math.radians(value)
+            kwargs[name] = value
+        try:
+            return cls(**kwargs)
+        except (TypeError, ValueError) as err:
+            raise ValueError(f"{source}: {err}") from None
+
+    @classmethod
+    def from_toml(cls, path: str | Path) -> WindConfig:
+        """Load a wind file (TOML, optionally under a ``[wind]`` table)."""
+        path = Path(path)
+        try:
+            data = tomllib.loads(path.read_text())
+        except FileNotFoundError:
+            raise ValueError(f"wind file {str(path)!r} does not exist") from None
+        except tomllib.TOMLDecodeError as err:
+            raise ValueError(f"wind file {str(path)!r} does not parse as TOML: {err}") from None
+        return cls.from_dict(data.get("wind", data), source=f"wind file {str(path)!r}")
+
+
+def norsok_spectrum(f, z, mean_speed_10):
+    """NORSOK wind spectrum S(f, z) in (m/s)^2/Hz, Wille (2016a) eqs. 37-38 (z up, metres)."""
+    f = np.asarray(f, dtype=float)
+    zr = np.maximum(np.asarray(z, dtype=float), 1e-6) / 10.0
+    u = mean_speed_10 / 10.0
+    if u <= 0.0:
+        return np.zeros(np.broadcast(f, zr).shape)
+    n = c.NORSOK_N
+    x = 172.0 * f * zr ** (2.0 / 3.0) * u ** (-0.75)
+    return 320.0 * u**2 * zr**0.45 / (1.0 + x**n) ** (5.0 / (3.0 * n))
+
+
+def log_profile(z, mean_speed_10):
+    """Mean wind at height z (m), eq. 40; zero at and below the roughness length z0."""
+    k = c.KARMAN_K
+    z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
+    z = np.asarray(z, dtype=float)
+    return np.where(z > z0, mean_speed_10 * 2.5 * math.sqrt(k) * np.log(np.maximum(z, z0) / z0), 0.0)
+
+
+class WindField:
+    """The seeded realisation of a :class:`WindConfig`: arrays the kernels read.
+
+    ``gust_frequency``, ``gust_phase`` (n,), ``gust_amplitude`` (len(_Z_TABLE), n) over
+    ``log_z``; the wander random walk ``wander`` on a ``WANDER_DT`` grid, grown on demand by
+    :meth:`ensure` (block by block from one generator, so it does not depend on how far ahead
+    it was asked for).
+    """
+
+    def __init__(self, config: WindConfig):
+        self.config = config
+        rng = np.random.default_rng([config.seed, 1])
+        n = config.n_frequencies
+        df = F_MAX / n
+        self.gust_frequency = (np.arange(n) + rng.uniform(0.0, 1.0, n)) * df
+        self.gust_phase = rng.uniform(0.0, 2.0 * np.pi, n)
+        self.log_z = np.log(_Z_TABLE)
+        if config.gusts and config.speed > 0.0:
+            s = norsok_spectrum(self.gust_frequency[None, :], _Z_TABLE[:, None], config.speed)
+            self.gust_amplitude = np.sqrt(2.0 * s * df)  # eq. 39
+        else:
+            self.gust_amplitude = np.zeros((_Z_TABLE.size, n))
+        self._wander_rng = np.random.default_rng([config.seed, 2])
+        self.wander = np.zeros(1)
+        self.current = np.array([config.current_east, config.current_north, 0.0])
+        self.ensure(600.0)
+
+    def ensure(self, t_end: float) -> None:
+        """Extend the wander series so that it covers [0, t_end] s."""
+        need = int(math.ceil(t_end / WANDER_DT)) + 2
+        if need <= self.wander.size:
+            return
+        block = max(need - self.wander.size, 6000)
+        steps = self._wander_rng.standard_normal(block)
+        out = np.empty(block)
+        value = self.wander[-1]
+        cfg = self.config
+        sigma = cfg.wander_intensity * math.sqrt(WANDER_DT) if cfg.wander else 0.0
+        for i in range(block):
+            value = min(cfg.wander_limit, max(-cfg.wander_limit, value + sigma * steps[i]))
+            out[i] = value
+        self.wander = np.concatenate([self.wander, out])
+
+    def velocity(self, t: float, z: float) -> np.ndarray:
+        """World wind velocity (m/s) at time t and height z, anywhere in the horizontal plane."""
+        self.ensure(t + 1.0)
+        out = np.zeros(3)
+        wind_velocity(t, z, self.config.speed, self.config.direction_from, self.gust_frequency,
+                      self.gust_phase, self.gust_amplitude, self.log_z, WANDER_DT, self.wander,
+                      out)
+        return out
+
+    def gust(self, t, z: float) -> np.ndarray:
+        """Gust speed U_g(z, t) (m/s) for an array of times."""
+        t = np.atleast_1d(np.asarray(t, dtype=float))
+        return np.array([gust_speed(ti, z, self.gust_frequency, self.gust_phase,
+                                    self.gust_amplitude, self.log_z) for ti in t])
+
+
+@kernel
+def gust_speed(t, z, frequency, phase, amplitude, log_z):
+    """U_g(z, t), eq. 39, with amplitudes interpolated linearly in ln z."""
+    lz = math.log(max(z, 1e-6))
+    m = log_z.shape[0]
+    if lz <= log_z[0]:
+        j, s = 0, 0.0
+    elif lz >= log_z[m - 1]:
+        j, s = m - 2, 1.0
+    else:
+        j = np.searchsorted(log_z, lz) - 1
+        s = (lz - log_z[j]) / (log_z[j + 1] - log_z[j])
+    total = 0.0
+    two_pi_t = 2.0 * math.pi * t
+    for k in range(frequency.shape[0]):
+        amp = amplitude[j, k] + s * (amplitude[j + 1, k] - amplitude[j, k])
+        total += amp * math.cos(two_pi_t * frequency[k] + phase[k])
+    return total
+
+
+@kernel
+def mean_speed(z, mean_speed_10):
+    """Log profile, eq. 40 (kernel twin of :func:`log_profile`)."""
+    k = 0.0026
+    z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
+    if z <= z0:
+        return 0.0
+    return mean_speed_10 * 2.5 * math.sqrt(k) * math.log(z / z0)
+
+
+@kernel
+def wander_angle(t, dt, series):
+    """beta_flux(t), eq. 43, linear interpolation of the random walk."""
+    x = t / dt
+    if x <= 0.0:
+        return series[0]
+    i = int(x)
+    n = series.shape[0]
+    if i >= n - 1:
+        return series[n - 1]
+    s = x - i
+    return series[i] + s * (series[i + 1] - series[i])
+
+
+@kernel
+def wind_velocity(t, z, speed10, direction_from, frequency, phase, amplitude, log_z,
+                  wander_dt, wander, out):
+    """World wind velocity at (t, z) into ``out`` (3,), eqs. 40-43."""
+    u = mean_speed(z, speed10)
+    if speed10 > 0.0:
+        u += gust_speed(t, z, frequency, phase, amplitude, log_z)
+    bearing = direction_from + wander_angle(t, wander_dt, wander)
+    out[0] = -u * math.sin(bearing)
+    out[1] = -u * math.cos(bearing)
+    out[2] = 0.0

@@ -1,0 +1,166 @@
+"""Reference frames and sign conventions, defined once for the whole package.
+
+World (MuJoCo)
+    x east, y north, z up (ENU). The flat water surface is the plane z = 0.
+Body
+    origin CO: midship, on the design waterline, above the centre of gravity of the
+    Wille yacht (Wille 2016a §2: "CO ... at CG midship and at the waterline").
+    x forward, y to port, z up (FLU).
+
+The papers use other frames; convert here and nowhere else:
+
+* Wille (2016a, 2016b): NED world, body x forward, y starboard, z down (FRD), SNAME.
+* Saoud (2015): NWU world (x north, y west, z up), body FLU.
+* Viel (2019): a planar frame, x east, y north (the same as our world's x-y plane).
+
+Angles (all radians inside the package)
+
+* ``heel`` phi: roll about body x, positive starboard side down. Identical in FLU and FRD
+  (a half-turn about x keeps it), so it equals Wille's and Saoud's phi.
+* ``pitch`` theta: SNAME pitch, positive bow up.
+* ``yaw`` psi: rotation about world z, counter-clockwise from east (ENU yaw).
+  ``heading`` is the compass heading, clockwise from north: Wille's psi (NED yaw).
+  Saoud's psi (NWU) is ``yaw - pi/2``.
+* Wind *direction* means where the wind comes **from**, as a compass bearing (0 = from the
+  north, pi/2 = from the east). Wille's beta_w is the direction the wind blows *towards*
+  (eq. 42: V_w = U [cos beta_w, sin beta_w] in NED), i.e. ``from + pi``.
+* ``apparent wind angle`` (AWA): angle from the bow to the direction the apparent wind comes
+  from, measured in the body x-y plane, positive when it comes from starboard.
+  Saoud's Theta_V (the angle of v_as = v - v_w, counter-clockwise, in the heading frame) is
+  ``-AWA`` up to the heel projection: ``tan AWA = -cos(phi) tan(Theta_V)`` (Saoud §IV).
+* Angle of attack of a foil: see :mod:`sailmujoco.forces.foil`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+# Permutation/sign matrices between frames (vectors, not rotations of the boat).
+_ENU_TO_NED = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
+_ENU_TO_NWU = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+_FLU_TO_FRD = np.diag([1.0, -1.0, -1.0])
+
+
+def wrap_angle(angle):
+    """Wrap an angle (or array) to [-pi, pi)."""
+    return (np.asarray(angle) + np.pi) % (2.0 * np.pi) - np.pi
+
+
+def ned_from_enu(v):
+    """World vector ENU -> NED (Wille)."""
+    return _ENU_TO_NED @ np.asarray(v, dtype=float)
+
+
+def enu_from_ned(v):
+    """World vector NED -> ENU."""
+    return _ENU_TO_NED.T @ np.asarray(v, dtype=float)
+
+
+def nwu_from_enu(v):
+    """World vector ENU -> NWU (Saoud)."""
+    return _ENU_TO_NWU @ np.asarray(v, dtype=float)
+
+
+def enu_from_nwu(v):
+    """World vector NWU -> ENU."""
+    return _ENU_TO_NWU.T @ np.asarray(v, dtype=float)
+
+
+def frd_from_flu(v):
+    """Body vector FLU (ours) -> FRD (Wille, SNAME). Its own inverse."""
+    return _FLU_TO_FRD @ np.asarray(v, dtype=float)
+
+
+flu_from_frd = frd_from_flu
+
+
+def heading_from_yaw(yaw):
+    """ENU yaw (ccw from east) -> compass heading (cw from north) = Wille's NED psi."""
+    return wrap_angle(np.pi / 2.0 - np.asarray(yaw))
+
+
+def yaw_from_heading(heading):
+    """Compass heading (cw from north) -> ENU yaw (ccw from east)."""
+    return wrap_angle(np.pi / 2.0 - np.asarray(heading))
+
+
+def saoud_yaw_from_yaw(yaw):
+    """ENU yaw -> Saoud's NWU yaw (ccw from north)."""
+    return wrap_angle(np.asarray(yaw) - np.pi / 2.0)
+
+
+def wind_velocity(speed, direction_from):
+    """World (ENU) velocity of a wind of ``speed`` coming from compass bearing ``direction_from``."""
+    return -speed * np.array([np.sin(direction_from), np.cos(direction_from), 0.0])
+
+
+def wille_beta_w(direction_from):
+    """Wille's beta_w (NED direction the wind blows towards) from our 'comes from' bearing."""
+    return wrap_angle(np.asarray(direction_from) + np.pi)
+
+
+def direction_from_wille_beta_w(beta_w):
+    """Our 'comes from' compass bearing from Wille's beta_w (blows towards, NED)."""
+    return wrap_angle(np.asarray(beta_w) + np.pi)
+
+
+def euler_from_matrix(rot):
+    """(heel, pitch, yaw) of a body->world rotation matrix, R = Rz(yaw) Ry(-pitch) Rx(heel).
+
+    heel > 0: starboard down; pitch > 0: bow up (SNAME); yaw: ENU, ccw from east.
+    """
+    rot = np.asarray(rot, dtype=float).reshape(3, 3)
+    heel = np.arctan2(rot[2, 1], rot[2, 2])
+    pitch = np.arcsin(np.clip(rot[2, 0], -1.0, 1.0))
+    yaw = np.arctan2(rot[1, 0], rot[0, 0])
+    return heel, pitch, yaw
+
+
+def matrix_from_euler(heel, pitch, yaw):
+    """Body->world rotation for (heel, pitch, yaw) as defined in :func:`euler_from_matrix`."""
+    ch, sh = np.cos(heel), np.sin(heel)
+    cp, sp = np.cos(-pitch), np.sin(-pitch)
+    cy, sy = np.cos(yaw), np.sin(yaw)
+    rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
+    ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
+    rx = np.array([[1.0, 0.0, 0.0], [0.0, ch, -sh], [0.0, sh, ch]])
+    return rz @ ry @ rx
+
+
+def quat_from_euler(heel, pitch, yaw):
+    """MuJoCo quaternion (w, x, y, z) for (heel, pitch, yaw)."""
+    rot = matrix_from_euler(heel, pitch, yaw)
+    w = np.sqrt(max(0.0, 1.0 + rot[0, 0] + rot[1, 1] + rot[2, 2])) / 2.0
+    if w > 1e-6:
+        x = (rot[2, 1] - rot[1, 2]) / (4.0 * w)
+        y = (rot[0, 2] - rot[2, 0]) / (4.0 * w)
+        z = (rot[1, 0] - rot[0, 1]) / (4.0 * w)
+        q = np.array([w, x, y, z])
+    else:  # half-turn: fall back to the largest diagonal element
+        i = int(np.argmax(np.diag(rot)))
+        j, k = (i + 1) % 3, (i + 2) % 3
+        s = np.sqrt(max(0.0, 1.0 + rot[i, i] - rot[j, j] - rot[k, k])) * 2.0
+        q = np.zeros(4)
+        q[0] = (rot[k, j] - rot[j, k]) / s
+        q[1 + i] = s / 4.0
+        q[1 + j] = (rot[j, i] + rot[i, j]) / s
+        q[1 + k] = (rot[k, i] + rot[i, k]) / s
+    return q / np.linalg.norm(q)
+
+
+def apparent_wind_angle(flow_body):
+    """AWA from the apparent wind velocity in the body frame (FLU).
+
+    ``flow_body`` is the velocity of the air relative to the point (where it blows to).
+    The wind comes from ``-flow``; AWA is positive when it comes from starboard (-y).
+    """
+    fx, fy = float(flow_body[0]), float(flow_body[1])
+    return float(np.arctan2(fy, -fx))
+
+
+def saoud_theta_v(flow_heading_frame):
+    """Saoud's Theta_V from the apparent wind in the (un-heeled) heading frame, FLU.
+
+    Saoud §IV: V = R_z(psi)^T (v - v_w) = -flow, Theta_V = atan2(V2, V1).
+    """
+    return float(np.arctan2(-flow_heading_frame[1], -flow_heading_frame[0]))

@@ -1,0 +1,170 @@
+"""Hull geometry: the canoe body that floats, and the quadratures the force models integrate over.
+
+The canoe body is deliberately simple so that every hydrostatic quantity has a closed form
+the tests can check the numerical integration against:
+
+* planform (waterline half-breadth) b(x) = b0 (1 - (2x/L)^2), x in [-L/2, L/2];
+* sections are half-ellipses of half-breadth b(x) and depth t(x) = t0 (1 - (2x/L)^2)
+  below the design waterline;
+* topsides are vertical from the waterline up to a flat deck at height ``freeboard``.
+
+Keel and rudder volumes are neglected in the buoyancy (a few per cent of the displacement,
+stated in each boat's xml README).
+
+Closed forms (s = 2x/L, integrals of (1 - s^2)^k over s in [-1, 1] times L/2):
+
+* volume            V   = (pi/2) b0 t0 L (8/15)
+* centre of buoyancy z_B = -(4 / 3pi) t0 (16/35)/(8/15) = -(8 / 7pi) t0
+* waterplane area   A_wp = (4/3) b0 L
+* transverse inertia I_T = (2/3) b0^3 L (16/35) = (32/105) b0^3 L
+* longitudinal inertia I_L = b0 L^3 / 15
+* strip-theory added mass (half-ellipse section, high-frequency limit, Faltinsen 1990 ch. 2):
+  heave a33 = rho (pi/2) int b^2 dx = rho (pi/2) b0^2 L (8/15);
+  pitch a55 = rho (pi/2) int b^2 x^2 dx = rho (pi/2) b0^2 (2 L^3 / 105).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.optimize import brentq
+
+
+@dataclass(frozen=True)
+class HullShape:
+    """Canoe body dimensions, metres."""
+
+    length: float  # L, waterline length
+    half_beam: float  # b0, maximum waterline half-breadth (midship)
+    canoe_draft: float  # t0, maximum depth of the canoe body below the waterline
+    freeboard: float  # height of the flat deck above the waterline
+
+    def __post_init__(self):
+        for name in ("length", "half_beam", "canoe_draft", "freeboard"):
+            value = getattr(self, name)
+            if not np.isfinite(value) or value <= 0.0:
+                raise ValueError(f"hull {name} must be a positive finite length in m, got {value!r}")
+
+
+def volume(h: HullShape) -> float:
+    """Displaced volume at the design waterline, m^3."""
+    return 0.5 * np.pi * h.half_beam * h.canoe_draft * h.length * 8.0 / 15.0
+
+
+def centre_of_buoyancy_z(h: HullShape) -> float:
+    """Height of the centre of buoyancy above the waterline (negative: below), m."""
+    return -8.0 / (7.0 * np.pi) * h.canoe_draft
+
+
+def waterplane_area(h: HullShape) -> float:
+    """Waterplane area A_wp, m^2."""
+    return 4.0 / 3.0 * h.half_beam * h.length
+
+
+def bm_transverse(h: HullShape) -> float:
+    """Transverse metacentric radius BM = I_T / V, m."""
+    return 32.0 / 105.0 * h.half_beam**3 * h.length / volume(h)
+
+
+def bm_longitudinal(h: HullShape) -> float:
+    """Longitudinal metacentric radius BM_L = I_L / V, m."""
+    return h.half_beam * h.length**3 / 15.0 / volume(h)
+
+
+def gm_transverse(h: HullShape, z_g: float) -> float:
+    """Transverse metacentric height GM_t = z_B + BM - z_G, m (z_G above the waterline)."""
+    return centre_of_buoyancy_z(h) + bm_transverse(h) - z_g
+
+
+def gm_longitudinal(h: HullShape, z_g: float) -> float:
+    """Longitudinal metacentric height GM_L, m."""
+    return centre_of_buoyancy_z(h) + bm_longitudinal(h) - z_g
+
+
+def heave_added_mass(h: HullShape, rho: float) -> float:
+    """Strip-theory heave added mass a33 = -Z_wdot, kg."""
+    return rho * 0.5 * np.pi * h.half_beam**2 * h.length * 8.0 / 15.0
+
+
+def pitch_added_inertia(h: HullShape, rho: float) -> float:
+    """Strip-theory pitch added inertia a55 = -M_qdot, kg m^2."""
+    return rho * 0.5 * np.pi * h.half_beam**2 * 2.0 * h.length**3 / 105.0
+
+
+def wetted_surface(h: HullShape, n: int = 200) -> float:
+    """Wetted surface of the canoe body (half-ellipse perimeters integrated along x), m^2."""
+    x, w = np.polynomial.legendre.leggauss(n)
+    x = 0.5 * h.length * x
+    f = 1.0 - (2.0 * x / h.length) ** 2
+    a, b = h.half_beam * f, h.canoe_draft * f
+    # Ramanujan's second approximation of the ellipse perimeter, halved.
+    hh = ((a - b) / (a + b)) ** 2
+    half_perimeter = 0.5 * np.pi * (a + b) * (1.0 + 3.0 * hh / (10.0 + np.sqrt(4.0 - 3.0 * hh)))
+    return float(np.sum(w * half_perimeter) * 0.5 * h.length)
+
+
+def design_for(length: float, displaced_volume: float, gm: float, z_g: float,
+               freeboard: float) -> HullShape:
+    """The hull of given length and displacement whose transverse GM equals ``gm``.
+
+    Solves V = (4 pi / 15) b0 t0 L and GM_t(b0, t0) = gm for (b0, t0) with brentq.
+    """
+    area = displaced_volume / (4.0 * np.pi / 15.0 * length)  # b0 * t0
+
+    def gm_error(b0):
+        return gm_transverse(HullShape(length, b0, area / b0, freeboard), z_g) - gm
+
+    b0 = brentq(gm_error, 0.02 * length, 0.5 * length, xtol=1e-12)
+    return HullShape(length, b0, area / b0, freeboard)
+
+
+@dataclass(frozen=True)
+class ColumnQuadrature:
+    """Vertical prisms (columns along body z) that tile the hull's waterplane footprint.
+
+    Column k stands at body (x[k], y[k]) with footprint area ``area[k]`` and spans body z from
+    ``z_bottom[k]`` (the canoe-body bottom) to ``z_top[k]`` (the deck). The buoyancy of each
+    column is integrated exactly along its axis; only (x, y) is discretised.
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    area: np.ndarray
+    z_bottom: np.ndarray
+    z_top: np.ndarray
+
+
+def column_quadrature(h: HullShape, nx: int = 32, ntheta: int = 24) -> ColumnQuadrature:
+    """Gauss-Legendre in x, y = b(x) sin(theta) with the midpoint rule in theta.
+
+    The substitution makes the half-ellipse depth t cos(theta) and the strip width
+    b cos(theta) dtheta smooth, so the upright volume is integrated exactly.
+    """
+    xg, wg = np.polynomial.legendre.leggauss(nx)
+    x1 = 0.5 * h.length * xg
+    wx = 0.5 * h.length * wg
+    f = 1.0 - (2.0 * x1 / h.length) ** 2
+    dtheta = np.pi / ntheta
+    theta = -0.5 * np.pi + (np.arange(ntheta) + 0.5) * dtheta
+    b = (h.half_beam * f)[:, None]
+    t = (h.canoe_draft * f)[:, None]
+    x = np.broadcast_to(x1[:, None], (nx, ntheta))
+    y = b * np.sin(theta)[None, :]
+    area = wx[:, None] * b * np.cos(theta)[None, :] * dtheta
+    z_bottom = -t * np.cos(theta)[None, :]
+    z_top = np.full((nx, ntheta), h.freeboard)
+    return ColumnQuadrature(*(np.ascontiguousarray(a, dtype=float).ravel()
+                              for a in (x, y, area, z_bottom, z_top)))
+
+
+def strip_quadrature(h: HullShape, n: int = 16):
+    """Gauss-Legendre stations along the hull for the cross-flow strip integrals.
+
+    Returns (x, weight, draft) with draft T(x) = t(x), the canoe-body depth.
+    """
+    xg, wg = np.polynomial.legendre.leggauss(n)
+    x = 0.5 * h.length * xg
+    w = 0.5 * h.length * wg
+    draft = h.canoe_draft * (1.0 - (2.0 * x / h.length) ** 2)
+    return x, w, draft

@@ -1,0 +1,334 @@
+"""MJCF of a boat, built from its :class:`~sailmujoco.params.BoatParams` with ``mujoco.MjSpec``.
+
+``xml/<boat>/<boat>.xml`` is :func:`boat_spec` of the default parameters, written by
+``python -m sailmujoco.mjcf`` (a test checks the committed file is up to date);
+``xml/<boat>/scene.xml`` (hand-written) adds water, sky, light and a fixed camera and
+includes it. At run time the boat is rebuilt from its (possibly changed) parameters.
+
+Bodies: ``hull`` (free joint ``root``; the keel is part of it) with children ``rudder``
+(hinge ``rudder`` about the stock) and ``boom`` (hinge ``sail`` about the mast). Both hinge
+axes point down (-z), so a positive angle swings the trailing edge to port, Wille's sign for
+sigma and lambda (eqs. 26, 35): positive rudder turns the boat to port.
+
+Sites: ``sail_ce``, ``keel_cp``, ``rudder_cp``, ``masthead``, ``mast_step``, and for the
+sheeted sail ``sheet_block`` (hull) and ``boom_end`` (boom).
+
+Sail modes:
+``actuated``  a position servo with first-order lag T_lambda on the command (MuJoCo's
+              ``timeconst``), saturated at lambda_sat (Wille §2.1, Saoud Assumption 5).
+``sheeted``   the boom hinge is free: the sail turns under its own aerodynamic moment about
+              the mast, and a sheet (spatial tendon from ``sheet_block`` to ``boom_end``)
+              limits its swing. The command is the sheet length; the sheet only pulls
+              (force range [-F, 0]), with the same lag T_lambda (Wille 2016b §2.1, eqs. 61-62;
+              Viel eq. 12).
+"""
+
+from __future__ import annotations
+
+import math
+from importlib import resources
+
+import mujoco
+import numpy as np
+
+from .constants import GRAVITY
+from .params import BoatParams, get_boat
+
+SAIL_MODES = ("actuated", "sheeted")
+TIMESTEP = 0.005  # s, physics step of both boats
+SERVO_FREQUENCY = 30.0  # rad/s, bandwidth of the rudder and sail servos (>> 1/T)
+SERVO_ERROR = math.radians(1.0)  # rad, static error of the sail servo at the reference load
+REFERENCE_WIND = 15.0  # m/s, apparent wind of the reference sail load
+
+
+def _rig_inertia(p: BoatParams):
+    """Mass, CG (body frame) and inertia about its CG of the boom+sail and of the rudder."""
+    s = p.sail
+    ms = s.mass
+    cs = np.array([s.mast_x - s.ce_aft, 0.0, s.ce_height])  # triangle centroid = CE
+    # thin triangle in the boom's x-z plane (+1 % on the in-plane axes for the boom's bulk)
+    bulk = 0.01 * (s.luff**2 + s.foot**2)
+    i_s = ms / 18.0 * np.diag([s.luff**2 + bulk, s.luff**2 + s.foot**2, s.foot**2 + bulk])
+    r = p.rudder
+    mr = r.mass
+    cr = np.array([r.x, 0.0, r.z])
+    i_r = mr / 12.0 * np.diag([r.span**2, r.span**2 + r.chord**2, r.chord**2])
+    return (ms, cs, i_s), (mr, cr, i_r)
+
+
+def _shift(inertia, mass, d):
+    """Parallel-axis term: inertia of a body about a point ``d`` away from its CG."""
+    d = np.asarray(d, dtype=float)
+    return inertia + mass * (d @ d * np.eye(3) - np.outer(d, d))
+
+
+def hull_inertial(p: BoatParams):
+    """(mass, CG, full inertia) of the hull body so that hull + rudder + boom matches ``p``.
+
+    The papers give the whole boat's mass and inertia about its CG; the turning parts are
+    subtracted (parallel-axis theorem) so the composite rigid body is exactly the paper's.
+    """
+    (ms, cs, i_s), (mr, cr, i_r) = _rig_inertia(p)
+    m = p.mass
+    c = np.array([p.cg_x, 0.0, p.cg_z])
+    ixx, iyy, izz = p.inertia
+    total = np.array([[ixx, 0.0, p.inertia_xz], [0.0, iyy, 0.0], [p.inertia_xz, 0.0, izz]])
+    mh = m - ms - mr
+    ch = (m * c - ms * cs - mr * cr) / mh
+    ih = total - _shift(i_s, ms, cs - c) - _shift(i_r, mr, cr - c)
+    ih = ih - mh * ((ch - c) @ (ch - c) * np.eye(3) - np.outer(ch - c, ch - c))
+    eig = np.linalg.eigvalsh(ih)
+    if mh <= 0 or eig.min() <= 0 or 2 * eig.max() > eig.sum() + 1e-9:
+        raise ValueError(f"{p.name}: the rig is too heavy for the given total mass/inertia")
+    return mh, ch, ih
+
+
+def _hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
+    """Vertices and faces of the canoe body (half-ellipse sections + vertical topsides)."""
+    h = p.hull
+    xs = np.linspace(-0.5 * h.length, 0.5 * h.length, n_stations)
+    verts, rings = [], []
+    theta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, n_section)
+    for x in xs:
+        f = max(1.0 - (2.0 * x / h.length) ** 2, 0.03)
+        b, t = h.half_beam * f, h.canoe_draft * f
+        ring = [(x, -b, h.freeboard)]
+        ring += [(x, b * np.sin(th), -t * np.cos(th)) for th in theta]
+        ring += [(x, b, h.freeboard)]
+        rings.append(list(range(len(verts), len(verts) + len(ring))))
+        verts += ring
+    faces = []
+    for a, b in zip(rings[:-1], rings[1:], strict=True):
+        k = len(a)
+        for i in range(k):
+            j = (i + 1) % k
+            faces += [(a[i], b[i], b[j]), (a[i], b[j], a[j])]
+    for ring, flip in ((rings[0], False), (rings[-1], True)):
+        for i in range(1, len(ring) - 1):
+            tri = (ring[0], ring[i], ring[i + 1])
+            faces.append(tri[::-1] if flip else tri)
+    return np.array(verts, dtype=float).ravel(), np.array(faces, dtype=int).ravel()
+
+
+def sheet_geometry(p: BoatParams):
+    """(block, boom_end) positions: the sheet block on the hull, the boom end on the boom.
+
+    The block sits on the centreline below the boom end's position at lambda = 0, so the sheet
+    length is L(lambda) = sqrt((2 l sin(lambda/2))^2 + dz^2) with l the boom length: it grows
+    monotonically with |lambda| up to 180 deg.
+    """
+    s = p.sail
+    boom = s.foot
+    block = np.array([s.mast_x - boom, 0.0, max(s.boom_height - 0.15 * boom, 0.5 * p.hull.freeboard)])
+    boom_end = np.array([-boom, 0.0, 0.0])  # in the boom body frame
+    return block, boom_end
+
+
+def sheet_length(p: BoatParams, angle):
+    """Sheet length (m) that lets the boom out to ``angle`` (rad)."""
+    block, end = sheet_geometry(p)
+    dz = p.sail.boom_height - block[2]
+    return np.sqrt((2.0 * p.sail.foot * np.sin(0.5 * np.asarray(angle))) ** 2 + dz**2)
+
+
+def sheet_angle(p: BoatParams, length):
+    """Largest boom angle (rad) a sheet of ``length`` allows (inverse of :func:`sheet_length`)."""
+    block, _ = sheet_geometry(p)
+    dz = p.sail.boom_height - block[2]
+    horizontal = np.sqrt(np.maximum(np.asarray(length) ** 2 - dz**2, 0.0))
+    return 2.0 * np.arcsin(np.clip(horizontal / (2.0 * p.sail.foot), 0.0, 1.0))
+
+
+def _sail_reference_moment(p: BoatParams) -> float:
+    """Aerodynamic moment about the mast at REFERENCE_WIND with C_N = 1.25 (its maximum)."""
+    s = p.sail
+    return 0.5 * p.rho_air * REFERENCE_WIND**2 * s.area * 1.25 * s.ce_aft
+
+
+def boat_spec(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjSpec:
+    """The boat as an MjSpec (no scene)."""
+    if sail_mode not in SAIL_MODES:
+        raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
+    spec = mujoco.MjSpec()
+    spec.modelname = p.name
+    spec.compiler.degree = False
+    spec.compiler.inertiafromgeom = mujoco.mjtInertiaFromGeom.mjINERTIAFROMGEOM_FALSE
+    spec.compiler.autolimits = True
+    spec.option.timestep = TIMESTEP
+    spec.option.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
+    spec.option.gravity = [0.0, 0.0, -GRAVITY]
+    # No contacts: the boat meets nothing but water, which our force models handle.
+    spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_CONTACT
+
+    visual = spec.add_default("visual", spec.default)
+    visual.geom.contype = 0
+    visual.geom.conaffinity = 0
+    visual.geom.group = 2
+    visual.geom.mass = 0.0
+    white = spec.add_material(name="hull_white", rgba=[0.93, 0.93, 0.9, 1.0])
+    dark = spec.add_material(name="foil_dark", rgba=[0.15, 0.17, 0.2, 1.0])
+    sailcloth = spec.add_material(name="sailcloth", rgba=[0.97, 0.95, 0.85, 0.92])
+    del white, dark, sailcloth
+
+    verts, faces = _hull_mesh(p)
+    mesh = spec.add_mesh(name="hull_mesh")
+    mesh.uservert = verts.tolist()
+    mesh.userface = faces.tolist()
+
+    mh, ch, ih = hull_inertial(p)
+    hull = spec.worldbody.add_body(name="hull", pos=[0.0, 0.0, 0.0])
+    hull.explicitinertial = True
+    hull.mass = mh
+    hull.ipos = ch.tolist()
+    hull.fullinertia = [ih[0, 0], ih[1, 1], ih[2, 2], ih[0, 1], ih[0, 2], ih[1, 2]]
+    hull.add_freejoint(name="root")
+    hull.add_geom(name="hull", default=visual, type=mujoco.mjtGeom.mjGEOM_MESH,
+                  meshname="hull_mesh", material="hull_white")
+
+    k = p.keel
+    top = -p.hull.canoe_draft * 0.9
+    hull.add_geom(name="keel", default=visual, type=mujoco.mjtGeom.mjGEOM_BOX,
+                  pos=[k.x, 0.0, top - 0.5 * k.span],
+                  size=[0.5 * k.chord, 0.5 * k.thickness_ratio * k.chord, 0.5 * k.span],
+                  material="foil_dark")
+    s = p.sail
+    mast_radius = 0.012 * s.luff
+    hull.add_geom(name="mast", default=visual, type=mujoco.mjtGeom.mjGEOM_CYLINDER,
+                  fromto=[s.mast_x, 0.0, 0.5 * p.hull.freeboard, s.mast_x, 0.0, s.masthead_height],
+                  size=[mast_radius, 0, 0], material="foil_dark")
+    hull.add_site(name="keel_cp", pos=[k.x, 0.0, k.z])
+    hull.add_site(name="masthead", pos=[s.mast_x, 0.0, s.masthead_height])
+    hull.add_site(name="mast_step", pos=[s.mast_x, 0.0, s.boom_height])
+    hull.add_site(name="cog", pos=[p.cg_x, 0.0, p.cg_z])
+    scale = p.hull.length
+    hull.add_camera(name="follow", mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM,
+                    pos=[-1.6 * scale, -1.4 * scale, 0.9 * scale],
+                    xyaxes=[0.66, -0.75, 0.0, 0.3, 0.27, 0.91])
+    hull.add_camera(name="side", mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM,
+                    pos=[0.0, -2.2 * scale, 0.4 * scale], xyaxes=[1.0, 0.0, 0.0, 0.0, 0.18, 0.98])
+
+    (ms, cs, i_s), (mr, cr, i_r) = _rig_inertia(p)
+    r = p.rudder
+    rudder = hull.add_body(name="rudder", pos=[r.x, 0.0, 0.0])
+    rudder.explicitinertial = True
+    rudder.mass = mr
+    rudder.ipos = [0.0, 0.0, r.z]
+    rudder.inertia = np.diag(i_r).tolist()
+    rudder_limit = 1.05 * r.max_angle
+    rudder.add_joint(name="rudder", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0.0, 0.0, -1.0],
+                     range=[-rudder_limit, rudder_limit])
+    rudder_top = -0.5 * p.hull.canoe_draft
+    rudder.add_geom(name="rudder_blade", default=visual, type=mujoco.mjtGeom.mjGEOM_BOX,
+                    pos=[0.0, 0.0, rudder_top - 0.5 * r.span],
+                    size=[0.5 * r.chord, 0.5 * r.thickness_ratio * r.chord, 0.5 * r.span],
+                    material="foil_dark")
+    rudder.add_site(name="rudder_cp", pos=[0.0, 0.0, r.z])
+
+    boom = hull.add_body(name="boom", pos=[s.mast_x, 0.0, s.boom_height])
+    boom.explicitinertial = True
+    boom.mass = ms
+    boom.ipos = (cs - np.array([s.mast_x, 0.0, s.boom_height])).tolist()
+    boom.inertia = np.diag(i_s).tolist()
+    boom.add_joint(name="sail", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0.0, 0.0, -1.0],
+                   range=[-s.max_angle, s.max_angle])
+    boom.add_geom(name="boom", default=visual, type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+                  fromto=[0.0, 0.0, 0.0, -s.foot, 0.0, 0.0], size=[0.8 * mast_radius, 0, 0],
+                  material="foil_dark")
+    sail_mesh = spec.add_mesh(name="sail_mesh")
+    thickness = 0.002 * s.luff
+    sail_mesh.uservert = [0.0, -thickness, 0.0, -s.foot, -thickness, 0.0, 0.0, -thickness, s.luff,
+                          0.0, thickness, 0.0, -s.foot, thickness, 0.0, 0.0, thickness, s.luff]
+    boom.add_geom(name="sail", default=visual, type=mujoco.mjtGeom.mjGEOM_MESH,
+                  meshname="sail_mesh", material="sailcloth")
+    boom.add_site(name="sail_ce", pos=[-s.ce_aft, 0.0, s.ce_height - s.boom_height])
+    block, boom_end = sheet_geometry(p)
+    boom.add_site(name="boom_end", pos=boom_end.tolist())
+    hull.add_site(name="sheet_block", pos=block.tolist())
+
+    # Servos: natural frequency SERVO_FREQUENCY, critically damped. The sail servo holds the
+    # reference aerodynamic moment within SERVO_ERROR; the armature is the motor's reflected
+    # inertia that makes that stiffness stable at the bandwidth.
+    rudder_arm = max(0.0, 0.2 * mr * r.chord**2)
+    rudder_kp = (rudder_arm + i_r[2, 2]) * SERVO_FREQUENCY**2
+    act = spec.add_actuator(name="rudder", target="rudder", trntype=mujoco.mjtTrn.mjTRN_JOINT)
+    act.set_to_position(kp=rudder_kp, kv=2.0 * math.sqrt(rudder_kp * (rudder_arm + i_r[2, 2])),
+                        timeconst=r.time_constant)
+    act.ctrlrange = [-r.max_angle, r.max_angle]
+    act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    spec.joint("rudder").armature = rudder_arm
+
+    boom_inertia = i_s[2, 2] + ms * s.ce_aft**2
+    if sail_mode == "actuated":
+        kp = _sail_reference_moment(p) / SERVO_ERROR
+        armature = max(0.0, kp / SERVO_FREQUENCY**2 - boom_inertia)
+        spec.joint("sail").armature = armature
+        act = spec.add_actuator(name="sail", target="sail", trntype=mujoco.mjtTrn.mjTRN_JOINT)
+        act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * (armature + boom_inertia)),
+                            timeconst=s.time_constant)
+        act.ctrlrange = [-s.max_angle, s.max_angle]
+        act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        home_ctrl = [0.0, 0.0]
+    else:
+        sheet = spec.add_tendon(name="sheet")
+        sheet.wrap_site("sheet_block")
+        sheet.wrap_site("boom_end")
+        # A stiff rope: it stretches 1 cm under the reference load, and only pulls.
+        load = _sail_reference_moment(p) / s.foot
+        kp = load / 0.01
+        act = spec.add_actuator(name="sheet", target="sheet", trntype=mujoco.mjtTrn.mjTRN_TENDON)
+        act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * ms), timeconst=s.time_constant)
+        length_max = float(sheet_length(p, s.max_angle))
+        length_min = float(sheet_length(p, 0.0))
+        act.ctrlrange = [length_min, length_max]
+        act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        act.forcerange = [-20.0 * load, 0.0]
+        act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+        home_ctrl = [0.0, length_max]
+
+    key = spec.add_key(name="home")
+    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    key.ctrl = home_ctrl
+    key.act = home_ctrl
+    return spec
+
+
+def boat_xml(p: BoatParams, sail_mode: str = "actuated") -> str:
+    """MJCF text of the boat (what ``xml/<boat>/<boat>.xml`` holds for default parameters)."""
+    spec = boat_spec(p, sail_mode)
+    spec.compile()  # validates
+    return spec.to_xml()
+
+
+def scene_xml(boat: str) -> str:
+    """The hand-written ``xml/<boat>/scene.xml`` shipped with the package."""
+    try:
+        return resources.files("sailmujoco.xml").joinpath(boat, "scene.xml").read_text()
+    except FileNotFoundError:
+        raise ValueError(f"no scene for boat {boat!r} in sailmujoco/xml") from None
+
+
+def compile_model(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjModel:
+    """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``)."""
+    return mujoco.MjModel.from_xml_string(
+        scene_xml(p.name), assets={f"{p.name}.xml": boat_xml(p, sail_mode).encode()})
+
+
+def write_default_xml(root) -> list:
+    """Write ``<root>/<boat>/<boat>.xml`` for every registered boat; returns the paths."""
+    from pathlib import Path
+
+    from .params import BOATS
+
+    paths = []
+    for name in BOATS:
+        path = Path(root) / name / f"{name}.xml"
+        path.write_text(boat_xml(get_boat(name)))
+        paths.append(path)
+    return paths
+
+
+if __name__ == "__main__":  # python -m sailmujoco.mjcf [xml-dir]
+    import sys
+
+    for written in write_default_xml(sys.argv[1] if len(sys.argv) > 1 else "xml"):
+        print(f"wrote {written}")

@@ -1,0 +1,323 @@
+"""The physics step: forces recomputed before every MuJoCo sub-step, added mass solved exactly.
+
+:class:`BoatPhysics` is a ``dm_control.mujoco.Physics`` with named SI accessors. One physics
+sub-step is::
+
+    mj_step1                      kinematics, mass matrix M, passive forces
+    boat_forces(t, qpos, qvel)    every force model, for this very state
+    qfrc_applied <- forces        (not held from an earlier sub-step)
+    M <- M + J^T M_A J            added mass of the hull, then M is re-factorised
+    mj_step2                      actuators, acceleration, implicit-fast integration
+
+so MuJoCo solves (M_RB + M_A) nu_dot = tau exactly inside the step: no force is built from
+an earlier acceleration, and a heave added mass six times the hull's mass is as stable as
+none. ``step(n)`` runs n such sub-steps at the model's fixed timestep, so a trajectory does
+not depend on how many sub-steps a control step has.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import mujoco
+import numpy as np
+from dm_control.mujoco import engine
+from dm_control.mujoco.wrapper import core
+
+from . import frames
+from .forces import boat as kernels
+from .forces.foil import naca0015
+from .forces.wind import WANDER_DT, WindConfig, WindField
+from .hull import column_quadrature, strip_quadrature
+from .mjcf import compile_model
+from .params import BoatParams, get_boat
+
+
+class SimulationStopped(RuntimeError):
+    """The simulation left the valid state space; ``reason`` says how."""
+
+    def __init__(self, reason: str, time: float):
+        super().__init__(f"simulation stopped at t = {time:.3f} s: {reason}")
+        self.reason = reason
+        self.time = time
+
+
+@dataclass(frozen=True)
+class ForceSwitches:
+    """Which force models act. ``hydrostatics``: 'geometric', 'paper' or 'off'."""
+
+    hydrostatics: str = "geometric"
+    sail: bool = True
+    keel: bool = True
+    rudder: bool = True
+    damping: bool = True
+    added_mass: bool = True
+    sail_tangential: bool = True
+
+
+class BoatPhysics(engine.Physics):
+    """A boat in MuJoCo with our force models. Build it with :meth:`load`."""
+
+    # ------------------------------------------------------------------ construction
+    @classmethod
+    def load(cls, boat: str = "wille_yacht", *, params: BoatParams | None = None,
+             sail_mode: str = "actuated", wind: WindConfig | None = None,
+             forces: ForceSwitches | None = None, **boat_options) -> BoatPhysics:
+        """Compile ``boat`` (or ``params``) and attach wind and force models.
+
+        ``boat_options`` go to the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
+        """
+        if params is None:
+            params = get_boat(boat, **boat_options)
+        elif boat_options:
+            raise ValueError("give either params or boat options, not both")
+        model = compile_model(params, sail_mode)
+        physics = cls.from_model(core.MjModel(model))
+        physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches())
+        physics.reset()
+        return physics
+
+    def _setup(self, params, sail_mode, wind, forces):
+        self.params = params
+        self.sail_mode = sail_mode
+        self.switches = forces
+        self.wind_config = wind
+        self.wind = WindField(wind)
+        self._P = kernels.pack_parameters(
+            params, hydrostatics=forces.hydrostatics, sail=forces.sail, keel=forces.keel,
+            rudder=forces.rudder, damping=forces.damping, added_mass=forces.added_mass,
+            sail_tangential=forces.sail_tangential, wind=wind, wander_dt=WANDER_DT)
+        cols = column_quadrature(params.hull)
+        self._columns = np.ascontiguousarray(
+            np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))
+        self._strips = np.ascontiguousarray(np.vstack(strip_quadrature(params.hull)))
+        table = naca0015()
+        self._table = (table.alpha, table.log_re, table.cl, table.cd)
+        m = self.model.ptr
+        names = ("rudder", "sail")
+        self._idx = np.array([v for n in names for v in
+                              (m.jnt_qposadr[m.joint(n).id], m.jnt_dofadr[m.joint(n).id])],
+                             dtype=np.int64)
+        self._terms = np.zeros((len(kernels.TERMS), 6))
+        self._diag = np.zeros(kernels.D_SIZE)
+        self._qfrc = np.zeros(m.nv)
+        self._madd = np.zeros((3, 3))
+        self._external = np.zeros(6)
+        # CSR addresses of the hull's translational block (rows/cols 0-2) and rotational diagonal
+        adr = []
+        for i in range(3):
+            for j in range(i + 1):
+                row = m.M_rowadr[i]
+                cols_i = m.M_colind[row:row + m.M_rownnz[i]]
+                adr.append((i, j, row + int(np.nonzero(cols_i == j)[0][0])))
+        self._m_trans = np.array(adr, dtype=np.int64)
+        self._m_rot = np.array([m.M_rowadr[i] + m.M_rownnz[i] - 1 for i in (3, 4, 5)])
+        self._a_rot = params.added_mass_diagonal[3:] if forces.added_mass else np.zeros(3)
+        self._status = kernels.STATUS_OK
+        self._fresh = True
+        self.stop_reason: str | None = None
+
+    def copy(self, share_model=False):
+        new = super().copy(share_model=share_model)
+        new._setup(self.params, self.sail_mode, self.wind_config, self.switches)
+        new._external[:] = self._external
+        return new
+
+    def reset(self, keyframe_id=None):
+        """Reset to the ``home`` keyframe (upright at the design waterline)."""
+        super().reset(0 if keyframe_id is None else keyframe_id)
+        if hasattr(self, "_P"):
+            self.stop_reason = None
+            self._compute_forces()
+
+    # ------------------------------------------------------------------ stepping
+    def set_control(self, control):
+        """Set the actuator commands; a non-finite command is refused with a clear message."""
+        control = np.asarray(control, dtype=float)
+        if control.shape != (self.model.nu,):
+            raise ValueError(f"control must have shape ({self.model.nu},) "
+                             f"for actuators {self.actuator_names}, got {control.shape}")
+        if not np.all(np.isfinite(control)):
+            raise ValueError(f"non-finite control {control.tolist()} for actuators "
+                             f"{self.actuator_names}")
+        super().set_control(control)
+
+    @property
+    def actuator_names(self) -> list[str]:
+        return [self.model.ptr.actuator(i).name for i in range(self.model.nu)]
+
+    def set_external_wrench(self, wrench_body) -> None:
+        """A constant extra body-frame wrench (Fx, Fy, Fz, Mx, My, Mz) about CO (tests, thrust)."""
+        wrench_body = np.asarray(wrench_body, dtype=float)
+        if wrench_body.shape != (6,) or not np.all(np.isfinite(wrench_body)):
+            raise ValueError("external wrench must be 6 finite numbers (N, N m)")
+        self._external[:] = wrench_body
+
+    def _compute_forces(self) -> int:
+        d = self.data.ptr
+        self.wind.ensure(d.time + 1.0)
+        self._status = kernels.boat_forces(
+            d.time, d.qpos, d.qvel, self._idx, self._P, self._columns, self._strips,
+            *self._table, self.wind.gust_frequency, self.wind.gust_phase,
+            self.wind.gust_amplitude, self.wind.log_z, self.wind.wander, self._external,
+            self._terms, self._diag, self._qfrc, self._madd)
+        return self._status
+
+    def step(self, nstep: int = 1) -> None:
+        """Advance ``nstep`` physics sub-steps, recomputing every force before each."""
+        m, d = self.model.ptr, self.data.ptr
+        with self.check_invalid_state():
+            for _ in range(nstep):
+                if self.stop_reason is not None:
+                    raise SimulationStopped(self.stop_reason, d.time)
+                mujoco.mj_step1(m, d)
+                status = self._compute_forces()
+                if status != kernels.STATUS_OK:
+                    self.stop_reason = ("non-finite state" if status == kernels.STATUS_NONFINITE
+                                        else "capsized: |heel| > 90 deg")
+                    raise SimulationStopped(self.stop_reason, d.time)
+                d.qfrc_applied[:] = self._qfrc
+                madd = self._madd
+                for i, j, a in self._m_trans:
+                    d.M[a] += madd[i, j]
+                d.M[self._m_rot] += self._a_rot
+                mujoco.mj_factorM(m, d)
+                mujoco.mj_step2(m, d)
+                self._fresh = False
+
+    def _ensure_fresh(self) -> None:
+        """After a step, MuJoCo's derived quantities and our forces describe the state before
+        the last integration; bring kinematics and forces up to the current state."""
+        if self._fresh:
+            return
+        m, d = self.model.ptr, self.data.ptr
+        mujoco.mj_kinematics(m, d)
+        mujoco.mj_comPos(m, d)
+        mujoco.mj_comVel(m, d)
+        self._compute_forces()
+        self._fresh = True
+
+    # ------------------------------------------------------------------ accessors (SI)
+    def rotation(self) -> np.ndarray:
+        """Body->world rotation of the hull (3x3)."""
+        out = np.empty(9)
+        mujoco.mju_quat2Mat(out, self.data.ptr.qpos[3:7])
+        return out.reshape(3, 3)
+
+    def _euler(self):
+        return frames.euler_from_matrix(self.rotation())
+
+    def position(self) -> np.ndarray:
+        """World position (x east, y north, z up) of CO, m."""
+        return self.data.ptr.qpos[0:3].copy()
+
+    def heel(self) -> float:
+        """Heel (roll) angle phi, rad, positive starboard down."""
+        return float(self._euler()[0])
+
+    def pitch(self) -> float:
+        """Pitch angle, rad, positive bow up."""
+        return float(self._euler()[1])
+
+    def yaw(self) -> float:
+        """ENU yaw, rad, counter-clockwise from east."""
+        return float(self._euler()[2])
+
+    def heading(self) -> float:
+        """Compass heading, rad, clockwise from north (Wille's psi)."""
+        return float(frames.heading_from_yaw(self.yaw()))
+
+    def body_velocity(self) -> np.ndarray:
+        """Body-frame linear velocity of CO (u, v, w), m/s."""
+        return self.rotation().T @ self.data.ptr.qvel[0:3]
+
+    def angular_velocity(self) -> np.ndarray:
+        """Body-frame angular velocity (p, q, r), rad/s."""
+        return self.data.ptr.qvel[3:6].copy()
+
+    def surge_speed(self) -> float:
+        return float(self.body_velocity()[0])
+
+    def sway_speed(self) -> float:
+        return float(self.body_velocity()[1])
+
+    def roll_rate(self) -> float:
+        return float(self.data.ptr.qvel[3])
+
+    def yaw_rate(self) -> float:
+        return float(self.data.ptr.qvel[5])
+
+    def drift_angle(self) -> float:
+        """Drift angle beta = atan2(v cos(phi), u), Wille eq. 45 (FLU sign: positive to port)."""
+        u, v, _ = self.body_velocity()
+        return float(math.atan2(v * math.cos(self.heel()), u))
+
+    def course(self) -> float:
+        """Course over ground: ENU direction of the horizontal velocity of CO, rad."""
+        vx, vy = self.data.ptr.qvel[0:2]
+        return float(math.atan2(vy, vx))
+
+    def speed_over_ground(self) -> float:
+        return float(np.hypot(*self.data.ptr.qvel[0:2]))
+
+    def rudder_angle(self) -> float:
+        return float(self.data.ptr.qpos[self._idx[0]])
+
+    def sail_angle(self) -> float:
+        return float(self.data.ptr.qpos[self._idx[2]])
+
+    def true_wind(self, height: float | None = None) -> np.ndarray:
+        """World wind velocity (m/s) at the current time, at ``height`` (default: masthead)."""
+        self._ensure_fresh()
+        if height is None:
+            height = float(self.data.ptr.site_xpos[self.model.ptr.site("masthead").id][2])
+        return self.wind.velocity(self.data.ptr.time, height)
+
+    def apparent_wind_masthead(self) -> np.ndarray:
+        """Apparent wind velocity at the masthead in the body frame, m/s (air relative to it)."""
+        self._ensure_fresh()
+        m, d = self.model.ptr, self.data.ptr
+        site = m.site("masthead").id
+        vel = np.zeros(6)
+        mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_SITE, site, vel, 0)
+        air = self.wind.velocity(d.time, float(d.site_xpos[site][2])) - vel[3:]
+        return self.rotation().T @ air
+
+    def apparent_wind_angle(self) -> float:
+        """AWA at the masthead, rad, positive when the wind comes from starboard."""
+        return frames.apparent_wind_angle(self.apparent_wind_masthead())
+
+    def apparent_wind_speed(self) -> float:
+        """Apparent wind speed at the masthead in the body x-y plane, m/s."""
+        return float(np.hypot(*self.apparent_wind_masthead()[:2]))
+
+    def angle_of_attack(self, foil: str) -> float:
+        """Angle of attack (rad) of 'sail', 'keel' or 'rudder' now."""
+        index = {"sail": kernels.D_ALPHA_SAIL, "keel": kernels.D_ALPHA_KEEL,
+                 "rudder": kernels.D_ALPHA_RUDDER}
+        if foil not in index:
+            raise ValueError(f"unknown foil {foil!r}; choose one of {sorted(index)}")
+        self._ensure_fresh()
+        return float(self._diag[index[foil]])
+
+    def force_term(self, name: str) -> np.ndarray:
+        """Body-frame wrench (Fx, Fy, Fz, Mx, My, Mz) about CO of one force model, N and N m."""
+        if name not in kernels.TERMS:
+            raise ValueError(f"unknown force term {name!r}; choose one of {kernels.TERMS}")
+        self._ensure_fresh()
+        return self._terms[kernels.TERMS.index(name)].copy()
+
+    def force_terms(self) -> dict[str, np.ndarray]:
+        self._ensure_fresh()
+        return {name: self._terms[i].copy() for i, name in enumerate(kernels.TERMS)}
+
+    def submerged_volume(self) -> float:
+        """Submerged volume (geometric hydrostatics only), m^3."""
+        self._ensure_fresh()
+        return float(self._diag[kernels.D_SUBMERGED])
+
+    def sail_coefficients(self) -> tuple[float, float]:
+        """(C_N, C_T) of the sail at the last force evaluation."""
+        self._ensure_fresh()
+        return float(self._diag[kernels.D_CN]), float(self._diag[kernels.D_CT])

@@ -1,0 +1,1 @@
+"""Studies: one script per paper figure or table; each writes results/<study>/."""
