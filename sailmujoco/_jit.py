@@ -4,11 +4,40 @@ Every force model is written once, in plain Python and numpy. ``kernel`` compile
 numba (the fast path). With ``NUMBA_DISABLE_JIT=1`` in the environment numba hands back the
 plain function, so the very same source runs in the interpreter: that is the readable
 reference path the tests compare the compiled one against (to 1e-10).
+
+Compiled kernels are cached on disk. numba invalidates a cached kernel when its own file
+changes but not when a kernel it calls (in another file) does, so the cache is cleared here
+whenever any kernel source differs from the one it was built from.
 """
 
 from __future__ import annotations
 
+import hashlib
+from pathlib import Path
+
 import numba
+
+_PACKAGE = Path(__file__).resolve().parent
+_SOURCES = sorted([_PACKAGE / "_jit.py", *(_PACKAGE / "forces").glob("*.py")])
+
+
+def _clear_stale_cache() -> None:
+    digest = hashlib.sha256(b"".join(p.read_bytes() for p in _SOURCES)).hexdigest()
+    for cache_dir in {p.parent / "__pycache__" for p in _SOURCES}:
+        stamp = cache_dir / "sailmujoco-kernels.stamp"
+        try:
+            if stamp.exists() and stamp.read_text() == digest:
+                continue
+            if cache_dir.exists():
+                for f in [*cache_dir.glob("*.nbi"), *cache_dir.glob("*.nbc")]:
+                    f.unlink(missing_ok=True)
+            cache_dir.mkdir(exist_ok=True)
+            stamp.write_text(digest)
+        except OSError:  # read-only install: numba falls back to its own cache location
+            pass
+
+
+_clear_stale_cache()
 
 
 def kernel(fn):

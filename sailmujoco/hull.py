@@ -135,7 +135,7 @@ class ColumnQuadrature:
     z_top: np.ndarray
 
 
-def column_quadrature(h: HullShape, nx: int = 32, ntheta: int = 24) -> ColumnQuadrature:
+def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16) -> ColumnQuadrature:
     """Gauss-Legendre in x, y = b(x) sin(theta) with the midpoint rule in theta.
 
     The substitution makes the half-ellipse depth t cos(theta) and the strip width

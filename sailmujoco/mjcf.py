@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import math
 from importlib import resources
+from pathlib import Path
 
 import mujoco
 import numpy as np
@@ -159,6 +160,9 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjSpec:
     spec.option.gravity = [0.0, 0.0, -GRAVITY]
     # No contacts: the boat meets nothing but water, which our force models handle.
     spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_CONTACT
+    # A non-finite state must stop the run with its reason (physics.SimulationStopped), not be
+    # silently reset to the keyframe by MuJoCo.
+    spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_AUTORESET
 
     visual = spec.add_default("visual", spec.default)
     visual.geom.contype = 0
@@ -299,12 +303,27 @@ def boat_xml(p: BoatParams, sail_mode: str = "actuated") -> str:
     return spec.to_xml()
 
 
+def xml_root():
+    """Where the boats' MJCF lives: ``sailmujoco/xml`` when installed, ``xml/`` in a checkout.
+
+    ``xml/`` is no Python package (an ``__init__.py`` there would shadow the standard
+    library's ``xml`` for anything run from the repository root), so it is found as data.
+    """
+    installed = resources.files("sailmujoco").joinpath("xml")
+    if installed.is_dir():
+        return installed
+    checkout = Path(__file__).resolve().parents[1] / "xml"  # editable install
+    if checkout.is_dir():
+        return checkout
+    raise FileNotFoundError("sailmujoco's xml/ folder is missing from this installation")
+
+
 def scene_xml(boat: str) -> str:
     """The hand-written ``xml/<boat>/scene.xml`` shipped with the package."""
-    try:
-        return resources.files("sailmujoco.xml").joinpath(boat, "scene.xml").read_text()
-    except FileNotFoundError:
-        raise ValueError(f"no scene for boat {boat!r} in sailmujoco/xml") from None
+    path = xml_root().joinpath(boat, "scene.xml")
+    if not path.is_file():
+        raise ValueError(f"no scene for boat {boat!r} in {xml_root()}")
+    return path.read_text()
 
 
 def compile_model(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjModel:
@@ -315,8 +334,6 @@ def compile_model(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjModel:
 
 def write_default_xml(root) -> list:
     """Write ``<root>/<boat>/<boat>.xml`` for every registered boat; returns the paths."""
-    from pathlib import Path
-
     from .params import BOATS
 
     paths = []

@@ -56,6 +56,32 @@ class ForceSwitches:
     sail_tangential: bool = True
 
 
+def _entry_point(dispatcher):
+    """The compiled entry point of a one-signature kernel (skips numba's type dispatch).
+
+    Falls back to the dispatcher (or, with NUMBA_DISABLE_JIT, the plain function).
+    """
+    if not hasattr(dispatcher, "overloads"):
+        return dispatcher
+    return _LazyEntry(dispatcher)
+
+
+class _LazyEntry:
+    """Calls through the dispatcher once, then through the compiled entry point."""
+
+    def __init__(self, dispatcher):
+        self._dispatcher = dispatcher
+        self._entry = None
+
+    def __call__(self, *args):
+        if self._entry is None:
+            result = self._dispatcher(*args)
+            if len(self._dispatcher.signatures) == 1:
+                self._entry = self._dispatcher.overloads[self._dispatcher.signatures[0]].entry_point
+            return result
+        return self._entry(*args)
+
+
 class BoatPhysics(engine.Physics):
     """A boat in MuJoCo with our force models. Build it with :meth:`load`."""
 
@@ -101,22 +127,43 @@ class BoatPhysics(engine.Physics):
                              dtype=np.int64)
         self._terms = np.zeros((len(kernels.TERMS), 6))
         self._diag = np.zeros(kernels.D_SIZE)
-        self._qfrc = np.zeros(m.nv)
         self._madd = np.zeros((3, 3))
+        self._work = np.zeros(kernels.WORK_SIZE)
         self._external = np.zeros(6)
-        # CSR addresses of the hull's translational block (rows/cols 0-2) and rotational diagonal
-        adr = []
+        # CSR addresses in MuJoCo's mass matrix of the hull's translational block (lower
+        # triangle of rows/cols 0-2) and of the rotational diagonal (3, 4, 5)
+        addr = []
         for i in range(3):
             for j in range(i + 1):
                 row = m.M_rowadr[i]
                 cols_i = m.M_colind[row:row + m.M_rownnz[i]]
-                adr.append((i, j, row + int(np.nonzero(cols_i == j)[0][0])))
-        self._m_trans = np.array(adr, dtype=np.int64)
-        self._m_rot = np.array([m.M_rowadr[i] + m.M_rownnz[i] - 1 for i in (3, 4, 5)])
-        self._a_rot = params.added_mass_diagonal[3:] if forces.added_mass else np.zeros(3)
+                addr.append(row + int(np.nonzero(cols_i == j)[0][0]))
+        addr += [m.M_rowadr[i] + m.M_rownnz[i] - 1 for i in (3, 4, 5)]
+        self._csr_addr = np.array(addr, dtype=np.int64)
+        self._kernel = _entry_point(kernels.boat_forces)
+        self._bound = None
         self._status = kernels.STATUS_OK
         self._fresh = True
         self.stop_reason: str | None = None
+
+    def _bind(self):
+        """Hold the arrays the kernel reads and writes (MuJoCo's buffers are stable per MjData)."""
+        d = self.data.ptr
+        w = self.wind
+        self._bound = d
+        self._bound_wander = w.wander
+        self._qfrc = d.qfrc_applied
+        self._args = (d.qpos, d.qvel, self._idx, self._P, self._columns, self._strips,
+                      *self._table, w.gust_frequency, w.gust_phase, w.gust_amplitude, w.log_z,
+                      w.wander, self._external, self._terms, self._diag, d.qfrc_applied,
+                      self._madd, d.M, self._csr_addr, self._work)
+
+    def _prepare(self, horizon: float) -> None:
+        """Make sure the wind covers the next ``horizon`` seconds and the arguments are bound."""
+        d = self.data.ptr
+        self.wind.ensure(d.time + horizon + 1.0)
+        if self._bound is not d or self._bound_wander is not self.wind.wander:
+            self._bind()
 
     def copy(self, share_model=False):
         new = super().copy(share_model=share_model)
@@ -154,37 +201,33 @@ class BoatPhysics(engine.Physics):
             raise ValueError("external wrench must be 6 finite numbers (N, N m)")
         self._external[:] = wrench_body
 
-    def _compute_forces(self) -> int:
-        d = self.data.ptr
-        self.wind.ensure(d.time + 1.0)
-        self._status = kernels.boat_forces(
-            d.time, d.qpos, d.qvel, self._idx, self._P, self._columns, self._strips,
-            *self._table, self.wind.gust_frequency, self.wind.gust_phase,
-            self.wind.gust_amplitude, self.wind.log_z, self.wind.wander, self._external,
-            self._terms, self._diag, self._qfrc, self._madd)
+    def _compute_forces(self, add_mass: bool = False) -> int:
+        """Evaluate every force model for the current state (writes qfrc_applied)."""
+        self._prepare(0.0)
+        self._status = self._kernel(self.data.ptr.time, *self._args, add_mass)
         return self._status
 
     def step(self, nstep: int = 1) -> None:
         """Advance ``nstep`` physics sub-steps, recomputing every force before each."""
         m, d = self.model.ptr, self.data.ptr
+        if self.stop_reason is not None:
+            raise SimulationStopped(self.stop_reason, d.time)
+        self._prepare(nstep * m.opt.timestep)
+        kernel, args = self._kernel, self._args
+        step1, step2, factor = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_factorM
         with self.check_invalid_state():
             for _ in range(nstep):
-                if self.stop_reason is not None:
-                    raise SimulationStopped(self.stop_reason, d.time)
-                mujoco.mj_step1(m, d)
-                status = self._compute_forces()
+                step1(m, d)
+                # forces for this very state into qfrc_applied; added mass into M
+                status = kernel(d.time, *args, True)
                 if status != kernels.STATUS_OK:
+                    self._status = status
                     self.stop_reason = ("non-finite state" if status == kernels.STATUS_NONFINITE
                                         else "capsized: |heel| > 90 deg")
                     raise SimulationStopped(self.stop_reason, d.time)
-                d.qfrc_applied[:] = self._qfrc
-                madd = self._madd
-                for i, j, a in self._m_trans:
-                    d.M[a] += madd[i, j]
-                d.M[self._m_rot] += self._a_rot
-                mujoco.mj_factorM(m, d)
-                mujoco.mj_step2(m, d)
-                self._fresh = False
+                factor(m, d)
+                step2(m, d)
+        self._fresh = False
 
     def _ensure_fresh(self) -> None:
         """After a step, MuJoCo's derived quantities and our forces describe the state before

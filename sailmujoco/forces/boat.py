@@ -50,6 +50,7 @@ HYDROSTATIC_MODES = ("off", "paper", "geometric")
  D_SIZE) = range(15)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
+WORK_SIZE = 64  # scratch floats handed to boat_forces
 
 
 def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
@@ -132,13 +133,17 @@ def _point_flow(fluid_body, v, w, point, extra, out):
 @kernel
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, gust_f, gust_phase, gust_amp, log_z, wander, external,
-                terms, diag, qfrc, madd):
+                terms, diag, qfrc, madd, mass_csr, csr_addr, work, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
     ``idx`` = (qpos index of the rudder hinge, its dof, qpos index of the sail hinge, its dof).
     Writes ``terms`` (len(TERMS), 6) body wrenches about CO, ``diag`` (D_SIZE,), ``qfrc`` (nv,)
     generalised forces, and ``madd`` (3, 3), the world-frame translational added-mass block
-    R diag(a1, a2, a3) R^T. Returns a status: STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
+    R diag(a1, a2, a3) R^T. With ``add_mass`` it also adds the hull's added mass to MuJoCo's
+    sparse mass matrix ``mass_csr`` at ``csr_addr``: the six lower-triangle entries of the
+    translational block ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational
+    diagonal entries. ``work`` (WORK_SIZE,) is scratch space, so the kernel allocates nothing.
+    Returns STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
     """
     for k in range(qpos.shape[0]):
         if not math.isfinite(qpos[k]):
@@ -148,31 +153,26 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             return STATUS_NONFINITE
     terms[:, :] = 0.0
     qfrc[:] = 0.0
-    R = np.empty((3, 3))
+    R = work[0:9].reshape((3, 3))
+    v, w, current_b = work[9:12], work[12:15], work[15:18]
+    nu_r = work[18:24]
+    zero3, flow, point = work[24:27], work[27:30], work[30:33]
+    chord, normal, force = work[33:36], work[36:39], work[39:42]
+    wrench, extra = work[42:48], work[48:51]
+    wind_w, wind_b, total = work[51:54], work[54:57], work[57:63]
+    zero3[:] = 0.0
     rotation_from_quat(qpos[3:7], R)
     if R[2, 2] < 0.0:
         return STATUS_CAPSIZED  # |heel| or |pitch| beyond 90 deg
 
     # body-frame velocities: v of CO, w, and v_r relative to the current (eq. 5)
-    v = np.empty(3)
-    w = np.empty(3)
-    current_b = np.empty(3)
     for i in range(3):
         v[i] = R[0, i] * qvel[0] + R[1, i] * qvel[1] + R[2, i] * qvel[2]
         w[i] = qvel[3 + i]
         current_b[i] = R[0, i] * P[P_CURRENT_E] + R[1, i] * P[P_CURRENT_N]
-    nu_r = np.empty(6)
     for i in range(3):
         nu_r[i] = v[i] - current_b[i]
         nu_r[3 + i] = w[i]
-
-    zero3 = np.zeros(3)
-    flow = np.empty(3)
-    point = np.empty(3)
-    chord = np.zeros(3)
-    normal = np.zeros(3)
-    force = np.empty(3)
-    wrench = np.empty(6)
 
     # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
     if P[P_ON_KEEL] > 0.0:
@@ -216,13 +216,10 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         arm_x, arm_y = -P[P_CE_AFT] * cl_, P[P_CE_AFT] * sl_  # CE from the mast axis
         point[0], point[1], point[2] = P[P_MAST_X] + arm_x, arm_y, P[P_CE_HEIGHT]
         # hinge-rate velocity (-lambda_dot z) x arm = lambda_dot l2 (sin, cos, 0), eq. 26
-        extra = np.empty(3)
         extra[0], extra[1], extra[2] = lam_rate * P[P_CE_AFT] * sl_, lam_rate * P[P_CE_AFT] * cl_, 0.0
         z_ce = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
-        wind_w = np.empty(3)
         wind_velocity(t, z_ce, P[P_WIND_SPEED], P[P_WIND_FROM], gust_f, gust_phase, gust_amp,
                       log_z, P[P_WANDER_DT], wander, wind_w)
-        wind_b = np.empty(3)
         for i in range(3):
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         _point_flow(wind_b, v, w, point, extra, flow)
@@ -273,12 +270,23 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     terms[T_EXT, :] = external
 
     # ---- generalised forces: free joint (world force, body torque about CO) + sail hinge ----
-    total = np.zeros(6)
+    total[:] = 0.0
     for row in range(terms.shape[0]):
         for i in range(6):
             total[i] += terms[row, i]
     for i in range(3):
         qfrc[i] = R[i, 0] * total[0] + R[i, 1] * total[1] + R[i, 2] * total[2]
         qfrc[3 + i] = total[3 + i]
+    qfrc[idx[1]] = 0.0  # the rudder CP is on its stock: no hinge moment
     qfrc[idx[3]] = sail_hinge
+
+    if add_mass and P[P_ON_ADDED] > 0.0:
+        k = 0
+        for i in range(3):
+            for j in range(i + 1):
+                mass_csr[csr_addr[k]] += madd[i, j]
+                k += 1
+        mass_csr[csr_addr[6]] += P[P_A4]
+        mass_csr[csr_addr[7]] += P[P_A5]
+        mass_csr[csr_addr[8]] += P[P_A6]
     return STATUS_OK

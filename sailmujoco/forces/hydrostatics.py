@@ -84,12 +84,16 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
 
     ``righting_stiffness`` = rho g V GM_t (= m g l_phi). Roll moment about body x:
     -K sin(phi) cos(phi), Wille eq. 20, or -K sin(phi), Saoud eq. 4 (``righting_sin_only``).
-    Heave: world-vertical force weight - k_heave z through the CG. Pitch: k_pitch sin(theta)
-    about body y (theta > 0 bow up; a positive body-y moment pushes the bow down).
+    Heave: world-vertical force weight - k_heave (z_G - z_G0) through the CG, where z_G is the
+    CG's world height: the reduced models hold the CG's height (Saoud writes his equations at
+    G), so a spring on CO's height would couple roll into heave when the CG lies below CO.
+    Pitch: k_pitch sin(theta) about body y (theta > 0 bow up; a positive body-y moment pushes
+    the bow down).
     """
     heel = math.atan2(rot[2, 1], rot[2, 2])
     pitch = math.asin(max(-1.0, min(1.0, rot[2, 0])))
-    fz = weight - k_heave * pos_z
+    z_cg = pos_z + rot[2, 0] * cg_x + rot[2, 2] * cg_z
+    fz = weight - k_heave * (z_cg - cg_z)
     ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
     fx, fy, fz_b = fz * ex, fz * ey, fz * ez
     # r_G x F with r_G = (cg_x, 0, cg_z)

@@ -1,0 +1,79 @@
+"""Speed of a physics step with all forces, as a ratio to the bare mj_step of the same model.
+
+Run: python benchmarks/step_speed.py [--steps N]
+
+Both are measured in this run, on the same compiled MjModel: "bare" is mujoco.mj_step on a
+fresh MjData (no force models, no added mass); "sailmujoco" is BoatPhysics.step, which per
+sub-step runs mj_step1, every force model (compiled kernels), the added-mass update and
+refactorisation of the mass matrix, and mj_step2. Calls of step(1) show the per-call
+overhead; step(20) is a 10 Hz control loop at the 5 ms physics step.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import time
+
+import mujoco
+import numpy as np
+
+from sailmujoco.forces.wind import WindConfig
+from sailmujoco.physics import BoatPhysics, ForceSwitches
+
+
+def best_of(fn, repeats=5):
+    times = []
+    for _ in range(repeats):
+        start = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - start)
+    return min(times)
+
+
+def measure(boat: str, hydrostatics: str, steps: int) -> dict:
+    wind = WindConfig(speed=8.0, direction_from=math.radians(45.0), seed=0)
+    physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics))
+    physics.set_control([0.05, 0.4])
+    physics.step(200)  # warm up (and JIT, if not cached)
+    model = physics.model.ptr
+    bare = mujoco.MjData(model)
+    mujoco.mj_resetDataKeyframe(model, bare, 0)
+    bare.ctrl[:] = [0.05, 0.4]
+
+    def run_bare():
+        for _ in range(steps):
+            mujoco.mj_step(model, bare)
+
+    def run_single():
+        for _ in range(steps):
+            physics.step(1)
+
+    def run_control():
+        for _ in range(steps // 20):
+            physics.step(20)
+
+    t_bare = best_of(run_bare) / steps * 1e6
+    t_single = best_of(run_single) / steps * 1e6
+    t_control = best_of(run_control) / (steps // 20 * 20) * 1e6
+    return {"boat": boat, "hydrostatics": hydrostatics, "bare_us": t_bare,
+            "step1_us": t_single, "step20_us": t_control}
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--steps", type=int, default=20000)
+    args = parser.parse_args()
+    print(f"{'boat':12s} {'hydrostatics':12s} {'bare mj_step':>13s} {'step(1)':>9s} "
+          f"{'ratio':>6s} {'step(20)':>9s} {'ratio':>6s}")
+    for boat in ("wille_yacht", "saoud_robot"):
+        for hydrostatics in ("paper", "geometric"):
+            r = measure(boat, hydrostatics, args.steps)
+            print(f"{r['boat']:12s} {r['hydrostatics']:12s} {r['bare_us']:10.2f} us "
+                  f"{r['step1_us']:6.2f} us {r['step1_us'] / r['bare_us']:6.2f} "
+                  f"{r['step20_us']:6.2f} us {r['step20_us'] / r['bare_us']:6.2f}")
+    print(f"(numpy {np.__version__}, mujoco {mujoco.__version__}; ratio = time / bare mj_step)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,34 @@
+"""Shared helpers: boats load in ~0.1 s once the kernels are compiled (cached on disk)."""
+
+import math
+
+import numpy as np
+import pytest
+
+from sailmujoco.forces.wind import WindConfig
+from sailmujoco.physics import BoatPhysics, ForceSwitches
+
+BOATS = ("wille_yacht", "saoud_robot")
+CALM = WindConfig(speed=0.0, gusts=False, wander=False)
+
+
+def load(boat="wille_yacht", *, wind=CALM, sail_mode="actuated", **switches):
+    """A BoatPhysics with the given force switches (ForceSwitches field names)."""
+    return BoatPhysics.load(boat, wind=wind, sail_mode=sail_mode, forces=ForceSwitches(**switches))
+
+
+def only_hull(boat="wille_yacht", hydrostatics="off", **extra):
+    """The bare hull: no foils, no damping; added mass on unless switched off."""
+    kwargs = dict(hydrostatics=hydrostatics, sail=False, keel=False, rudder=False,
+                  damping=False)
+    kwargs.update(extra)
+    return load(boat, **kwargs)
+
+
+def gusty(speed=10.0, seed=0, direction_deg=45.0):
+    return WindConfig(speed=speed, direction_from=math.radians(direction_deg), seed=seed)
+
+
+@pytest.fixture
+def rng():
+    return np.random.default_rng(12345)

@@ -1,0 +1,87 @@
+"""Added mass solved exactly inside the step: step forces give F / (m + A), no lag."""
+
+import math
+
+import mujoco
+import numpy as np
+import pytest
+from conftest import only_hull
+
+from sailmujoco.forces.added_mass import added_mass_velocity_terms
+
+
+def _accelerate(physics, wrench, seconds=1.0):
+    physics.model.opt.gravity[:] = 0.0
+    physics.set_external_wrench(wrench)
+    velocities = []
+    for _ in range(int(round(seconds / physics.timestep()))):
+        physics.step(1)
+        velocities.append(physics.body_velocity())
+    return np.array(velocities)
+
+
+@pytest.mark.parametrize("axis,index", [("surge", 0), ("sway", 1), ("heave", 2)])
+def test_step_force_gives_f_over_m_plus_added_mass(axis, index):
+    physics = only_hull("wille_yacht")
+    p = physics.params
+    force = 500.0
+    wrench = np.zeros(6)
+    wrench[index] = force
+    v = _accelerate(physics, wrench)
+    dt = physics.timestep()
+    # slope over the second half: the rudder and boom servos have settled by then
+    half = v.shape[0] // 2
+    t = np.arange(v.shape[0]) * dt
+    slope = np.polyfit(t[half:], v[half:, index], 1)[0]
+    expected = force / (p.mass - p.added_mass[index])
+    assert slope == pytest.approx(expected, rel=0.01)
+    # and without added mass, F / m: the test can tell the difference
+    assert abs(expected - force / p.mass) / expected > 0.05
+
+
+def test_heave_added_mass_acts_from_the_first_step():
+    """No lag: the very first step already has a = F / (m + A33), with A33 > m."""
+    physics = only_hull("wille_yacht")
+    p = physics.params
+    assert -p.added_mass[2] > p.mass
+    physics.model.opt.gravity[:] = 0.0
+    physics.set_external_wrench([0, 0, 1000.0, 0, 0, 0])
+    physics.step(1)
+    w = physics.body_velocity()[2]
+    assert w / physics.timestep() == pytest.approx(1000.0 / (p.mass - p.added_mass[2]), rel=1e-9)
+
+
+def test_augmented_mass_matrix_equals_dense_solve(rng):
+    """The qacc MuJoCo integrates equals (M_RB + J^T M_A J)^-1 tau on a random state."""
+    physics = only_hull("wille_yacht", hydrostatics="geometric", damping=True)
+    m, d = physics.model.ptr, physics.data.ptr
+    d.qpos[3:7] = [math.cos(0.1), math.sin(0.1), 0.05, 0.2]
+    d.qpos[3:7] /= np.linalg.norm(d.qpos[3:7])
+    d.qvel[:] = rng.normal(size=m.nv) * 0.3
+    before = mujoco.MjData(m)
+    before.qpos[:], before.qvel[:], before.act[:] = d.qpos, d.qvel, d.act
+    mujoco.mj_forward(m, before)
+    rigid = np.zeros((m.nv, m.nv))
+    mujoco.mj_fullM(m, before, rigid)
+    rot = before.xmat[m.body("hull").id].reshape(3, 3)
+    a = physics.params.added_mass_diagonal
+    added = np.zeros((m.nv, m.nv))
+    added[:3, :3] = rot @ np.diag(a[:3]) @ rot.T
+    added[3:6, 3:6] = np.diag(a[3:])
+    physics.step(1)
+    expected = np.linalg.solve(rigid + added, d.qfrc_smooth)
+    assert d.qacc == pytest.approx(expected, rel=1e-9, abs=1e-12)
+    assert np.abs(np.linalg.solve(rigid, d.qfrc_smooth) - d.qacc).max() > 1e-3
+
+
+def test_munk_moment_sign_and_size():
+    """Yaw row of the velocity terms = (a11 - a22) u v (Wille eq. 10's Munk moment)."""
+    a = np.array([160.0, 1200.0, 9000.0, 1000.0, 20000.0, 2400.0])
+    out = np.zeros(6)
+    u, v = 3.0, 0.4
+    added_mass_velocity_terms(np.array([u, v, 0, 0, 0, 0.0]), a, out)
+    assert out[5] == pytest.approx((a[0] - a[1]) * u * v)
+    assert out[:5] == pytest.approx(np.zeros(5))
+    # pure rotation about z: omega x (A2 omega) vanishes, the force is A1 (w x v) - w x (A1 v)
+    added_mass_velocity_terms(np.array([u, 0, 0, 0, 0, 0.2]), a, out)
+    assert out[1] == pytest.approx(a[1] * 0.2 * u - a[0] * 0.2 * u)
