@@ -307,7 +307,7 @@ def saoud_robot(l_phi: float = 1.0) -> BoatParams:
                   time_constant=0.3),  # s, ours (Saoud gives none)
         rho_air=c.RHO_AIR_SAOUD,
         paper_righting="sin",  # Saoud eq. 4: m g l_phi sin(phi)
-        sources={"paper": "Saoud, Hua, Plumet, Ben Amar (2015), Table I; l_phi = %g m" % l_phi},
+        sources={"paper": f"Saoud, Hua, Plumet, Ben Amar (2015), Table I; l_phi = {l_phi:g} m"},
     )
 
 

@@ -22,8 +22,13 @@ from ..constants import GRAVITY
 from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
 from .damping import hull_damping
-from .foil import (foil_world_force, hydrofoil_coefficients, lift_drag_components,
-                   sail_coefficients, section_flow)
+from .foil import (
+    foil_world_force,
+    hydrofoil_coefficients,
+    lift_drag_components,
+    sail_coefficients,
+    section_flow,
+)
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .wind import wind_velocity
 
