@@ -1,0 +1,51 @@
+"""A PID heading controller: the baseline rudder law.
+
+sigma = -(K_p e + K_i int e dt + K_d de/dt), e = wrap(heading - desired heading), with the
+derivative taken from the measured yaw rate (de/dt = d(heading)/dt = -yaw_rate, since the
+heading turns clockwise and yaw_rate counter-clockwise). A positive rudder turns the boat to
+port, i.e. lowers the heading, so a heading above the desired one asks for positive rudder.
+Saturated at ``max_angle`` with conditional integration (no wind-up).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .base import scalar
+
+
+def _wrap(angle: float) -> float:
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+
+
+class PIDHeading:
+    """Rudder law holding a compass heading (rad). ``dt`` is the control period (s)."""
+
+    def __init__(self, desired_heading: float | None = None, kp: float = 1.0, ki: float = 0.05,
+                 kd: float = 2.0, max_angle: float = math.radians(35.0), dt: float = 0.1,
+                 reference_key: str = "desired_heading"):
+        self.desired_heading = desired_heading
+        self.kp, self.ki, self.kd = kp, ki, kd
+        self.max_angle = max_angle
+        self.dt = dt
+        self.reference_key = reference_key
+        self.integral = 0.0
+
+    def reset(self, seed: int | None = None) -> None:
+        self.integral = 0.0
+
+    def error(self, observation: dict) -> float:
+        desired = self.desired_heading
+        if desired is None:
+            desired = scalar(observation, self.reference_key)
+        return _wrap(scalar(observation, "heading") - desired)
+
+    def __call__(self, observation: dict) -> float:
+        e = self.error(observation)
+        de = -scalar(observation, "yaw_rate")
+        command = self.kp * e + self.ki * self.integral + self.kd * de
+        if abs(command) < self.max_angle or np.sign(command) != np.sign(e):
+            self.integral += e * self.dt
+        return float(np.clip(command, -self.max_angle, self.max_angle))

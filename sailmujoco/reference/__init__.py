@@ -1,0 +1,1 @@
+"""The papers' own reduced models ("paper worlds"), integrated with scipy."""

@@ -1,0 +1,1 @@
+"""dm_control-style tasks over the MuJoCo boats and the papers' reduced models."""
