@@ -53,7 +53,8 @@ def _rig_inertia(p: BoatParams):
     r = p.rudder
     mr = r.mass
     cr = np.array([r.x, 0.0, r.z])
-    i_r = mr / 12.0 * np.diag([r.span**2, r.span**2 + r.chord**2, r.chord**2])
+    t = r.thickness_ratio * r.chord  # a solid blade: span x chord x thickness box
+    i_r = mr / 12.0 * np.diag([r.span**2 + t**2, r.span**2 + r.chord**2, r.chord**2 + t**2])
     return (ms, cs, i_s), (mr, cr, i_r)
 
 
@@ -146,10 +147,17 @@ def _sail_reference_moment(p: BoatParams) -> float:
     return 0.5 * p.rho_air * REFERENCE_WIND**2 * s.area * 1.25 * s.ce_aft
 
 
-def boat_spec(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjSpec:
-    """The boat as an MjSpec (no scene)."""
+def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjSpec:
+    """The boat as an MjSpec (no scene).
+
+    ``dofs=6``: the hull is free. ``dofs=4``: heave and pitch held, as in Wille's and Saoud's
+    reduced models: slide x, slide y, hinge yaw (world z), hinge roll (the yawed body x), so
+    R = Rz(yaw) Rx(roll) with CO on the waterline.
+    """
     if sail_mode not in SAIL_MODES:
         raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
+    if dofs not in (4, 6):
+        raise ValueError(f"dofs must be 6 (free hull) or 4 (heave and pitch held), got {dofs!r}")
     spec = mujoco.MjSpec()
     spec.modelname = p.name
     spec.compiler.degree = False
@@ -185,7 +193,13 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjSpec:
     hull.mass = mh
     hull.ipos = ch.tolist()
     hull.fullinertia = [ih[0, 0], ih[1, 1], ih[2, 2], ih[0, 1], ih[0, 2], ih[1, 2]]
-    hull.add_freejoint(name="root")
+    if dofs == 6:
+        hull.add_freejoint(name="root")
+    else:
+        hull.add_joint(name="x", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=[1.0, 0.0, 0.0])
+        hull.add_joint(name="y", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=[0.0, 1.0, 0.0])
+        hull.add_joint(name="yaw", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[0.0, 0.0, 1.0])
+        hull.add_joint(name="roll", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[1.0, 0.0, 0.0])
     hull.add_geom(name="hull", default=visual, type=mujoco.mjtGeom.mjGEOM_MESH,
                   meshname="hull_mesh", material="hull_white")
 
@@ -290,15 +304,15 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjSpec:
         home_ctrl = [0.0, length_max]
 
     key = spec.add_key(name="home")
-    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0]
+    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0] if dofs == 6 else [0.0] * 6
     key.ctrl = home_ctrl
     key.act = home_ctrl
     return spec
 
 
-def boat_xml(p: BoatParams, sail_mode: str = "actuated") -> str:
+def boat_xml(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> str:
     """MJCF text of the boat (what ``xml/<boat>/<boat>.xml`` holds for default parameters)."""
-    spec = boat_spec(p, sail_mode)
+    spec = boat_spec(p, sail_mode, dofs)
     spec.compile()  # validates
     return spec.to_xml()
 
@@ -326,10 +340,10 @@ def scene_xml(boat: str) -> str:
     return path.read_text()
 
 
-def compile_model(p: BoatParams, sail_mode: str = "actuated") -> mujoco.MjModel:
+def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjModel:
     """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``)."""
     return mujoco.MjModel.from_xml_string(
-        scene_xml(p.name), assets={f"{p.name}.xml": boat_xml(p, sail_mode).encode()})
+        scene_xml(p.name), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs).encode()})
 
 
 def write_default_xml(root) -> list:

@@ -34,6 +34,13 @@ from .mjcf import compile_model
 from .params import BoatParams, get_boat
 
 
+def _csr(m, i: int, j: int) -> int:
+    """Address of entry (i, j), j <= i, of MuJoCo's sparse lower-triangular mass matrix."""
+    row = m.M_rowadr[i]
+    cols = m.M_colind[row:row + m.M_rownnz[i]]
+    return int(row + np.nonzero(cols == j)[0][0])
+
+
 class SimulationStopped(RuntimeError):
     """The simulation left the valid state space; ``reason`` says how."""
 
@@ -89,23 +96,27 @@ class BoatPhysics(engine.Physics):
     @classmethod
     def load(cls, boat: str = "wille_yacht", *, params: BoatParams | None = None,
              sail_mode: str = "actuated", wind: WindConfig | None = None,
-             forces: ForceSwitches | None = None, **boat_options) -> BoatPhysics:
+             forces: ForceSwitches | None = None, dofs: int = 6,
+             **boat_options) -> BoatPhysics:
         """Compile ``boat`` (or ``params``) and attach wind and force models.
 
         ``boat_options`` go to the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
+        ``dofs=4`` holds heave and pitch (the reduced models' assumption); see
+        :func:`sailmujoco.mjcf.boat_spec`.
         """
         if params is None:
             params = get_boat(boat, **boat_options)
         elif boat_options:
             raise ValueError("give either params or boat options, not both")
-        model = compile_model(params, sail_mode)
+        model = compile_model(params, sail_mode, dofs)
         physics = cls.from_model(core.MjModel(model))
-        physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches())
+        physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches(), dofs)
         physics.reset()
         return physics
 
-    def _setup(self, params, sail_mode, wind, forces):
+    def _setup(self, params, sail_mode, wind, forces, dofs=6):
         self.params = params
+        self.dofs = dofs
         self.sail_mode = sail_mode
         self.switches = forces
         self.wind_config = wind
@@ -130,16 +141,24 @@ class BoatPhysics(engine.Physics):
         self._madd = np.zeros((3, 3))
         self._work = np.zeros(kernels.WORK_SIZE)
         self._external = np.zeros(6)
-        # CSR addresses in MuJoCo's mass matrix of the hull's translational block (lower
-        # triangle of rows/cols 0-2) and of the rotational diagonal (3, 4, 5)
-        addr = []
-        for i in range(3):
-            for j in range(i + 1):
-                row = m.M_rowadr[i]
-                cols_i = m.M_colind[row:row + m.M_rownnz[i]]
-                addr.append(row + int(np.nonzero(cols_i == j)[0][0]))
-        addr += [m.M_rowadr[i] + m.M_rownnz[i] - 1 for i in (3, 4, 5)]
-        self._csr_addr = np.array(addr, dtype=np.int64)
+        if dofs == 6:
+            # CSR addresses in MuJoCo's mass matrix of the hull's translational block (lower
+            # triangle of rows/cols 0-2) and of the rotational diagonal (3, 4, 5)
+            addr = [_csr(m, i, j) for i in range(3) for j in range(i + 1)]
+            addr += [_csr(m, i, i) for i in (3, 4, 5)]
+            self._csr_addr = np.array(addr, dtype=np.int64)
+            self._kidx = self._idx
+        else:
+            # the kernel sees the hull as if free (pseudo qpos/qvel); forces and added mass
+            # are mapped onto the x, y, yaw, roll joints here
+            self._csr_addr = np.zeros(9, dtype=np.int64)
+            self._csr4 = [(i, j, _csr(m, i, j)) for i in range(4) for j in range(i + 1)]
+            self._q7 = np.zeros(9)
+            self._q7[3] = 1.0
+            self._v6 = np.zeros(8)
+            self._qfrc8 = np.zeros(8)
+            self._kidx = np.array([7, 6, 8, 7], dtype=np.int64)
+            self._a_diag = params.added_mass_diagonal if forces.added_mass else np.zeros(6)
         self._kernel = _entry_point(kernels.boat_forces)
         self._bound = None
         self._status = kernels.STATUS_OK
@@ -152,10 +171,13 @@ class BoatPhysics(engine.Physics):
         w = self.wind
         self._bound = d
         self._bound_wander = w.wander
-        self._qfrc = d.qfrc_applied
-        self._args = (d.qpos, d.qvel, self._idx, self._P, self._columns, self._strips,
+        if self.dofs == 6:
+            qpos, qvel, qfrc = d.qpos, d.qvel, d.qfrc_applied
+        else:
+            qpos, qvel, qfrc = self._q7, self._v6, self._qfrc8
+        self._args = (qpos, qvel, self._kidx, self._P, self._columns, self._strips,
                       *self._table, w.gust_frequency, w.gust_phase, w.gust_amplitude, w.log_z,
-                      w.wander, self._external, self._terms, self._diag, d.qfrc_applied,
+                      w.wander, self._external, self._terms, self._diag, qfrc,
                       self._madd, d.M, self._csr_addr, self._work)
 
     def _prepare(self, horizon: float) -> None:
@@ -167,7 +189,7 @@ class BoatPhysics(engine.Physics):
 
     def copy(self, share_model=False):
         new = super().copy(share_model=share_model)
-        new._setup(self.params, self.sail_mode, self.wind_config, self.switches)
+        new._setup(self.params, self.sail_mode, self.wind_config, self.switches, self.dofs)
         new._external[:] = self._external
         return new
 
@@ -204,8 +226,50 @@ class BoatPhysics(engine.Physics):
     def _compute_forces(self, add_mass: bool = False) -> int:
         """Evaluate every force model for the current state (writes qfrc_applied)."""
         self._prepare(0.0)
-        self._status = self._kernel(self.data.ptr.time, *self._args, add_mass)
+        if self.dofs == 4:
+            self._status = self._forces_4dof(add_mass)
+        else:
+            self._status = self._kernel(self.data.ptr.time, *self._args, add_mass)
         return self._status
+
+    def _fill_pseudo(self) -> np.ndarray:
+        """4-DOF model: the hull's pose and velocity in free-joint layout; returns R."""
+        d = self.data.ptr
+        x, y, yaw, roll = d.qpos[0:4]
+        xd, yd, yawd, rolld = d.qvel[0:4]
+        cy, sy, cr, sr = math.cos(yaw), math.sin(yaw), math.cos(roll), math.sin(roll)
+        rot = np.array([[cy, -sy * cr, sy * sr], [sy, cy * cr, -cy * sr], [0.0, sr, cr]])
+        q7, v6 = self._q7, self._v6
+        q7[0], q7[1], q7[2] = x, y, 0.0
+        # quaternion of Rz(yaw) Rx(roll)
+        q7[3:7] = (math.cos(yaw / 2) * math.cos(roll / 2), math.cos(yaw / 2) * math.sin(roll / 2),
+                   math.sin(yaw / 2) * math.sin(roll / 2), math.sin(yaw / 2) * math.cos(roll / 2))
+        q7[7], q7[8] = d.qpos[4], d.qpos[5]
+        v6[0], v6[1], v6[2] = xd, yd, 0.0
+        v6[3:6] = rot.T @ np.array([0.0, 0.0, yawd]) + np.array([rolld, 0.0, 0.0])
+        v6[6], v6[7] = d.qvel[4], d.qvel[5]
+        return rot
+
+    def _forces_4dof(self, add_mass: bool) -> int:
+        """Forces (and added mass) of the heave-and-pitch-held model on its x, y, yaw, roll joints."""
+        d = self.data.ptr
+        rot = self._fill_pseudo()
+        status = self._kernel(d.time, *self._args, False)
+        f = self._qfrc8
+        torque_world = rot @ f[3:6]
+        qfrc = d.qfrc_applied
+        qfrc[0], qfrc[1], qfrc[2], qfrc[3] = f[0], f[1], torque_world[2], f[3]
+        qfrc[4], qfrc[5] = f[6], f[7]
+        if add_mass:
+            # J maps (xd, yd, yawd, rolld) to the body velocity (u, v, w, p, q, r) at CO
+            jac = np.zeros((6, 4))
+            jac[0:3, 0:2] = rot.T[:, 0:2]
+            jac[3:6, 2] = rot.T[:, 2]
+            jac[3, 3] = 1.0
+            added = jac.T @ (self._a_diag[:, None] * jac)
+            for i, j, a in self._csr4:
+                d.M[a] += added[i, j]
+        return status
 
     def step(self, nstep: int = 1) -> None:
         """Advance ``nstep`` physics sub-steps, recomputing every force before each."""
@@ -214,12 +278,13 @@ class BoatPhysics(engine.Physics):
             raise SimulationStopped(self.stop_reason, d.time)
         self._prepare(nstep * m.opt.timestep)
         kernel, args = self._kernel, self._args
+        four = self.dofs == 4
         step1, step2, factor = mujoco.mj_step1, mujoco.mj_step2, mujoco.mj_factorM
         with self.check_invalid_state():
             for _ in range(nstep):
                 step1(m, d)
                 # forces for this very state into qfrc_applied; added mass into M
-                status = kernel(d.time, *args, True)
+                status = kernel(d.time, *args, True) if four is False else self._forces_4dof(True)
                 if status != kernels.STATUS_OK:
                     self._status = status
                     self.stop_reason = ("non-finite state" if status == kernels.STATUS_NONFINITE
@@ -242,10 +307,17 @@ class BoatPhysics(engine.Physics):
         self._fresh = True
 
     # ------------------------------------------------------------------ accessors (SI)
+    def _free_state(self):
+        """(qpos, qvel) of the hull in free-joint layout: pos, quat, world velocity, body rates."""
+        if self.dofs == 6:
+            return self.data.ptr.qpos, self.data.ptr.qvel
+        self._fill_pseudo()
+        return self._q7, self._v6
+
     def rotation(self) -> np.ndarray:
         """Body->world rotation of the hull (3x3)."""
         out = np.empty(9)
-        mujoco.mju_quat2Mat(out, self.data.ptr.qpos[3:7])
+        mujoco.mju_quat2Mat(out, self._free_state()[0][3:7])
         return out.reshape(3, 3)
 
     def _euler(self):
@@ -253,7 +325,7 @@ class BoatPhysics(engine.Physics):
 
     def position(self) -> np.ndarray:
         """World position (x east, y north, z up) of CO, m."""
-        return self.data.ptr.qpos[0:3].copy()
+        return self._free_state()[0][0:3].copy()
 
     def heel(self) -> float:
         """Heel (roll) angle phi, rad, positive starboard down."""
@@ -273,11 +345,11 @@ class BoatPhysics(engine.Physics):
 
     def body_velocity(self) -> np.ndarray:
         """Body-frame linear velocity of CO (u, v, w), m/s."""
-        return self.rotation().T @ self.data.ptr.qvel[0:3]
+        return self.rotation().T @ self._free_state()[1][0:3]
 
     def angular_velocity(self) -> np.ndarray:
         """Body-frame angular velocity (p, q, r), rad/s."""
-        return self.data.ptr.qvel[3:6].copy()
+        return self._free_state()[1][3:6].copy()
 
     def surge_speed(self) -> float:
         return float(self.body_velocity()[0])
@@ -286,10 +358,10 @@ class BoatPhysics(engine.Physics):
         return float(self.body_velocity()[1])
 
     def roll_rate(self) -> float:
-        return float(self.data.ptr.qvel[3])
+        return float(self.angular_velocity()[0])
 
     def yaw_rate(self) -> float:
-        return float(self.data.ptr.qvel[5])
+        return float(self.angular_velocity()[2])
 
     def drift_angle(self) -> float:
         """Drift angle beta = atan2(v cos(phi), u), Wille eq. 45 (FLU sign: positive to port)."""
@@ -298,11 +370,11 @@ class BoatPhysics(engine.Physics):
 
     def course(self) -> float:
         """Course over ground: ENU direction of the horizontal velocity of CO, rad."""
-        vx, vy = self.data.ptr.qvel[0:2]
+        vx, vy = self._free_state()[1][0:2]
         return float(math.atan2(vy, vx))
 
     def speed_over_ground(self) -> float:
-        return float(np.hypot(*self.data.ptr.qvel[0:2]))
+        return float(np.hypot(*self._free_state()[1][0:2]))
 
     def rudder_angle(self) -> float:
         return float(self.data.ptr.qpos[self._idx[0]])

@@ -41,7 +41,7 @@ def evaluate(boat: str, hydrostatics: str, seed: int) -> dict:
         d.qvel[:] = rng.normal(size=d.qvel.size) * [3, 3, 0.3, 0.5, 0.2, 0.4, 1.0, 1.0]
         physics._compute_forces()
         out["terms"].append(physics._terms.tolist())
-        out["qfrc"].append(physics._qfrc.tolist())
+        out["qfrc"].append(physics.data.ptr.qfrc_applied.tolist())
         out["madd"].append(physics._madd.tolist())
         out["diag"].append(physics._diag.tolist())
         out["status"].append(int(physics._status))

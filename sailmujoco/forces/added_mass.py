@@ -27,23 +27,35 @@ from .._jit import kernel
 
 
 @kernel
-def added_mass_velocity_terms(nu_r, a, out):
-    """Explicit added-mass wrench (body frame, about CO) into ``out`` (6,).
+def kirchhoff_terms(nu_r, a, out):
+    """-C_A(nu_r) nu_r for a diagonal M_A (Fossen 2011 eq. 6.54) into ``out`` (6,).
 
-    ``nu_r`` = (u, v, w, p, q, r) relative to the water; ``a`` = positive diagonal added masses
-    (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot).
+    F = -omega x (A1 v_r), M = (A1 v_r) x v_r + (A2 omega) x omega. In 4 DOF (w = q = 0) its
+    surge, sway and yaw rows are Wille (2016a) eq. 11: (-Y_vdot v_r r, X_udot u_r r, ...,
+    (Y_vdot - X_udot) u_r v_r), the last being the Munk moment.
     """
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
     a1u, a1v, a1w = a[0] * u, a[1] * v, a[2] * w
     a2p, a2q, a2r = a[3] * p, a[4] * q, a[5] * r
-    # omega x v_r
-    ox, oy, oz = q * w - r * v, r * u - p * w, p * v - q * u
-    # omega x (A1 v_r)
-    bx, by, bz = q * a1w - r * a1v, r * a1u - p * a1w, p * a1v - q * a1u
-    out[0] = a[0] * ox - bx
-    out[1] = a[1] * oy - by
-    out[2] = a[2] * oz - bz
-    # (A2 omega) x omega + (A1 v_r) x v_r
+    out[0] = -(q * a1w - r * a1v)
+    out[1] = -(r * a1u - p * a1w)
+    out[2] = -(p * a1v - q * a1u)
     out[3] = (a2q * r - a2r * q) + (a1v * w - a1w * v)
     out[4] = (a2r * p - a2p * r) + (a1w * u - a1u * w)
     out[5] = (a2p * q - a2q * p) + (a1u * v - a1v * u)
+
+
+@kernel
+def added_mass_velocity_terms(nu_r, a, out):
+    """Explicit added-mass wrench for the MuJoCo step (body frame, about CO) into ``out`` (6,).
+
+    The Kirchhoff terms plus A1 (omega x v_r), which undoes the omega x v_r that the world-frame
+    acceleration in the augmented mass matrix brings in (see the module docstring).
+    ``nu_r`` = (u, v, w, p, q, r) relative to the water; ``a`` = positive diagonal added masses
+    (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot).
+    """
+    kirchhoff_terms(nu_r, a, out)
+    u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
+    out[0] += a[0] * (q * w - r * v)
+    out[1] += a[1] * (r * u - p * w)
+    out[2] += a[2] * (p * v - q * u)

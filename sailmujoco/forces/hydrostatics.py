@@ -78,6 +78,18 @@ def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
 
 
 @kernel
+def paper_righting_moment(heel, righting_stiffness, righting_sin_only):
+    """Roll restoring moment about body x (N m): Wille (2016a) eq. 20 or Saoud (2015) eq. 4.
+
+    -K sin(phi) cos(phi) (Wille), or -K sin(phi) (Saoud, ``righting_sin_only``), with
+    K = rho g V GM_t = m g l_phi.
+    """
+    if righting_sin_only:
+        return -righting_stiffness * math.sin(heel)
+    return -righting_stiffness * math.sin(heel) * math.cos(heel)
+
+
+@kernel
 def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k_heave,
                     k_pitch, cg_x, cg_z, out):
     """Paper-mode restoring wrench (body frame, about CO) into ``out``.
@@ -100,10 +112,7 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
     mx = -cg_z * fy
     my = cg_z * fx - cg_x * fz_b
     mz = cg_x * fy
-    if righting_sin_only:
-        roll = -righting_stiffness * math.sin(heel)
-    else:
-        roll = -righting_stiffness * math.sin(heel) * math.cos(heel)
+    roll = paper_righting_moment(heel, righting_stiffness, righting_sin_only)
     out[0] = fx
     out[1] = fy
     out[2] = fz_b

@@ -1,0 +1,420 @@
+"""The paper world of Viel, Vautier, Wan and Jaulin (2019), "Position keeping control of an
+autonomous sailboat": their 3-DOF sailboat model (eqs. 1-9, Table 1 from Melin 2015 / Jaulin),
+integrated with :func:`scipy.integrate.solve_ivp`.
+
+Viel's planar frame
+    x east, y north (the x-y plane of our ENU world, :mod:`sailmujoco.frames`); the state is
+    ``(x, y, theta, v, u, omega)``: position of the boat [m], orientation ``theta`` counter-
+    clockwise from east [rad] (our ENU ``yaw``), forward speed ``v`` and sway speed ``u`` in
+    the body frame [m/s] (eqs. 1-2: ``u`` points 90 deg counter-clockwise of the bow, i.e. to
+    port: Viel's body frame is our FLU frame, ``v`` = our surge, ``u`` = our sway), and the
+    yaw rate ``omega`` [rad/s], positive counter-clockwise (our ``yaw_rate``).
+
+Wind angles (Viel §2.3, Jaulin's convention)
+    ``psi_tw`` is the direction the true wind blows **towards**, counter-clockwise from east;
+    ``psi_aw`` the direction the apparent wind blows towards in the body frame, counter-
+    clockwise from the bow. Evidence: eq. 4's hull-wind term ``p1 a_tw^2 cos(psi_tw - theta)``
+    pushes the boat forward when ``theta = psi_tw``, and eq. 19 "orients the boat front the
+    wind" with ``theta = psi_tw + pi``. Ours is a compass bearing the wind comes *from*, so
+    ``psi_tw = -pi/2 - direction_from`` (the map is its own inverse), and from the apparent
+    wind angle (AWA, from the bow, positive from starboard) ``psi_aw = pi - AWA``.
+
+Rudder and sail signs (derived from eqs. 4-6 and 9)
+    Eq. 6 gives the rudder moment ``-p8 g_rv cos(delta_r)`` with ``g_rv = p5 v^2 sin(delta_r)``:
+    a positive ``delta_r`` turns the boat clockwise (to starboard), so the rudder lift pushes
+    the stern to port and the trailing edge points to starboard. For the sail, eqs. 4, 6 and 9
+    are reproduced exactly by a boom pointing aft along ``(-cos delta_s, -sin delta_s)`` from a
+    mast ``p7`` ahead of G, the centre of effort ``p6`` along the boom, and the normal force
+    ``g_s (sin delta_s, -cos delta_s)`` with ``g_s = p4 (W_aw . n)``: the moment about G is
+    then ``g_s (p6 - p7 cos delta_s)`` (eq. 6) and the thrust ``g_s sin delta_s`` (eq. 4).
+    So a positive ``delta_s`` also swings the trailing edge (boom end) to **starboard**.
+    Our action is positive to port, hence ``delta_r = -rudder`` and ``delta_s = -sail``
+    (:func:`viel_from_action`, :func:`action_from_viel`, the only place this is done).
+    Check: a free sail (``g_s = 0``, stable) settles at ``delta_s = psi_aw - sign(psi_aw) pi``,
+    the boundary of Viel's eq. 12, i.e. to leeward; the tests verify both signs physically.
+
+Readings of the text (the paper's own model, kept as printed unless marked)
+    * §2.3 writes the apparent wind with ``-|v|``: kept (the paper world), although for a boat
+      going astern (``v < 0``, which Viel's step 4 allows) the physical term is ``-v``.
+    * Eq. 7 uses ``v^2`` (not ``v|v|``), so going astern the rudder still turns the boat the
+      same way and the rudder brake in eq. 4 pushes astern; eq. 6's ``-p3 omega v`` becomes an
+      anti-damping for ``v < 0``. Kept as printed; only slow astern motion occurs in practice.
+    * Eq. 5 has ``-g_ru p11 cos(delta_r)`` while the proof (A.7) drops ``p11``; eq. 5 is used.
+    * Table 1 gives p2 and p5 in kg/s; with the quadratic laws of eqs. 4 and 7 they are in
+      kg/m (they are kg/s in Jaulin's original linear-in-v rudder law). Values kept.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, fields
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from ..forces.wind import WindConfig, WindField
+from ..frames import heading_from_yaw, wrap_angle
+
+STATE_NAMES = ("x", "y", "theta", "v", "u", "omega")
+
+
+@dataclass(frozen=True)
+class VielParams:
+    """Viel et al. (2019) Table 1 (from Melin 2015) and the actuator limits of §2.1. SI units.
+
+    Parameters
+    ----------
+    p1 : drift coefficient, hull wind force ``p1 a_tw^2`` [kg/m]
+    p2 : tangential friction, ``p2 v|v|`` and ``p2 u|u|`` [kg/m]
+    p3 : angular friction, ``p3 omega v`` [kg m]
+    p4 : sail lift, ``g_s = p4 a_aw sin(delta_s - psi_aw)`` [kg/s]
+    p5 : rudder lift, ``g_rv = p5 v^2 sin(delta_r)`` [kg/m]
+    p6 : distance from the mast to the sail's centre of effort [m]
+    p7 : distance from G to the mast [m]
+    p8 : distance from G to the rudder [m]
+    p9 : mass of the boat [kg]
+    p10 : moment of inertia about the vertical axis [kg m^2]
+    p11 : rudder brake coefficient [-]
+    rudder_max : |delta_r| limit [rad]
+    sail_max : |delta_s| limit [rad]
+    """
+
+    p1: float = 0.03  # kg/m, Viel Table 1 "drift coefficient" (unit not printed)
+    p2: float = 40.0  # kg/m, Viel Table 1 "tangential friction" (printed kg/s, see module doc)
+    p3: float = 6000.0  # kg m, Viel Table 1 "angular friction"
+    p4: float = 200.0  # kg/s, Viel Table 1 "sail lift"
+    p5: float = 1500.0  # kg/m, Viel Table 1 "rudder lift" (printed kg/s, see module doc)
+    p6: float = 0.5  # m, Viel Table 1 "distance to sail" (mast to centre of effort)
+    p7: float = 0.5  # m, Viel Table 1 "distance to mast" (G to mast)
+    p8: float = 2.0  # m, Viel Table 1 "distance to rudder"
+    p9: float = 300.0  # kg, Viel Table 1 "mass of boat"
+    p10: float = 400.0  # kg m^2, Viel Table 1 "moment of inertia"
+    p11: float = 0.2  # -, Viel Table 1 "rudder break coefficient"
+    rudder_max: float = math.pi / 4.0  # rad, Viel §2.1 delta_r,max
+    sail_max: float = math.pi / 2.0  # rad, Viel §2.1 delta_s,max
+
+    def __post_init__(self):
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+                raise ValueError(f"VielParams.{f.name} must be a finite number, got {value!r}")
+        for name in ("p2", "p4", "p5", "p8", "p9", "p10"):
+            if getattr(self, name) <= 0.0:
+                raise ValueError(f"VielParams.{name} must be > 0, got {getattr(self, name)}")
+        for name in ("p1", "p3", "p6", "p7", "p11"):
+            if getattr(self, name) < 0.0:
+                raise ValueError(f"VielParams.{name} must be >= 0, got {getattr(self, name)}")
+        if not 0.0 < self.rudder_max <= math.pi / 2.0:
+            raise ValueError(f"VielParams.rudder_max must be in (0, pi/2] rad, got {self.rudder_max}")
+        if not 0.0 < self.sail_max <= math.pi:
+            raise ValueError(f"VielParams.sail_max must be in (0, pi] rad, got {self.sail_max}")
+
+
+# --- frame conversions: ours <-> Viel's, the only place they are done -------------------------
+
+
+def viel_from_action(action) -> tuple[float, float]:
+    """(delta_r, delta_s) in Viel's sign (trailing edge to starboard) from our ``[rudder, sail]``."""
+    rudder, sail = (float(a) for a in np.asarray(action, dtype=float).reshape(2))
+    return -rudder, -sail
+
+
+def action_from_viel(delta_r: float, delta_s: float) -> np.ndarray:
+    """Our action ``[rudder, sail]`` (trailing edge to port, rad) from Viel's (delta_r, delta_s)."""
+    return np.array([-float(delta_r), -float(delta_s)])
+
+
+def psi_tw_from_direction(direction_from: float) -> float:
+    """Viel's psi_tw (blows towards, ccw from east) from our compass 'comes from' bearing [rad]."""
+    return float(wrap_angle(-0.5 * math.pi - direction_from))
+
+
+def direction_from_psi_tw(psi_tw: float) -> float:
+    """Our compass 'comes from' bearing from Viel's psi_tw [rad] (the same involution)."""
+    return float(wrap_angle(-0.5 * math.pi - psi_tw))
+
+
+def psi_aw_from_awa(awa: float) -> float:
+    """Viel's psi_aw (apparent wind blows towards, ccw from the bow) from our AWA [rad]."""
+    return float(wrap_angle(math.pi - awa))
+
+
+def awa_from_psi_aw(psi_aw: float) -> float:
+    """Our AWA (comes from, positive from starboard) from Viel's psi_aw [rad]."""
+    return float(wrap_angle(math.pi - psi_aw))
+
+
+# --- the model --------------------------------------------------------------------------------
+
+
+def apparent_wind(a_tw: float, psi_tw: float, theta: float, v: float) -> tuple[float, float]:
+    """Apparent wind (a_aw [m/s], psi_aw [rad]) in the body frame, Viel §2.3.
+
+    ``W_c,aw = [a_tw cos(psi_tw - theta) - |v|, a_tw sin(psi_tw - theta)]`` (the paper's
+    ``|v|`` is kept, see the module docstring), ``psi_aw = atan2(W_c,aw)``.
+    """
+    wx = a_tw * math.cos(psi_tw - theta) - abs(v)  # Viel §2.3
+    wy = a_tw * math.sin(psi_tw - theta)  # Viel §2.3
+    return math.hypot(wx, wy), math.atan2(wy, wx)
+
+
+def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
+                 psi_tw: float) -> dict:
+    """The force terms of eqs. 4-9 (Viel signs), N and N m.
+
+    Returns a dict with ``g_s``, ``g_rv``, ``g_ru`` (eqs. 7-9), ``a_aw``, ``psi_aw``, and the
+    right-hand sides ``surge`` (= p9 dv/dt, eq. 4), ``sway`` (= p9 du/dt, eq. 5),
+    ``yaw`` (= p10 domega/dt, eq. 6).
+    """
+    p = params
+    _, _, theta, v, u, omega = (float(s) for s in state)
+    a_aw, psi_aw = apparent_wind(a_tw, psi_tw, theta, v)
+    g_rv = p.p5 * v * v * math.sin(delta_r)  # Viel eq. 7
+    g_ru = p.p5 * u * abs(u) * math.cos(delta_r)  # Viel eq. 8
+    g_s = p.p4 * a_aw * math.sin(delta_s - psi_aw)  # Viel eq. 9
+    hull_wind = p.p1 * a_tw * a_tw
+    surge = (g_s * math.sin(delta_s) - g_rv * p.p11 * math.sin(delta_r) - p.p2 * v * abs(v)
+             + hull_wind * math.cos(psi_tw - theta))  # Viel eq. 4
+    sway = (-g_ru * p.p11 * math.cos(delta_r) - p.p2 * u * abs(u)
+            + hull_wind * math.sin(psi_tw - theta))  # Viel eq. 5
+    yaw = (g_s * (p.p6 - p.p7 * math.cos(delta_s)) - g_rv * p.p8 * math.cos(delta_r)
+           - p.p3 * omega * v)  # Viel eq. 6
+    return dict(g_s=g_s, g_rv=g_rv, g_ru=g_ru, a_aw=a_aw, psi_aw=psi_aw, hull_wind=hull_wind,
+                surge=surge, sway=sway, yaw=yaw)
+
+
+def model_rates(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
+                psi_tw: float) -> np.ndarray:
+    """d/dt (x, y, theta, v, u, omega), Viel eqs. 1-6 (Viel signs for delta_r, delta_s)."""
+    _, _, theta, v, u, omega = (float(s) for s in state)
+    f = model_forces(params, state, delta_r, delta_s, a_tw, psi_tw)
+    c, s = math.cos(theta), math.sin(theta)
+    return np.array([
+        v * c - u * s,  # Viel eq. 1
+        v * s + u * c,  # Viel eq. 2
+        omega,  # Viel eq. 3
+        f["surge"] / params.p9,  # Viel eq. 4
+        f["sway"] / params.p9,  # Viel eq. 5
+        f["yaw"] / params.p10,  # Viel eq. 6
+    ])
+
+
+class VielWorld:
+    """Viel's 3-DOF sailboat (eqs. 1-9) in a wind from :class:`~sailmujoco.forces.wind.WindField`.
+
+    Parameters
+    ----------
+    params : VielParams
+        Table 1 and the actuator limits.
+    wind : WindConfig or WindField
+        The true wind; ``WindField(config).velocity(t, wind_height)`` gives (a_tw, psi_tw).
+        A WindField instance (or subclass) is used as given.
+    wind_height : float
+        Height at which the wind is sampled [m] (the model has no height; 10 m is the
+        reference height of ``WindConfig.speed``).
+    rtol, atol : float
+        Tolerances of the RK45 integration.
+
+    The action of :meth:`step` is ours, ``[rudder, sail]`` [rad], positive when the trailing
+    edge swings to port, saturated at ``params.rudder_max`` and ``params.sail_max`` and held
+    over the step; the wind and forces are re-evaluated at every integrator stage.
+    """
+
+    def __init__(self, params: VielParams | None = None, wind: WindConfig | WindField | None = None,
+                 wind_height: float = 10.0, rtol: float = 1e-7, atol: float = 1e-9):
+        self.params = VielParams() if params is None else params
+        if not isinstance(self.params, VielParams):
+            raise TypeError(f"params must be a VielParams, got {type(self.params).__name__}")
+        if wind is None:
+            wind = WindConfig(speed=10.0, direction_from=math.pi, gusts=False, wander=False)
+        if isinstance(wind, WindConfig):
+            wind = WindField(wind)
+        if not isinstance(wind, WindField):
+            raise TypeError(f"wind must be a WindConfig or WindField, got {type(wind).__name__}")
+        self.wind = wind
+        if not (math.isfinite(wind_height) and wind_height > 0.0):
+            raise ValueError(f"wind_height must be a positive finite height in m, got {wind_height}")
+        self.wind_height = float(wind_height)
+        self.rtol, self.atol = float(rtol), float(atol)
+        self._state = np.zeros(6)
+        self._time = 0.0
+        self._action = np.zeros(2)
+        self.reset()
+
+    # -- state ------------------------------------------------------------------------------
+    def reset(self, state=None, time: float = 0.0) -> np.ndarray:
+        """Set the state ``(x, y, theta, v, u, omega)`` (default: at rest at the origin facing
+        east) and the time [s]; the action is set to zero. Returns a copy of the state."""
+        new = np.zeros(6) if state is None else np.asarray(state, dtype=float).copy()
+        if new.shape != (6,):
+            raise ValueError(f"state must have the 6 entries {STATE_NAMES}, got shape {new.shape}")
+        if not np.all(np.isfinite(new)):
+            raise ValueError(f"state must be finite, got {dict(zip(STATE_NAMES, new, strict=True))}")
+        if not math.isfinite(time):
+            raise ValueError(f"time must be finite, got {time}")
+        new[2] = float(wrap_angle(new[2]))
+        self._state, self._time, self._action = new, float(time), np.zeros(2)
+        return self._state.copy()
+
+    def _checked_action(self, action) -> np.ndarray:
+        a = np.asarray(action, dtype=float)
+        if a.shape != (2,):
+            raise ValueError(f"action must be [rudder, sail] in rad, got shape {a.shape}")
+        if not np.all(np.isfinite(a)):
+            raise ValueError(f"action must be finite, got {a}")
+        p = self.params
+        return np.array([np.clip(a[0], -p.rudder_max, p.rudder_max), np.clip(a[1], -p.sail_max, p.sail_max)])
+
+    def true_wind(self, t: float | None = None) -> tuple[float, float]:
+        """(a_tw [m/s], psi_tw [rad], Viel's blows-towards angle) at time t (default: now)."""
+        w = self.wind.velocity(self._time if t is None else t, self.wind_height)
+        return math.hypot(w[0], w[1]), math.atan2(w[1], w[0])
+
+    def rates(self, state=None, action=None, t: float | None = None) -> np.ndarray:
+        """Time derivative of the state (eqs. 1-6) for our action [rad] (default: current)."""
+        state = self._state if state is None else np.asarray(state, dtype=float)
+        action = self._action if action is None else self._checked_action(action)
+        delta_r, delta_s = viel_from_action(action)
+        a_tw, psi_tw = self.true_wind(t)
+        return model_rates(self.params, state, delta_r, delta_s, a_tw, psi_tw)
+
+    def forces(self, state=None, action=None, t: float | None = None) -> dict:
+        """The terms of eqs. 4-9 (see :func:`model_forces`) for our action [rad]."""
+        state = self._state if state is None else np.asarray(state, dtype=float)
+        action = self._action if action is None else self._checked_action(action)
+        delta_r, delta_s = viel_from_action(action)
+        a_tw, psi_tw = self.true_wind(t)
+        return model_forces(self.params, state, delta_r, delta_s, a_tw, psi_tw)
+
+    def step(self, action, dt: float) -> np.ndarray:
+        """Hold ``action`` (ours, [rad]) for ``dt`` [s]; integrate eqs. 1-9. Returns the state."""
+        applied = self._checked_action(action)
+        if not (math.isfinite(dt) and dt > 0.0):
+            raise ValueError(f"dt must be a positive finite time in s, got {dt}")
+        delta_r, delta_s = viel_from_action(applied)
+        params, wind, z = self.params, self.wind, self.wind_height
+
+        def rhs(t, y):
+            w = wind.velocity(t, z)
+            return model_rates(params, y, delta_r, delta_s, math.hypot(w[0], w[1]), math.atan2(w[1], w[0]))
+
+        sol = solve_ivp(rhs, (self._time, self._time + dt), self._state, method="RK45",
+                        rtol=self.rtol, atol=self.atol)
+        new = sol.y[:, -1]
+        if not sol.success or not np.all(np.isfinite(new)):
+            raise FloatingPointError(
+                f"VielWorld: integration failed at t={self._time:.3f} s ({sol.message}); "
+                f"state {dict(zip(STATE_NAMES, new, strict=True))}, action {applied}")
+        new = new.copy()
+        new[2] = float(wrap_angle(new[2]))
+        self._state, self._time, self._action = new, self._time + dt, applied
+        return new.copy()
+
+    # -- accessors ----------------------------------------------------------------------------
+    @property
+    def time(self) -> float:
+        """Simulation time [s]."""
+        return self._time
+
+    @property
+    def state(self) -> np.ndarray:
+        """Copy of ``(x, y, theta, v, u, omega)`` [m, m, rad, m/s, m/s, rad/s], Viel's frame."""
+        return self._state.copy()
+
+    @property
+    def action(self) -> np.ndarray:
+        """The last applied (saturated) action, ours: ``[rudder, sail]`` [rad]."""
+        return self._action.copy()
+
+    def position(self) -> np.ndarray:
+        """(x east, y north) [m]."""
+        return self._state[:2].copy()
+
+    def yaw(self) -> float:
+        """Viel's theta = our ENU yaw, ccw from east [rad]."""
+        return float(self._state[2])
+
+    def heading(self) -> float:
+        """Compass heading, clockwise from north [rad]."""
+        return float(heading_from_yaw(self._state[2]))
+
+    def forward_speed(self) -> float:
+        """Viel's v, along the bow [m/s]."""
+        return float(self._state[3])
+
+    def sway_speed(self) -> float:
+        """Viel's u, to port [m/s]."""
+        return float(self._state[4])
+
+    def yaw_rate(self) -> float:
+        """omega, counter-clockwise [rad/s]."""
+        return float(self._state[5])
+
+    def velocity(self) -> np.ndarray:
+        """Ground velocity (east, north) [m/s], eqs. 1-2."""
+        return self.rates()[:2]
+
+    def apparent_wind(self) -> tuple[float, float]:
+        """(a_aw [m/s], psi_aw [rad], Viel's body blows-towards angle), §2.3."""
+        a_tw, psi_tw = self.true_wind()
+        return apparent_wind(a_tw, psi_tw, self._state[2], self._state[3])
+
+    def wind_direction(self) -> float:
+        """Compass bearing the true wind comes from at ``wind_height`` now [rad]."""
+        w = self.wind.velocity(self._time, self.wind_height)
+        if math.hypot(w[0], w[1]) < 1e-12:
+            return float(wrap_angle(self.wind.config.direction_from))
+        return direction_from_psi_tw(math.atan2(w[1], w[0]))
+
+    def wrenches(self) -> dict:
+        """Body (FLU) wrenches (Fx, Fy, Fz, Mx, My, Mz) [N, N m] of the eq. 4-6 terms, now.
+
+        ``sail_wrench``: the sail terms (eq. 4 thrust, eq. 6 moment; eq. 5 has no sail term,
+        Viel: "compensated by the keel"); ``rudder_wrench``: the g_rv, g_ru terms;
+        ``damping_wrench``: p2 and p3 frictions; ``hull_wind_wrench``: p1 a_tw^2.
+        """
+        f = self.forces()
+        p, (_, _, theta, v, u, omega) = self.params, self._state
+        delta_r, delta_s = viel_from_action(self._action)
+        a_tw, psi_tw = self.true_wind()
+        zero = np.zeros(6)
+        sail = np.array([f["g_s"] * math.sin(delta_s), 0, 0, 0, 0, f["g_s"] * (p.p6 - p.p7 * math.cos(delta_s))])
+        rudder = np.array([-f["g_rv"] * p.p11 * math.sin(delta_r), -f["g_ru"] * p.p11 * math.cos(delta_r),
+                           0, 0, 0, -f["g_rv"] * p.p8 * math.cos(delta_r)])
+        damping = np.array([-p.p2 * v * abs(v), -p.p2 * u * abs(u), 0, 0, 0, -p.p3 * omega * v])
+        hull = f["hull_wind"] * np.array([math.cos(psi_tw - theta), math.sin(psi_tw - theta), 0, 0, 0, 0])
+        return dict(sail_wrench=sail, keel_wrench=zero.copy(), rudder_wrench=rudder, damping_wrench=damping,
+                    added_mass_wrench=zero.copy(), restoring_wrench=zero.copy(), hull_wind_wrench=hull)
+
+
+def observation_from_world(world: VielWorld, target=None) -> dict:
+    """The observation dict of :mod:`sailmujoco.controllers.base` from a :class:`VielWorld`.
+
+    Planar world: ``heel``, ``pitch``, roll and pitch rates, ``w`` are zero; no current
+    (``u_r = u``); the apparent wind is Viel's §2.3 one (no masthead height in the model);
+    ``wind_speed_10`` is the WindConfig's mean speed at 10 m and ``wind_direction`` the
+    bearing the wind comes from at ``wind_height`` (mean + wander; gusts do not turn it).
+    ``target`` (x east, y north) [m], if given, becomes ``target_position``.
+    """
+    x, y, theta, v, u, omega = world.state
+    a_tw, psi_tw = world.true_wind()
+    a_aw, psi_aw = world.apparent_wind()
+    flow_body = np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)])  # where it blows to
+    true_wind = np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)])
+    action = world.action
+    heading = world.heading()
+    true_state = dict(
+        u=np.array(v), v=np.array(u), w=np.array(0.0), u_r=np.array(v), v_r=np.array(u),
+        yaw=np.array(theta), heel=np.array(0.0), pitch=np.array(0.0), roll_rate=np.array(0.0),
+        pitch_rate=np.array(0.0), yaw_rate=np.array(omega), rudder=np.array(action[0]),
+        sail=np.array(action[1]), true_wind=true_wind, wind_speed_10=np.array(world.wind.config.speed),
+        wind_direction=np.array(world.wind_direction()), apparent_wind_ce=flow_body,
+        current=np.zeros(2), time=np.array(world.time), **world.wrenches())
+    obs = dict(
+        position=np.array([x, y]), velocity=world.velocity(), heading=np.array(heading),
+        heel=np.array(0.0), roll_rate=np.array(0.0), yaw_rate=np.array(omega),
+        apparent_wind_angle=np.array(awa_from_psi_aw(psi_aw)), apparent_wind_speed=np.array(a_aw),
+        true_state=true_state)
+    if target is not None:
+        obs["target_position"] = np.asarray(target, dtype=float).reshape(2).copy()
+    return obs

@@ -1,0 +1,370 @@
+"""Wille's 4-DOF sailboat model, the "paper world" of Wille, Hassani & Sprenger (2016a).
+
+Equations 1-43 in the paper's own frames (NED world, FRD body, SNAME), integrated with
+scipy's ``solve_ivp``. Every force term calls the same force functions as the 6-DOF MuJoCo
+boat (:mod:`sailmujoco.forces`): one foil model, one wind model, one damping model.
+
+State ``(x_N, y_E, phi, psi, u, v, p, r, sigma, lambda)``:
+
+    eta_dot = J(phi, psi) nu                                              eq. 4
+    (M_RB + M_A) nu_dot = S + K + R - C_RB(nu) nu - C_A(nu_r) nu_r - D(nu_r) - g(eta)   eq. 3
+    sigma_dot = (sat(sigma_d) - sigma) / T_sigma, lambda_dot = (sat(lambda_d) - lambda) / T_lambda
+
+Readings chosen where the extraction is garbled or silent:
+
+* Eq. 9 (C_RB) is missing from the extraction. With the CG at CO and w = q = 0 the rigid-body
+  Coriolis forces are m (omega x v): C_RB(nu) nu = (-m r v, m r u, 0, 0) (Fossen 2011 §3.3);
+  the roll and yaw rows of omega x (I omega) vanish or fall on pitch, which is held.
+* Eq. 4 prints psi_dot = r cos(phi), Fossen's 4-DOF form that sets the body pitch rate q to
+  zero. ``model="rigid"`` instead integrates a rigid hull whose heave and pitch *angle* are
+  held (the MuJoCo 4-DOF boat): q = r tan(phi), psi_dot = r / cos(phi) (as Saoud §III
+  writes), and the torque that holds the pitch angle acts about the yawed, level y axis,
+  (0, cos phi, -sin phi) in body axes. Eliminating it from the pitch row leaves in the yaw row
+
+      (I_zz + A_66 + I_yy tan^2 phi) r_dot = N + tan(phi) M - tan(phi) I_yy p r / cos^2(phi)
+                                           - gyroscopic terms,
+
+  where M is the body pitch moment the paper drops: a heeled sail's drive, acting high up,
+  turns the boat to windward (weather helm) by tan(phi) M. The roll row gains the
+  omega_3^2 tan(phi) term Saoud §III neglects. ``model="paper"`` (default) is eq. 3-4 as
+  printed.
+* The sail force uses the AR 5 flat sail (Saoud's C_N, our C_T) in place of Marchaj's
+  coefficients, as the 6-DOF boat does.
+
+The interface mirrors :class:`sailmujoco.physics.BoatPhysics` (set_control, step, time,
+and the named SI accessors in OUR frames: world ENU, body FLU) so a task can run on either.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from scipy.integrate import solve_ivp
+
+from .. import frames
+from ..constants import GRAVITY
+from ..forces.added_mass import kirchhoff_terms
+from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
+from ..forces.foil import (foil_world_force, hydrofoil_coefficients, lift_drag_components, naca0015,
+                           sail_coefficients, section_flow)
+from ..forces.hydrostatics import paper_righting_moment
+from ..forces.wind import WindConfig, WindField
+from ..hull import strip_quadrature
+from ..params import BoatParams, get_boat
+
+STATE = ("x", "y", "phi", "psi", "u", "v", "p", "r", "sigma", "lam")
+TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")
+
+
+class SimulationStoppedError(RuntimeError):
+    pass
+
+
+class Wille4DOF:
+    """The 4-DOF paper world for a boat's parameters (default: Wille's yacht).
+
+    Parameters
+    ----------
+    params : BoatParams, optional
+        Boat parameters (``get_boat(boat)`` if not given).
+    wind : WindConfig
+        Wind and current (our one wind model).
+    switches : object with the fields of :class:`sailmujoco.physics.ForceSwitches`
+        Which force models act (``hydrostatics`` is ignored: eq. 20 always).
+    model : {"paper", "rigid"}
+        Eqs. 3-4 as printed, or the rigid hull with heave and pitch angle held (see above).
+    timestep : float
+        Base time step (s) that ``step(n)`` multiplies; the integrator picks its own steps.
+    """
+
+    def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
+                 wind: WindConfig | None = None, switches=None, model: str = "paper",
+                 timestep: float = 0.005, rtol: float = 1e-7, atol: float = 1e-9):
+        from ..physics import ForceSwitches  # the same switch set as the 6-DOF boat
+
+        if model not in ("paper", "rigid"):
+            raise ValueError(f"model must be 'paper' or 'rigid', got {model!r}")
+        self.params = params if params is not None else get_boat(boat)
+        self.wind_config = wind or WindConfig()
+        self.wind = WindField(self.wind_config)
+        self.switches = switches or ForceSwitches()
+        self.model = model
+        self._dt = timestep
+        self._rtol, self._atol = rtol, atol
+        p = self.params
+        self._table = naca0015()
+        self._strips = strip_quadrature(p.hull)
+        self._a = p.added_mass_diagonal
+        ixx, _, izz = p.inertia
+        self._mass_matrix = np.array([  # eq. 7 + eq. 8 (diagonal, §2.1)
+            [p.mass + self._a[0], 0.0, 0.0, 0.0],
+            [0.0, p.mass + self._a[1], 0.0, 0.0],
+            [0.0, 0.0, ixx + self._a[3], -p.inertia_xz],
+            [0.0, 0.0, -p.inertia_xz, izz + self._a[5]],
+        ])
+        self._righting = p.rho_water * GRAVITY * p.displaced_volume * p.gm_t
+        self.external = np.zeros(4)  # extra (X, Y, K, N) in FRD, for tests
+        self.reset()
+
+    # ------------------------------------------------------------------ state
+    def reset(self, state=None) -> None:
+        """Reset to ``state`` (the paper's variables) or to the MuJoCo boat's home pose: at the
+        origin, upright, at rest, heading east (ENU yaw 0 = compass heading 90 deg)."""
+        if state is None:
+            state = np.zeros(len(STATE))
+            state[3] = math.pi / 2
+        self.state = np.asarray(state, float).copy()
+        self._time = 0.0
+        self.control = np.zeros(2)
+        self.stop_reason = None
+
+    def set_state_ours(self, *, position=(0.0, 0.0), yaw=0.0, heel=0.0, u=0.0, v=0.0, p=0.0,
+                       r=0.0, rudder=0.0, sail=0.0) -> None:
+        """Set the state from our conventions (ENU position and yaw, FLU velocities)."""
+        self.state[:] = [position[1], position[0], heel, frames.heading_from_yaw(yaw), u, -v, p,
+                         -r, rudder, sail]
+
+    def time(self) -> float:
+        return self._time
+
+    def timestep(self) -> float:
+        return self._dt
+
+    def set_control(self, control) -> None:
+        control = np.asarray(control, dtype=float)
+        if control.shape != (2,) or not np.all(np.isfinite(control)):
+            raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
+        self.control = control.copy()
+
+    def step(self, nstep: int = 1) -> None:
+        """Advance ``nstep`` base time steps holding the control (one solve_ivp call)."""
+        if self.stop_reason is not None:
+            raise SimulationStoppedError(self.stop_reason)
+        t0, t1 = self._time, self._time + nstep * self._dt
+        self.wind.ensure(t1 + 1.0)
+        sol = solve_ivp(self._rhs, (t0, t1), self.state, method="RK45", rtol=self._rtol,
+                        atol=self._atol)
+        if not sol.success or not np.all(np.isfinite(sol.y[:, -1])):
+            self.stop_reason = f"integration failed: {sol.message}"
+            raise SimulationStoppedError(self.stop_reason)
+        self.state = sol.y[:, -1].copy()
+        self._time = t1
+        if abs(self.state[2]) > math.pi / 2:
+            self.stop_reason = "capsized: |heel| > 90 deg"
+            raise SimulationStoppedError(self.stop_reason)
+
+    # ------------------------------------------------------------------ the model
+    def forces(self, t: float, state) -> dict[str, np.ndarray]:
+        """Every (X, Y, K, N, M) term in FRD at (t, state), signs as on the right of eq. 3.
+
+        M, the pitch moment, is not in the paper's model; only ``model="rigid"`` uses it.
+        """
+        p = self.params
+        sw = self.switches
+        _, _, phi, psi, u, v, pr, r, sigma, lam = state
+        cphi, sphi, cpsi, spsi = math.cos(phi), math.sin(phi), math.cos(psi), math.sin(psi)
+        sigma_d, lam_d = self._saturated_commands()
+        lam_dot = (lam_d - lam) / p.sail.time_constant
+
+        def j2d_t(vec_ned):  # J_2D^T(psi, phi) of eq. 6 times a NED vector
+            return (cpsi * vec_ned[0] + spsi * vec_ned[1],
+                    -spsi * cphi * vec_ned[0] + cpsi * cphi * vec_ned[1])
+
+        cur = self.wind.current
+        cu, cv = j2d_t((cur[1], cur[0]))
+        u_r, v_r = u - cu, v - cv  # eq. 5
+        out = {name: np.zeros(5) for name in TERMS}
+        l1, l2, h1 = -p.sail.mast_x, p.sail.ce_aft, p.sail.ce_height
+        l3, h2 = -p.keel.x, -p.keel.z
+        l4, h3 = -p.rudder.x, -p.rudder.z
+        force = np.zeros(3)
+
+        if sw.sail:
+            wind_enu = np.zeros(3)
+            wind_enu[:] = self.wind.velocity(t, h1 * cphi)  # eq. 42: CE at height h1 cos(phi)
+            wu, wv = j2d_t((wind_enu[1], wind_enu[0]))
+            cl, sl = math.cos(lam), math.sin(lam)
+            vws_u = wu - u - r * l2 * sl - lam_dot * l2 * sl  # eq. 26
+            vws_v = wv - v - (-r * (l1 + l2 * cl) + pr * h1) - (-lam_dot * l2 * cl)
+            flow = np.array([vws_u, -vws_v, 0.0])  # FRD -> FLU
+            chord = np.array([cl, -sl, 0.0])
+            normal = np.array([sl, cl, 0.0])
+            wc, wn, speed, alpha = section_flow(flow, chord, normal)
+            c_n, c_t = sail_coefficients(alpha, sw.sail_tangential, p.sail.suction_efficiency,
+                                         p.sail.suction_stall, p.sail.friction_coefficient)
+            qa = 0.5 * p.rho_air * speed * speed * p.sail.area
+            foil_world_force(qa * c_t, -qa * c_n, chord, normal, force)
+            sx, sy = force[0], -force[1]  # FLU -> FRD
+            out["sail"][:] = (sx, sy, h1 * sy, sx * l2 * sl - sy * (l1 + l2 * cl),  # eq. 29
+                              -h1 * sx)
+
+        for name, on, foil, x_arm, z_arm, angle in (
+                ("keel", sw.keel, p.keel, l3, h2, 0.0),
+                ("rudder", sw.rudder, p.rudder, l4, h3, sigma)):
+            if not on:
+                continue
+            vc_u = -u_r  # eqs. 30 and 34
+            vc_v = -v_r - (-r * x_arm - pr * z_arm)
+            flow = np.array([vc_u, -vc_v, 0.0])
+            chord = np.array([math.cos(angle), -math.sin(angle), 0.0])
+            normal = np.array([math.sin(angle), math.cos(angle), 0.0])
+            wc, wn, speed, alpha = section_flow(flow, chord, normal)
+            re = speed * foil.chord / p.nu_water
+            c_l, c_d = hydrofoil_coefficients(alpha, re, foil.aspect_ratio, foil.thickness_ratio,
+                                              self._table.alpha, self._table.log_re,
+                                              self._table.cl, self._table.cd)
+            fc, fn = lift_drag_components(wc, wn, speed, 0.5 * p.rho_water * speed * speed * foil.area,
+                                          c_l, c_d)
+            foil_world_force(fc, fn, chord, normal, force)
+            fx, fy = force[0], -force[1]
+            out[name][:] = (fx, fy, -z_arm * fy, -x_arm * fy, z_arm * fx)  # eqs. 33 and 36
+
+        out["restoring"][2] = paper_righting_moment(phi, self._righting, p.paper_righting == "sin")
+
+        if sw.damping:  # eqs. 12-19
+            d11, d22, _, _, d66 = p.linear_damping
+            fy, mz = crossflow_drag(v_r, r, p.rho_water, p.crossflow_cd, *self._strips)
+            out["damping"][:4] = (
+                -d11 * u_r + surge_resistance(u_r, p.rho_water, p.wetted_surface, p.form_factor,
+                                              p.hull.length, p.nu_water),
+                -d22 * v_r + fy,
+                roll_damping(pr, u_r, p.roll_friction, p.roll_lift, p.roll_frequency, p.hull.length),
+                -d66 * r + mz)
+        if sw.added_mass:  # -C_A(nu_r) nu_r, eqs. 10-11
+            kirch = np.zeros(6)
+            kirchhoff_terms(np.array([u_r, v_r, 0.0, pr, 0.0, r]), self._a, kirch)
+            out["added_mass"][:4] = (kirch[0], kirch[1], kirch[3], kirch[5])
+        out["coriolis"][:4] = (p.mass * r * v, -p.mass * r * u, 0.0, 0.0)  # -C_RB nu (eq. 9, above)
+        out["external"][:4] = self.external
+        return out
+
+    def _saturated_commands(self):
+        p = self.params
+        sigma_d = float(np.clip(self.control[0], -p.rudder.max_angle, p.rudder.max_angle))
+        lam_d = float(np.clip(self.control[1], -p.sail.max_angle, p.sail.max_angle))
+        return sigma_d, lam_d
+
+    def _rhs(self, t, state):
+        p = self.params
+        _, _, phi, psi, u, v, pr, r, sigma, lam = state
+        total = sum(self.forces(t, state).values())
+        tau = total[:4].copy()
+        cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
+        if self.model == "paper":
+            nu_dot = np.linalg.solve(self._mass_matrix, tau)
+            psi_dot = r * cphi
+        else:  # rigid hull, heave and pitch angle held (module docstring)
+            ixx, iyy, izz = p.inertia
+            tphi = math.tan(phi)
+            q = r * tphi
+            mass = self._mass_matrix.copy()
+            mass[3, 3] += (iyy + self._a[4]) * tphi * tphi
+            tau[2] -= q * r * (izz - iyy)  # omega x (I omega), roll row
+            tau[3] += tphi * total[4]  # the pitch moment the held pitch turns into yaw
+            tau[3] -= tphi * (iyy + self._a[4]) * r * pr / (cphi * cphi)  # d/dt(tan phi) part of q_dot
+            tau[3] -= tphi * pr * r * (ixx - izz) + pr * q * (iyy - ixx)  # gyroscopic, pitch and yaw rows
+            nu_dot = np.linalg.solve(mass, tau)
+            psi_dot = r / cphi
+        sigma_d, lam_d = self._saturated_commands()
+        return np.array([
+            cpsi * u - spsi * cphi * v,  # eq. 4
+            spsi * u + cpsi * cphi * v,
+            pr,
+            psi_dot,
+            *nu_dot,
+            (sigma_d - sigma) / p.rudder.time_constant,  # actuator lag, §2.1
+            (lam_d - lam) / p.sail.time_constant,
+        ])
+
+    # ------------------------------------------------------------------ accessors (our frames)
+    def position(self) -> np.ndarray:
+        """World position of CO (x east, y north, z up), m."""
+        return np.array([self.state[1], self.state[0], 0.0])
+
+    def heel(self) -> float:
+        return float(self.state[2])
+
+    def pitch(self) -> float:
+        return 0.0
+
+    def heading(self) -> float:
+        return float(frames.wrap_angle(self.state[3]))
+
+    def yaw(self) -> float:
+        return float(frames.yaw_from_heading(self.state[3]))
+
+    def rotation(self) -> np.ndarray:
+        return frames.matrix_from_euler(self.heel(), 0.0, self.yaw())
+
+    def body_velocity(self) -> np.ndarray:
+        """(u, v, w) in FLU, m/s."""
+        return np.array([self.state[4], -self.state[5], 0.0])
+
+    def angular_velocity(self) -> np.ndarray:
+        """(p, q, r) in FLU, rad/s (q from the yaw kinematics)."""
+        phi, pr, r = self.state[2], self.state[6], -self.state[7]
+        q = r * math.tan(phi) if self.model == "rigid" else 0.0
+        return np.array([pr, q, r])
+
+    def surge_speed(self) -> float:
+        return float(self.state[4])
+
+    def sway_speed(self) -> float:
+        return float(-self.state[5])
+
+    def roll_rate(self) -> float:
+        return float(self.state[6])
+
+    def yaw_rate(self) -> float:
+        return float(-self.state[7])
+
+    def ground_velocity(self) -> np.ndarray:
+        """World (east, north) velocity of CO, m/s (eq. 4)."""
+        _, _, phi, psi, u, v = self.state[:6]
+        cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
+        return np.array([spsi * u + cpsi * cphi * v, cpsi * u - spsi * cphi * v])
+
+    def course(self) -> float:
+        ve, vn = self.ground_velocity()
+        return float(math.atan2(vn, ve))
+
+    def speed_over_ground(self) -> float:
+        return float(np.hypot(*self.ground_velocity()))
+
+    def drift_angle(self) -> float:
+        """beta = atan2(v cos(phi), u), Wille eq. 45, in our sign (positive to port)."""
+        return float(math.atan2(self.sway_speed() * math.cos(self.heel()), self.surge_speed()))
+
+    def rudder_angle(self) -> float:
+        return float(self.state[8])
+
+    def sail_angle(self) -> float:
+        return float(self.state[9])
+
+    def force_terms(self) -> dict[str, np.ndarray]:
+        """Body wrenches (Fx, Fy, Fz, Mx, My, Mz) in FLU about CO, as the 6-DOF boat reports."""
+        out = {}
+        for name, (x, y, k, n, m) in self.forces(self._time, self.state).items():
+            out[name] = np.array([x, -y, 0.0, k, -m, -n])
+        return out
+
+    def true_wind(self, height: float | None = None) -> np.ndarray:
+        if height is None:
+            height = self.params.sail.masthead_height * math.cos(self.heel())
+        return self.wind.velocity(self._time, height)
+
+    def apparent_wind_masthead(self) -> np.ndarray:
+        """Air velocity relative to the masthead in body FLU (x, y, z), m/s (4-DOF kinematics)."""
+        p = self.params
+        rot = self.rotation()
+        top = np.array([p.sail.mast_x, 0.0, p.sail.masthead_height])
+        vel = rot @ self.body_velocity() + rot @ np.cross(self.angular_velocity(), top)
+        air = self.true_wind(float((rot @ top)[2])) - vel
+        return rot.T @ air
+
+    def apparent_wind_angle(self) -> float:
+        return frames.apparent_wind_angle(self.apparent_wind_masthead())
+
+    def apparent_wind_speed(self) -> float:
+        return float(np.hypot(*self.apparent_wind_masthead()[:2]))
