@@ -176,7 +176,8 @@ class BoatPhysics(engine.Physics):
         else:
             qpos, qvel, qfrc = self._q7, self._v6, self._qfrc8
         self._args = (qpos, qvel, self._kidx, self._P, self._columns, self._strips,
-                      *self._table, w.gust_frequency, w.gust_phase, w.gust_amplitude, w.log_z,
+                      *self._table, w.oscillation, w.gust_frequency, w.gust_phase, w.gust_amplitude,
+                      w.log_z,
                       w.wander, self._external, self._terms, self._diag, qfrc,
                       self._madd, d.M, self._csr_addr, self._work)
 
@@ -367,6 +368,36 @@ class BoatPhysics(engine.Physics):
         """Drift angle beta = atan2(v cos(phi), u), Wille eq. 45 (FLU sign: positive to port)."""
         u, v, _ = self.body_velocity()
         return float(math.atan2(v * math.cos(self.heel()), u))
+
+    def ground_velocity(self) -> np.ndarray:
+        """World (east, north) velocity of CO, m/s."""
+        return self._free_state()[1][0:2].copy()
+
+    def place(self, position=(0.0, 0.0), yaw: float = 0.0, surge: float = 0.0) -> None:
+        """Put the boat upright on its waterline at ``position`` (m), heading ``yaw`` (ENU, rad),
+        moving ahead at ``surge`` (m/s); the rudder and sail keep their angles."""
+        d = self.data.ptr
+        d.qvel[:] = 0.0
+        if self.dofs == 6:
+            d.qpos[0:3] = (position[0], position[1], 0.0)
+            d.qpos[3:7] = (math.cos(yaw / 2), 0.0, 0.0, math.sin(yaw / 2))
+            d.qvel[0:2] = (surge * math.cos(yaw), surge * math.sin(yaw))
+        else:
+            d.qpos[0:4] = (position[0], position[1], yaw, 0.0)
+            d.qvel[0:2] = (surge * math.cos(yaw), surge * math.sin(yaw))
+        mujoco.mj_forward(self.model.ptr, d)
+        self._fresh = False
+        self._ensure_fresh()
+
+    def sail_wind(self) -> np.ndarray:
+        """World wind velocity at the sail's centre of effort, m/s."""
+        self._ensure_fresh()
+        return self._diag[kernels.D_WIND_X:kernels.D_WIND_Z + 1].copy()
+
+    def apparent_wind_ce(self) -> np.ndarray:
+        """Air velocity relative to the sail CE, body x-y (FLU), m/s."""
+        self._ensure_fresh()
+        return self._diag[kernels.D_SAIL_FLOW_X:kernels.D_SAIL_FLOW_Y + 1].copy()
 
     def course(self) -> float:
         """Course over ground: ENU direction of the horizontal velocity of CO, rad."""

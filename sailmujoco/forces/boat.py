@@ -52,7 +52,7 @@ HYDROSTATIC_MODES = ("off", "paper", "geometric")
 # ---- diagnostics (``diag`` output) ------------------------------------------------------
 (D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
  D_WIND_X, D_WIND_Y, D_WIND_Z, D_CE_HEIGHT, D_SUBMERGED, D_CN, D_CT, D_SAIL_HINGE,
- D_SIZE) = range(15)
+ D_SAIL_FLOW_X, D_SAIL_FLOW_Y, D_SIZE) = range(17)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
 WORK_SIZE = 64  # scratch floats handed to boat_forces
@@ -137,7 +137,7 @@ def _point_flow(fluid_body, v, w, point, extra, out):
 
 @kernel
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
-                cd_table, gust_f, gust_phase, gust_amp, log_z, wander, external,
+                cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, external,
                 terms, diag, qfrc, madd, mass_csr, csr_addr, work, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
@@ -223,11 +223,12 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         # hinge-rate velocity (-lambda_dot z) x arm = lambda_dot l2 (sin, cos, 0), eq. 26
         extra[0], extra[1], extra[2] = lam_rate * P[P_CE_AFT] * sl_, lam_rate * P[P_CE_AFT] * cl_, 0.0
         z_ce = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
-        wind_velocity(t, z_ce, P[P_WIND_SPEED], P[P_WIND_FROM], gust_f, gust_phase, gust_amp,
-                      log_z, P[P_WANDER_DT], wander, wind_w)
+        wind_velocity(t, z_ce, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f, gust_phase,
+                      gust_amp, log_z, P[P_WANDER_DT], wander, wind_w)
         for i in range(3):
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         _point_flow(wind_b, v, w, point, extra, flow)
+        diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
         chord[0], chord[1], chord[2] = cl_, -sl_, 0.0
         normal[0], normal[1], normal[2] = sl_, cl_, 0.0
         wc, wn, speed, alpha = section_flow(flow, chord, normal)

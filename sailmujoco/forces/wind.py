@@ -13,6 +13,8 @@
   it on a 0.1 s grid (Euler-Maruyama, clipped at the limit) from the seed and interpolate
   linearly. The noise intensity is not given in the paper; the default is a guess.
 * Current, eq. 5: a constant world velocity; hydrodynamic forces use nu_r = nu - J^T V_c.
+* For scenario scripts: step changes of the mean direction (``direction_schedule``, Saoud
+  Fig. 6) and a sinusoidal modulation of the mean speed and direction (Viel §5.1 cases 3-6).
 
 Wind direction is where the wind comes *from* (compass bearing), see :mod:`sailmujoco.frames`.
 """
@@ -53,11 +55,19 @@ class WindConfig:
     current_east: float = 0.0  # m/s, world current (where it flows to)
     current_north: float = 0.0  # m/s
     seed: int = 0
+    # step changes of the mean direction: ((t0, direction_from0), (t1, direction_from1), ...);
+    # before the first t the direction is ``direction_from`` (Saoud Fig. 6 turns the wind)
+    direction_schedule: tuple = ()
+    # sinusoidal modulation of the 10 m mean speed and of the direction (Viel §5.1 cases 3-6):
+    # U_m10 + A sin(2 pi f t), direction_from + B sin(2 pi f t)
+    speed_oscillation: float = 0.0  # m/s, A
+    direction_oscillation: float = 0.0  # rad, B
+    oscillation_frequency: float = 0.0  # Hz, f
 
     def __post_init__(self):
         numbers = {f.name: getattr(self, f.name) for f in fields(self)}
         for name, value in numbers.items():
-            if isinstance(value, bool) or name == "seed":
+            if isinstance(value, bool) or name in ("seed", "direction_schedule"):
                 continue
             if not isinstance(value, (int, float)) or not math.isfinite(value):
                 raise ValueError(f"wind: {name} must be a finite number, got {value!r}")
@@ -67,6 +77,15 @@ class WindConfig:
             raise ValueError(f"wind: n_frequencies must be >= 1, got {self.n_frequencies}")
         if self.wander_intensity < 0 or self.wander_limit < 0:
             raise ValueError("wind: wander_intensity and wander_limit must be >= 0")
+        try:
+            schedule = tuple((float(t), float(d)) for t, d in self.direction_schedule)
+        except (TypeError, ValueError):
+            raise ValueError("wind: direction_schedule must be pairs (time s, direction_from rad), "
+                             f"got {self.direction_schedule!r}") from None
+        if any(not (math.isfinite(t) and math.isfinite(d)) for t, d in schedule) or \
+                list(schedule) != sorted(schedule):
+            raise ValueError("wind: direction_schedule needs finite, time-ordered pairs")
+        object.__setattr__(self, "direction_schedule", schedule)
 
     @classmethod
     def from_dict(cls, values: dict, source: str = "wind config") -> WindConfig:
@@ -145,33 +164,49 @@ class WindField:
         else:
             self.gust_amplitude = np.zeros((_Z_TABLE.size, n))
         self._wander_rng = np.random.default_rng([config.seed, 2])
+        self._walk = np.zeros(1)
         self.wander = np.zeros(1)
         self.current = np.array([config.current_east, config.current_north, 0.0])
+        self.oscillation = np.array([config.speed_oscillation, config.direction_oscillation,
+                                     config.oscillation_frequency])
         self.ensure(600.0)
 
     def ensure(self, t_end: float) -> None:
         """Extend the wander series so that it covers [0, t_end] s."""
         need = int(math.ceil(t_end / WANDER_DT)) + 2
-        if need <= self.wander.size:
+        if need <= self._walk.size:
             return
-        block = max(need - self.wander.size, 6000)
+        block = max(need - self._walk.size, 6000)
         steps = self._wander_rng.standard_normal(block)
         out = np.empty(block)
-        value = self.wander[-1]
+        value = self._walk[-1]
         cfg = self.config
         sigma = cfg.wander_intensity * math.sqrt(WANDER_DT) if cfg.wander else 0.0
         for i in range(block):
             value = min(cfg.wander_limit, max(-cfg.wander_limit, value + sigma * steps[i]))
             out[i] = value
-        self.wander = np.concatenate([self.wander, out])
+        self._walk = np.concatenate([self._walk, out])
+        # the table the kernels read: the random walk plus the scheduled mean-direction steps
+        times = np.arange(self._walk.size) * WANDER_DT
+        offset = np.zeros(self._walk.size)
+        for t0, direction in cfg.direction_schedule:
+            offset[times >= t0 - 1e-9] = direction - cfg.direction_from
+        self.wander = self._walk + offset
+
+    def direction_from(self, t: float) -> float:
+        """Compass bearing the wind comes from at time t: mean, schedule and wander, rad."""
+        self.ensure(t + 1.0)
+        c = self.config
+        return (c.direction_from + float(wander_angle(t, WANDER_DT, self.wander))
+                + c.direction_oscillation * math.sin(2.0 * math.pi * c.oscillation_frequency * t))
 
     def velocity(self, t: float, z: float) -> np.ndarray:
         """World wind velocity (m/s) at time t and height z, anywhere in the horizontal plane."""
         self.ensure(t + 1.0)
         out = np.zeros(3)
-        wind_velocity(t, z, self.config.speed, self.config.direction_from, self.gust_frequency,
-                      self.gust_phase, self.gust_amplitude, self.log_z, WANDER_DT, self.wander,
-                      out)
+        wind_velocity(t, z, self.config.speed, self.config.direction_from, self.oscillation,
+                      self.gust_frequency, self.gust_phase, self.gust_amplitude, self.log_z,
+                      WANDER_DT, self.wander, out)
         return out
 
     def gust(self, t, z: float) -> np.ndarray:
@@ -226,13 +261,18 @@ def wander_angle(t, dt, series):
 
 
 @kernel
-def wind_velocity(t, z, speed10, direction_from, frequency, phase, amplitude, log_z,
+def wind_velocity(t, z, speed10, direction_from, oscillation, frequency, phase, amplitude, log_z,
                   wander_dt, wander, out):
-    """World wind velocity at (t, z) into ``out`` (3,), eqs. 40-43."""
-    u = mean_speed(z, speed10)
+    """World wind velocity at (t, z) into ``out`` (3,), eqs. 40-43.
+
+    ``oscillation`` = (speed amplitude, direction amplitude, frequency) of the optional
+    sinusoidal modulation of the mean wind.
+    """
+    s = math.sin(2.0 * math.pi * oscillation[2] * t)
+    u = mean_speed(z, speed10 + oscillation[0] * s)
     if speed10 > 0.0:
         u += gust_speed(t, z, frequency, phase, amplitude, log_z)
-    bearing = direction_from + wander_angle(t, wander_dt, wander)
+    bearing = direction_from + wander_angle(t, wander_dt, wander) + oscillation[1] * s
     out[0] = -u * math.sin(bearing)
     out[1] = -u * math.cos(bearing)
     out[2] = 0.0

@@ -46,19 +46,22 @@ from .. import frames
 from ..constants import GRAVITY
 from ..forces.added_mass import kirchhoff_terms
 from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
-from ..forces.foil import (foil_world_force, hydrofoil_coefficients, lift_drag_components, naca0015,
-                           sail_coefficients, section_flow)
+from ..forces.foil import (
+    foil_world_force,
+    hydrofoil_coefficients,
+    lift_drag_components,
+    naca0015,
+    sail_coefficients,
+    section_flow,
+)
 from ..forces.hydrostatics import paper_righting_moment
 from ..forces.wind import WindConfig, WindField
 from ..hull import strip_quadrature
 from ..params import BoatParams, get_boat
+from ..physics import ForceSwitches, SimulationStopped  # the same switches and stop as in 6-DOF
 
 STATE = ("x", "y", "phi", "psi", "u", "v", "p", "r", "sigma", "lam")
 TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")
-
-
-class SimulationStoppedError(RuntimeError):
-    pass
 
 
 class Wille4DOF:
@@ -81,8 +84,6 @@ class Wille4DOF:
     def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
                  wind: WindConfig | None = None, switches=None, model: str = "paper",
                  timestep: float = 0.005, rtol: float = 1e-7, atol: float = 1e-9):
-        from ..physics import ForceSwitches  # the same switch set as the 6-DOF boat
-
         if model not in ("paper", "rigid"):
             raise ValueError(f"model must be 'paper' or 'rigid', got {model!r}")
         self.params = params if params is not None else get_boat(boat)
@@ -131,6 +132,12 @@ class Wille4DOF:
     def timestep(self) -> float:
         return self._dt
 
+    def action_bounds(self):
+        """(low, high) of [rudder, sail] commands, rad (the saturations of §2.1)."""
+        p = self.params
+        high = np.array([p.rudder.max_angle, p.sail.max_angle])
+        return -high, high
+
     def set_control(self, control) -> None:
         control = np.asarray(control, dtype=float)
         if control.shape != (2,) or not np.all(np.isfinite(control)):
@@ -140,19 +147,19 @@ class Wille4DOF:
     def step(self, nstep: int = 1) -> None:
         """Advance ``nstep`` base time steps holding the control (one solve_ivp call)."""
         if self.stop_reason is not None:
-            raise SimulationStoppedError(self.stop_reason)
+            raise SimulationStopped(self.stop_reason, self._time)
         t0, t1 = self._time, self._time + nstep * self._dt
         self.wind.ensure(t1 + 1.0)
         sol = solve_ivp(self._rhs, (t0, t1), self.state, method="RK45", rtol=self._rtol,
                         atol=self._atol)
         if not sol.success or not np.all(np.isfinite(sol.y[:, -1])):
             self.stop_reason = f"integration failed: {sol.message}"
-            raise SimulationStoppedError(self.stop_reason)
+            raise SimulationStopped(self.stop_reason, self._time)
         self.state = sol.y[:, -1].copy()
         self._time = t1
         if abs(self.state[2]) > math.pi / 2:
             self.stop_reason = "capsized: |heel| > 90 deg"
-            raise SimulationStoppedError(self.stop_reason)
+            raise SimulationStopped(self.stop_reason, self._time)
 
     # ------------------------------------------------------------------ the model
     def forces(self, t: float, state) -> dict[str, np.ndarray]:
@@ -163,9 +170,7 @@ class Wille4DOF:
         p = self.params
         sw = self.switches
         _, _, phi, psi, u, v, pr, r, sigma, lam = state
-        cphi, sphi, cpsi, spsi = math.cos(phi), math.sin(phi), math.cos(psi), math.sin(psi)
-        sigma_d, lam_d = self._saturated_commands()
-        lam_dot = (lam_d - lam) / p.sail.time_constant
+        cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
 
         def j2d_t(vec_ned):  # J_2D^T(psi, phi) of eq. 6 times a NED vector
             return (cpsi * vec_ned[0] + spsi * vec_ned[1],
@@ -181,12 +186,8 @@ class Wille4DOF:
         force = np.zeros(3)
 
         if sw.sail:
-            wind_enu = np.zeros(3)
-            wind_enu[:] = self.wind.velocity(t, h1 * cphi)  # eq. 42: CE at height h1 cos(phi)
-            wu, wv = j2d_t((wind_enu[1], wind_enu[0]))
+            vws_u, vws_v = self._sail_flow(t, state)
             cl, sl = math.cos(lam), math.sin(lam)
-            vws_u = wu - u - r * l2 * sl - lam_dot * l2 * sl  # eq. 26
-            vws_v = wv - v - (-r * (l1 + l2 * cl) + pr * h1) - (-lam_dot * l2 * cl)
             flow = np.array([vws_u, -vws_v, 0.0])  # FRD -> FLU
             chord = np.array([cl, -sl, 0.0])
             normal = np.array([sl, cl, 0.0])
@@ -238,6 +239,21 @@ class Wille4DOF:
         out["coriolis"][:4] = (p.mass * r * v, -p.mass * r * u, 0.0, 0.0)  # -C_RB nu (eq. 9, above)
         out["external"][:4] = self.external
         return out
+
+    def _sail_flow(self, t: float, state) -> tuple[float, float]:
+        """V_ws, the air velocity relative to the sail CE in FRD, eq. 26 (wind at eq. 42's height)."""
+        p = self.params
+        _, _, phi, psi, u, v, pr, r, _, lam = state
+        cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
+        wind = self.wind.velocity(t, p.sail.ce_height * cphi)  # ENU; eq. 42: CE at h1 cos(phi)
+        wu = cpsi * wind[1] + spsi * wind[0]  # J_2D^T V_w, eq. 6
+        wv = -spsi * cphi * wind[1] + cpsi * cphi * wind[0]
+        lam_dot = (self._saturated_commands()[1] - lam) / p.sail.time_constant
+        l1, l2, h1 = -p.sail.mast_x, p.sail.ce_aft, p.sail.ce_height
+        cl, sl = math.cos(lam), math.sin(lam)
+        vws_u = wu - u - r * l2 * sl - lam_dot * l2 * sl  # eq. 26
+        vws_v = wv - v - (-r * (l1 + l2 * cl) + pr * h1) - (-lam_dot * l2 * cl)
+        return vws_u, vws_v
 
     def _saturated_commands(self):
         p = self.params
@@ -353,6 +369,20 @@ class Wille4DOF:
         if height is None:
             height = self.params.sail.masthead_height * math.cos(self.heel())
         return self.wind.velocity(self._time, height)
+
+    def place(self, position=(0.0, 0.0), yaw: float = 0.0, surge: float = 0.0) -> None:
+        """Upright at ``position`` (m, ENU), heading ``yaw`` (ENU, rad), surging at ``surge``."""
+        self.set_state_ours(position=position, yaw=yaw, u=surge, rudder=self.state[8],
+                            sail=self.state[9])
+
+    def sail_wind(self) -> np.ndarray:
+        """World wind velocity at the sail CE (height h1 cos(phi), eq. 42), m/s."""
+        return self.wind.velocity(self._time, self.params.sail.ce_height * math.cos(self.heel()))
+
+    def apparent_wind_ce(self) -> np.ndarray:
+        """Air velocity relative to the sail CE (eq. 26), body x-y in FLU, m/s."""
+        vws_u, vws_v = self._sail_flow(self._time, self.state)
+        return np.array([vws_u, -vws_v])
 
     def apparent_wind_masthead(self) -> np.ndarray:
         """Air velocity relative to the masthead in body FLU (x, y, z), m/s (4-DOF kinematics)."""

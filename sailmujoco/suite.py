@@ -1,0 +1,82 @@
+"""The task suite: ``load(boat, task, world)`` returns a ``dm_env.Environment``.
+
+Worlds
+    ``"mujoco"``  the 6-DOF MuJoCo boat (:class:`sailmujoco.physics.BoatPhysics`);
+    ``"paper"``   the paper's reduced model: Wille's 4-DOF equations with the boat's
+                  parameters (:class:`sailmujoco.reference.wille.Wille4DOF`), or, for
+                  ``position_keeping``, Viel's 3-DOF model with its own Table 1 boat
+                  (:class:`sailmujoco.reference.viel.VielWorld`; the ``boat`` argument then only
+                  names the run).
+
+Example::
+
+    from sailmujoco import suite
+    env = suite.load("wille_yacht", "heading_hold", world="mujoco", seed=0)
+    timestep = env.reset()
+"""
+
+from __future__ import annotations
+
+from .params import BOATS, get_boat
+from .physics import BoatPhysics, ForceSwitches
+from .tasks.base import PaperPhysics, SailEnvironment
+from .tasks.position import PositionKeeping, VielPhysics
+from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial
+
+TASKS = {cls.name: cls for cls in (HeadingHold, CourseHold, BeamReachRoll, SpeedTrial,
+                                   PositionKeeping)}
+WORLDS = ("mujoco", "paper")
+SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS)
+
+
+def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None,
+         control_timestep: float = 0.1, time_limit: float | None = None,
+         sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
+         paper_model: str = "paper", forces: ForceSwitches | None = None,
+         boat_options: dict | None = None, **task_options) -> SailEnvironment:
+    """Build an environment.
+
+    Parameters
+    ----------
+    boat, task, world : str
+        A registered boat (``BOATS``), task (``TASKS``) and world (``WORLDS``).
+    seed : int, optional
+        Seeds the initial-state randomisation and the wind.
+    control_timestep : float
+        Seconds per ``env.step``; the physics runs at its own fixed step underneath.
+    time_limit : float, optional
+        Episode length in seconds (default: the task's, e.g. 200 s for course_hold).
+    sail_mode, hydrostatics, dofs, forces
+        MuJoCo world options (see :class:`sailmujoco.physics.BoatPhysics`).
+    paper_model : {"paper", "rigid"}
+        Wille 4-DOF variant (see :mod:`sailmujoco.reference.wille`).
+    boat_options : dict, optional
+        Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
+    task_options
+        Passed to the task (e.g. ``case=3`` for position_keeping).
+    """
+    if task not in TASKS:
+        raise ValueError(f"unknown task {task!r}; known tasks: {', '.join(TASKS)}")
+    if world not in WORLDS:
+        raise ValueError(f"unknown world {world!r}; choose one of {WORLDS}")
+    params = get_boat(boat, **(boat_options or {}))
+    try:
+        the_task = TASKS[task](seed=seed, **task_options)
+    except TypeError as err:
+        raise ValueError(f"bad option for task {task!r}: {err}") from None
+    wind = the_task.wind()
+    switches = forces or ForceSwitches(hydrostatics=hydrostatics)
+    if world == "mujoco":
+        physics = BoatPhysics.load(params=params, sail_mode=sail_mode, wind=wind, forces=switches,
+                                   dofs=dofs)
+    elif task == "position_keeping":
+        from .reference.viel import VielWorld
+
+        physics = VielPhysics(VielWorld(wind=wind))
+    else:
+        from .reference.wille import Wille4DOF
+
+        physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
+                                         model=paper_model))
+    return SailEnvironment(physics, the_task, time_limit=time_limit or the_task.duration,
+                           control_timestep=control_timestep, legacy_step=False)

@@ -1,0 +1,244 @@
+"""The task layer: dm_control-style tasks that run on any world (MuJoCo 6-DOF or a paper world).
+
+A *world* is anything with the named SI accessors of :class:`sailmujoco.physics.BoatPhysics`
+(``position``, ``heading``, ``heel``, ``body_velocity`` ... see :func:`measure`) plus
+``step``, ``time``, ``timestep``, ``set_control``, ``place`` and ``stop_reason``. MuJoCo boats
+are ``BoatPhysics``; the papers' reduced models are wrapped by :class:`PaperPhysics` so that
+``dm_control.rl.control.Environment`` can drive them.
+
+Every task here documents its observation and action (unit, frame), splits its reward into
+named terms (``reward_terms``; the reward is their sum) and keeps metrics over the episode.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import OrderedDict
+
+import dm_env
+import numpy as np
+from dm_control.rl import control
+from dm_env import specs
+
+from .. import frames
+from ..physics import SimulationStopped
+
+WRENCH_KEYS = {"sail": "sail", "keel": "keel", "rudder": "rudder", "damping": "damping",
+               "added_mass": "added_mass", "hydrostatics": "restoring", "restoring": "restoring"}
+
+
+def _scalar(x) -> np.ndarray:
+    return np.asarray(float(x), dtype=np.float64)
+
+
+def measure(world) -> OrderedDict:
+    """The observation of controllers/base.py from a world's accessors (our frames, SI)."""
+    rot = world.rotation()
+    body = world.body_velocity()
+    rates = world.angular_velocity()
+    current = world.wind.current
+    current_body = rot.T @ current
+    t = world.time()
+    true_state = OrderedDict(
+        u=_scalar(body[0]), v=_scalar(body[1]), w=_scalar(body[2]),
+        u_r=_scalar(body[0] - current_body[0]), v_r=_scalar(body[1] - current_body[1]),
+        yaw=_scalar(world.yaw()), heel=_scalar(world.heel()), pitch=_scalar(world.pitch()),
+        roll_rate=_scalar(rates[0]), pitch_rate=_scalar(rates[1]), yaw_rate=_scalar(rates[2]),
+        rudder=_scalar(world.rudder_angle()), sail=_scalar(world.sail_angle()),
+        true_wind=np.asarray(world.sail_wind()[:2], dtype=np.float64),
+        wind_speed_10=_scalar(world.wind.config.speed),
+        wind_direction=_scalar(frames.wrap_angle(world.wind.direction_from(t))),
+        apparent_wind_ce=np.asarray(world.apparent_wind_ce()[:2], dtype=np.float64),
+        current=np.array(current[:2], dtype=np.float64),
+        time=_scalar(t),
+    )
+    terms = world.force_terms()
+    for name, key in WRENCH_KEYS.items():
+        if name in terms:
+            true_state[f"{key}_wrench"] = np.asarray(terms[name], dtype=np.float64)
+    for key in ("sail", "keel", "rudder", "damping", "added_mass", "restoring"):
+        true_state.setdefault(f"{key}_wrench", np.zeros(6))
+    return OrderedDict(
+        position=np.asarray(world.position()[:2], dtype=np.float64),
+        velocity=np.asarray(world.ground_velocity(), dtype=np.float64),
+        heading=_scalar(world.heading()),
+        heel=_scalar(world.heel()),
+        roll_rate=_scalar(rates[0]),
+        yaw_rate=_scalar(rates[2]),
+        apparent_wind_angle=_scalar(world.apparent_wind_angle()),
+        apparent_wind_speed=_scalar(world.apparent_wind_speed()),
+        true_state=true_state,
+    )
+
+
+class PaperPhysics(control.Physics):
+    """A paper world (reduced ODE model) behind dm_control's Physics interface."""
+
+    def __init__(self, world):
+        self.world = world
+
+    def step(self, n_sub_steps=1):
+        self.world.step(n_sub_steps)
+
+    def time(self):
+        return self.world.time()
+
+    def timestep(self):
+        return self.world.timestep()
+
+    def set_control(self, control):
+        self.world.set_control(control)
+
+    def reset(self):
+        self.world.reset()
+
+    def after_reset(self):
+        pass
+
+    def __getattr__(self, name):  # the named accessors of the world
+        if name == "world":
+            raise AttributeError(name)
+        return getattr(self.world, name)
+
+
+class SailEnvironment(control.Environment):
+    """``control.Environment`` that ends the episode, rather than raising, when the simulation
+    stops (capsize, non-finite state); the reason lands in ``task.metrics()['stopped']``."""
+
+    def step(self, action):
+        try:
+            return super().step(action)
+        except SimulationStopped as stop:
+            self._task.stopped = stop.reason
+            self._reset_next_step = True
+            observation = self._task.last_observation
+            return dm_env.termination(reward=0.0, observation=observation)
+
+
+class SailTask(control.Task):
+    """Base task. Subclasses set ``name``, ``duration`` and override the hooks below.
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-state randomisation (and, through :meth:`wind`, the gusts).
+    heading_jitter_deg : float
+        Half-width of the uniform random perturbation of the initial heading.
+    """
+
+    name = "task"
+    duration = 60.0  # s, default episode length
+
+    def __init__(self, seed: int | None = None, heading_jitter_deg: float = 5.0):
+        self.seed = seed
+        self.random = np.random.default_rng(seed)
+        self.heading_jitter = math.radians(heading_jitter_deg)
+        self.stopped = None
+        self.last_observation = None
+        self._records: list[dict] = []
+
+    # ---- hooks for subclasses
+    def wind(self):
+        """The WindConfig this task sails in (seeded from the task's seed)."""
+        raise NotImplementedError
+
+    def initial_heading(self) -> float:
+        """Compass heading (rad) the boat starts on, before the random jitter."""
+        return 0.0
+
+    def initial_speed(self) -> float:
+        return 0.0
+
+    def references(self, physics) -> dict:
+        """Task references added to the observation (e.g. ``desired_heading``)."""
+        return {}
+
+    def reward_terms(self, physics, observation) -> dict:
+        raise NotImplementedError
+
+    def summarise(self, records: list[dict]) -> dict:
+        """Metrics from the per-step records."""
+        return {}
+
+    # ---- control.Task API
+    def initialize_episode(self, physics):
+        heading = self.initial_heading() + self.random.uniform(-self.heading_jitter, self.heading_jitter)
+        physics.place((0.0, 0.0), float(frames.yaw_from_heading(heading)), self.initial_speed())
+        self.stopped = None
+        self._records = []
+        self.last_observation = None
+
+    def before_step(self, action, physics):
+        action = np.asarray(action, dtype=float)
+        if action.shape != (2,) or not np.all(np.isfinite(action)):
+            raise ValueError(f"{self.name}: action must be 2 finite numbers [rudder, sail], got {action}")
+        physics.set_control(action)
+
+    def after_step(self, physics):
+        self._records.append(self.record(physics))
+
+    def record(self, physics) -> dict:
+        """What ``summarise`` needs from one step (our frames, SI)."""
+        body = physics.body_velocity()
+        return {"t": physics.time(), "position": np.array(physics.position()[:2]),
+                "heading": physics.heading(), "heel": physics.heel(),
+                "roll_rate": float(physics.angular_velocity()[0]), "surge": float(body[0]),
+                "course": physics.course(), "speed": physics.speed_over_ground()}
+
+    def action_spec(self, physics):
+        low, high = action_bounds(physics)
+        return specs.BoundedArray((2,), np.float64, low, high, name="rudder_sail")
+
+    def get_observation(self, physics):
+        obs = physics.observation() if hasattr(physics, "observation") else measure(physics)
+        for key, value in self.references(physics).items():
+            obs[key] = np.asarray(value, dtype=np.float64)
+        self.last_observation = obs
+        return obs
+
+    def observation_spec(self, physics):
+        return _spec_of(self.get_observation(physics))
+
+    def get_reward(self, physics):
+        # dm_control asks for the reward before the observation: measure the current state
+        return float(sum(self.reward_terms(physics, self.get_observation(physics)).values()))
+
+    def get_termination(self, physics):
+        if getattr(physics, "stop_reason", None):
+            return 0.0
+        return None
+
+    def metrics(self) -> dict:
+        out = self.summarise(self._records) if self._records else {}
+        out["stopped"] = self.stopped
+        out["duration"] = self._records[-1]["t"] if self._records else 0.0
+        return out
+
+
+def action_bounds(physics):
+    """(low, high) of [rudder, sail] for any world."""
+    model = getattr(physics, "model", None)
+    if model is not None and hasattr(model, "actuator_ctrlrange"):
+        low, high = np.asarray(model.actuator_ctrlrange).T
+        return low.astype(float), high.astype(float)
+    return physics.action_bounds()
+
+
+def _spec_of(observation):
+    out = OrderedDict()
+    for key, value in observation.items():
+        if isinstance(value, dict):
+            out[key] = _spec_of(value)
+        else:
+            out[key] = specs.Array(np.shape(value), np.float64, name=key)
+    return out
+
+
+def wrap(angle: float) -> float:
+    return float(frames.wrap_angle(angle))
+
+
+def amplitude(values) -> float:
+    """Half the peak-to-peak of a signal."""
+    values = np.asarray(values, dtype=float)
+    return float(0.5 * (values.max() - values.min())) if values.size else float("nan")

@@ -1,0 +1,184 @@
+"""Position keeping around a buoy: Viel, Vautier, Wan & Jaulin, §5 (cases 1-6).
+
+Reach the target p_T = (0, 0) and stay near it for 200 s. The target area is the circle of
+radius d_T = 7 m, the pre-arrival area the ring out to d_M = 14 m (§4.1, §5.1).
+
+Observation: the sailing observation (:mod:`sailmujoco.tasks.sailing`) plus
+``target_position`` (2,) m, world x east, y north. Action: ``[rudder, sail]`` rad (ours).
+Reward terms: ``distance`` = -d / d_T. Metrics: ``entered_at`` (s, first time d < d_T; nan if
+never), ``max_distance_after_entry`` and ``mean_distance_after_entry`` (m; the paper: stays
+below 6.4 m), ``final_distance`` (m).
+
+Wind cases (§5.1; psi_tw = pi/2 in Viel's x east / y north frame: the wind blows towards the
+north, i.e. comes from compass 180 deg):
+
+====  ========================  ==============================
+case  a_tw (m/s)                psi_tw (rad)
+====  ========================  ==============================
+1     10                        pi/2
+2     5                         pi/2
+3     5 sin(2 pi t) + 10        pi/2
+4     10                        pi/12 sin(2 pi t) + pi/2
+5     5 sin(2 pi t) + 10        pi/12 sin(2 pi t) + pi/2
+6     5 sin(2 pi t) + 10        pi/6 sin(2 pi t) + pi/2
+====  ========================  ==============================
+
+Viel's a_tw carries no height; we give it as the mean wind at 10 m of our log profile. The
+oscillations are the paper's, at 1 Hz (t in seconds), including their sign: psi_tw grows
+counter-clockwise, so a compass bearing it *comes from* shrinks by the same amount.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..forces.wind import WindConfig
+from ..physics import SimulationStopped
+from .base import SailTask
+
+# case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
+CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
+         4: (10.0, 0.0, math.pi / 12), 5: (10.0, 5.0, math.pi / 12), 6: (10.0, 5.0, math.pi / 6)}
+
+
+class PositionKeeping(SailTask):
+    """Viel's position keeping, wind ``case`` 1-6; the boat starts at ``start`` (m)."""
+
+    name = "position_keeping"
+    duration = 200.0
+
+    def __init__(self, seed=None, case: int = 1, start=(-30.0, 40.0), target=(0.0, 0.0),
+                 d_target: float = 7.0, d_prearrival: float = 14.0, **kwargs):
+        super().__init__(seed, **kwargs)
+        if case not in CASES:
+            raise ValueError(f"position_keeping: case must be one of {sorted(CASES)}, got {case!r}")
+        self.case = case
+        self.start = np.asarray(start, dtype=float)
+        self.target = np.asarray(target, dtype=float)
+        self.d_target = float(d_target)
+        self.d_prearrival = float(d_prearrival)
+
+    def wind(self):
+        speed, speed_osc, dir_osc = CASES[self.case]
+        return WindConfig(speed=speed, direction_from=math.pi, gusts=False, wander=False,
+                          speed_oscillation=speed_osc, direction_oscillation=-dir_osc,
+                          oscillation_frequency=1.0 if (speed_osc or dir_osc) else 0.0,
+                          seed=0 if self.seed is None else self.seed)
+
+    def initialize_episode(self, physics):
+        super().initialize_episode(physics)
+        heading = self.random.uniform(-math.pi, math.pi)
+        from .. import frames
+
+        physics.place(tuple(self.start), float(frames.yaw_from_heading(heading)), 0.5)
+
+    def references(self, physics):
+        return {"target_position": self.target}
+
+    def reward_terms(self, physics, observation):
+        d = float(np.linalg.norm(observation["position"] - self.target))
+        return {"distance": -d / self.d_target}
+
+    def summarise(self, records):
+        t = np.array([r["t"] for r in records])
+        d = np.array([np.linalg.norm(r["position"] - self.target) for r in records])
+        inside = np.nonzero(d < self.d_target)[0]
+        out = {"final_distance": float(d[-1]), "min_distance": float(d.min())}
+        if inside.size:
+            after = d[inside[0]:]
+            out.update(entered_at=float(t[inside[0]]),
+                       max_distance_after_entry=float(after.max()),
+                       mean_distance_after_entry=float(after.mean()))
+        else:
+            out.update(entered_at=float("nan"), max_distance_after_entry=float("nan"),
+                       mean_distance_after_entry=float("nan"))
+        return out
+
+
+class VielPhysics:
+    """Viel's 3-DOF world (:class:`sailmujoco.reference.viel.VielWorld`) with the accessors and
+    the dm_control Physics methods the tasks use. Heel, pitch and their rates are zero."""
+
+    legacy_step = False
+
+    def __init__(self, world, timestep: float = 0.05):
+        self.world = world
+        self._dt = timestep
+        self._control = np.zeros(2)
+        self.stop_reason = None
+
+    # dm_control Physics
+    def step(self, n_sub_steps=1):
+        if self.stop_reason:
+            raise SimulationStopped(self.stop_reason, self.world.time)
+        try:
+            self.world.step(self._control, n_sub_steps * self._dt)
+        except (FloatingPointError, ValueError) as err:
+            self.stop_reason = f"non-finite state ({err})"
+            raise SimulationStopped(self.stop_reason, self.world.time) from None
+
+    def time(self):
+        return self.world.time
+
+    def timestep(self):
+        return self._dt
+
+    def set_control(self, control):
+        control = np.asarray(control, dtype=float)
+        if control.shape != (2,) or not np.all(np.isfinite(control)):
+            raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
+        self._control = control.copy()
+
+    def reset(self):
+        self.world.reset()
+        self._control = np.zeros(2)
+        self.stop_reason = None
+
+    def after_reset(self):
+        pass
+
+    def reset_context(self):
+        from dm_control.rl.control import Physics
+
+        return Physics.reset_context(self)
+
+    def action_bounds(self):
+        p = self.world.params
+        high = np.array([p.rudder_max, p.sail_max])
+        return -high, high
+
+    def place(self, position=(0.0, 0.0), yaw: float = 0.0, surge: float = 0.0):
+        self.world.reset(state=[position[0], position[1], yaw, surge, 0.0, 0.0])
+
+    # what the tasks read
+    def observation(self):
+        from ..reference.viel import observation_from_world
+
+        return observation_from_world(self.world)
+
+    def position(self):
+        return np.array([*self.world.position(), 0.0])
+
+    def heading(self):
+        return self.world.heading()
+
+    def heel(self):
+        return 0.0
+
+    def body_velocity(self):
+        return np.array([self.world.forward_speed(), self.world.sway_speed(), 0.0])
+
+    def angular_velocity(self):
+        return np.array([0.0, 0.0, self.world.yaw_rate()])
+
+    def ground_velocity(self):
+        return self.world.velocity()
+
+    def course(self):
+        ve, vn = self.world.velocity()
+        return float(math.atan2(vn, ve))
+
+    def speed_over_ground(self):
+        return float(np.hypot(*self.world.velocity()))

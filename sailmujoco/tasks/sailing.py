@@ -1,0 +1,221 @@
+"""Sailing tasks: hold a heading, hold a course, beam reach in a blow, a speed trial.
+
+Observation (all tasks): the dict of :func:`sailmujoco.tasks.base.measure`,
+
+======================  =====  ===================================================
+key                     unit   frame / meaning
+======================  =====  ===================================================
+position                m      world x east, y north (GPS)
+velocity                m/s    world east, north (GPS)
+heading                 rad    compass, clockwise from north
+heel                    rad    positive starboard down
+roll_rate, yaw_rate     rad/s  body x, body z (yaw_rate positive turning to port)
+apparent_wind_angle     rad    masthead, positive from starboard
+apparent_wind_speed     m/s    masthead, body x-y plane
+true_state              -      full state for full-state controllers (controllers/base.py)
+======================  =====  ===================================================
+
+plus each task's references below. Action: ``[rudder, sail]`` in rad, positive trailing edge
+to port (a positive rudder turns the boat to port), bounded by the actuator saturations.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .. import frames
+from ..forces.wind import WindConfig
+from .base import SailTask, amplitude, wrap
+
+
+class HeadingHold(SailTask):
+    """Hold a compass heading in a steady, gusty wind.
+
+    Reference: ``desired_heading`` (rad, compass). Reward terms: ``heading`` = -(e/pi)^2 with e
+    the heading error, ``rudder`` = -0.01 (sigma/0.6)^2. Metrics: ``heading_error_rms`` (rad),
+    ``mean_surge`` (m/s), ``heel_amplitude`` (rad).
+    """
+
+    name = "heading_hold"
+    duration = 60.0
+
+    def __init__(self, seed=None, desired_heading_deg: float = 0.0, wind_speed: float = 6.0,
+                 wind_from_deg: float = 80.0, **kwargs):
+        super().__init__(seed, **kwargs)
+        self.desired_heading = math.radians(desired_heading_deg)
+        self.wind_speed = wind_speed
+        self.wind_from = math.radians(wind_from_deg)
+
+    def wind(self):
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from,
+                          seed=0 if self.seed is None else self.seed)
+
+    def initial_heading(self):
+        return self.desired_heading
+
+    def initial_speed(self):
+        return 1.0
+
+    def references(self, physics):
+        return {"desired_heading": self.desired_heading}
+
+    def reward_terms(self, physics, observation):
+        e = wrap(float(observation["heading"]) - self.desired_heading)
+        rudder = float(observation["true_state"]["rudder"])
+        return {"heading": -(e / math.pi) ** 2, "rudder": -0.01 * (rudder / 0.6) ** 2}
+
+    def summarise(self, records):
+        errors = np.array([wrap(r["heading"] - self.desired_heading) for r in records])
+        return {"heading_error_rms": float(np.sqrt(np.mean(errors**2))),
+                "mean_surge": float(np.mean([r["surge"] for r in records])),
+                "heel_amplitude": amplitude([r["heel"] for r in records])}
+
+
+class CourseHold(SailTask):
+    """Wille (2016a) §4: close-hauled, U10 = 5 m/s, beta_w = 130 deg (from 310 deg), no current,
+    desired course 0 (north), 200 s.
+
+    Reference: ``desired_course`` (rad, compass). Reward terms: ``course`` = -(e/pi)^2 with e
+    the course-over-ground error. Metrics: ``drift_error`` = |atan(x/y)| (rad, x north, y east:
+    Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute), ``mean_surge`` (m/s),
+    ``north``, ``east`` (m).
+    """
+
+    name = "course_hold"
+    duration = 200.0
+
+    def __init__(self, seed=None, desired_course_deg: float = 0.0, wind_speed: float = 5.0,
+                 beta_w_deg: float = 130.0, **kwargs):
+        super().__init__(seed, **kwargs)
+        self.desired_course = math.radians(desired_course_deg)
+        self.wind_speed = wind_speed
+        self.wind_from = float(frames.direction_from_wille_beta_w(math.radians(beta_w_deg)))
+
+    def wind(self):
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from,
+                          seed=0 if self.seed is None else self.seed)
+
+    def initial_heading(self):
+        return self.desired_course
+
+    def initial_speed(self):
+        return 2.0
+
+    def references(self, physics):
+        return {"desired_course": self.desired_course}
+
+    def reward_terms(self, physics, observation):
+        ve, vn = observation["velocity"]
+        course = math.atan2(ve, vn)  # compass
+        return {"course": -(wrap(course - self.desired_course) / math.pi) ** 2}
+
+    def summarise(self, records):
+        east, north = records[-1]["position"] - records[0]["position"]
+        along = north * math.cos(self.desired_course) + east * math.sin(self.desired_course)
+        across = -north * math.sin(self.desired_course) + east * math.cos(self.desired_course)
+        courses = np.array([wrap(frames.heading_from_yaw(r["course"]) - self.desired_course)
+                            for r in records if r["speed"] > 0.2])
+        return {"drift_error": float(abs(math.atan2(across, along))),
+                "course_error_mean": float(np.mean(np.abs(courses))) if courses.size else float("nan"),
+                "mean_surge": float(np.mean([r["surge"] for r in records])),
+                "north": float(north), "east": float(east)}
+
+
+class BeamReachRoll(SailTask):
+    """Wille (2016b) §5: beam reach, U10 = 10 m/s, 300 s, metrics over the last 50 s.
+
+    The boat sails perpendicular to the mean wind (wind from the west, desired heading north:
+    wind from port). Reference: ``desired_heading`` (rad). Reward terms: ``speed`` = u / U10,
+    ``heel`` = -(phi / 10 deg)^2. Metrics: ``roll_amplitude`` (rad, half peak-to-peak),
+    ``max_roll_rate`` (rad/s), ``mean_surge`` (m/s), ``mean_heel`` (rad).
+    """
+
+    name = "beam_reach_roll"
+    duration = 300.0
+    window = 50.0
+
+    def __init__(self, seed=None, wind_speed: float = 10.0, desired_heading_deg: float = 0.0,
+                 **kwargs):
+        super().__init__(seed, **kwargs)
+        self.wind_speed = wind_speed
+        self.desired_heading = math.radians(desired_heading_deg)
+
+    def wind(self):
+        return WindConfig(speed=self.wind_speed, direction_from=self.desired_heading - math.pi / 2,
+                          seed=0 if self.seed is None else self.seed)
+
+    def initial_heading(self):
+        return self.desired_heading
+
+    def initial_speed(self):
+        return 3.0
+
+    def references(self, physics):
+        return {"desired_heading": self.desired_heading}
+
+    def reward_terms(self, physics, observation):
+        heel = float(observation["heel"])
+        return {"speed": float(observation["true_state"]["u"]) / self.wind_speed,
+                "heel": -(heel / math.radians(10.0)) ** 2}
+
+    def summarise(self, records):
+        end = records[-1]["t"]
+        last = [r for r in records if r["t"] >= end - self.window]
+        return {"roll_amplitude": amplitude([r["heel"] for r in last]),
+                "max_roll_rate": float(max(abs(r["roll_rate"]) for r in last)),
+                "mean_surge": float(np.mean([r["surge"] for r in last])),
+                "mean_heel": float(np.mean([r["heel"] for r in last]))}
+
+
+class SpeedTrial(SailTask):
+    """Saoud (2015) Fig. 6: true wind 4 m/s whose angle in the body frame (the direction it
+    blows *to*, counter-clockwise, Saoud's NWU) is 10, 45 and 80 deg over 0-20, 20-40 and
+    40-60 s, heading held at zero (north).
+
+    With the boat heading north, a wind blowing towards +a (ccw) comes from compass
+    180 - a: 170, 135 and 100 deg. Reference: ``desired_heading`` = 0. Reward terms:
+    ``speed`` = |v| / 4 m/s. Metrics: ``mean_speed_<a>`` (m/s) and ``mean_heel_<a>`` (rad) over the
+    last 10 s of each segment, ``max_heel`` (rad).
+    """
+
+    name = "speed_trial"
+    duration = 60.0
+    segments = ((0.0, 10.0), (20.0, 45.0), (40.0, 80.0))  # (start s, wind angle deg)
+
+    def __init__(self, seed=None, wind_speed: float = 4.0, **kwargs):
+        super().__init__(seed, **kwargs)
+        self.wind_speed = wind_speed
+
+    @staticmethod
+    def wind_from(angle_deg: float) -> float:
+        return math.radians(180.0 - angle_deg)
+
+    def wind(self):
+        (_, a0), *rest = self.segments
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from(a0),
+                          gusts=False, wander=False, seed=0 if self.seed is None else self.seed,
+                          direction_schedule=tuple((t, self.wind_from(a)) for t, a in rest))
+
+    def initial_heading(self):
+        return 0.0
+
+    def initial_speed(self):
+        return 0.5
+
+    def references(self, physics):
+        return {"desired_heading": 0.0}
+
+    def reward_terms(self, physics, observation):
+        return {"speed": float(np.linalg.norm(observation["velocity"])) / self.wind_speed}
+
+    def summarise(self, records):
+        out = {"max_heel": float(max(abs(r["heel"]) for r in records))}
+        ends = [t for t, _ in self.segments[1:]] + [self.duration]
+        for (start, angle), end in zip(self.segments, ends, strict=True):
+            window = [r for r in records if end - 10.0 <= r["t"] <= end + 1e-9]
+            if window:
+                out[f"mean_speed_{angle:g}"] = float(np.mean([r["speed"] for r in window]))
+                out[f"mean_heel_{angle:g}"] = float(np.mean([r["heel"] for r in window]))
+        return out
