@@ -83,7 +83,7 @@ class Wille4DOF:
 
     def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
                  wind: WindConfig | None = None, switches=None, model: str = "paper",
-                 timestep: float = 0.005, rtol: float = 1e-7, atol: float = 1e-9):
+                 timestep: float = 0.005, rtol: float = 1e-6, atol: float = 1e-8):
         if model not in ("paper", "rigid"):
             raise ValueError(f"model must be 'paper' or 'rigid', got {model!r}")
         self.params = params if params is not None else get_boat(boat)
@@ -117,7 +117,7 @@ class Wille4DOF:
             state[3] = math.pi / 2
         self.state = np.asarray(state, float).copy()
         self._time = 0.0
-        self.control = np.zeros(2)
+        self.set_control(np.zeros(2))
         self.stop_reason = None
 
     def set_state_ours(self, *, position=(0.0, 0.0), yaw=0.0, heel=0.0, u=0.0, v=0.0, p=0.0,
@@ -143,6 +143,9 @@ class Wille4DOF:
         if control.shape != (2,) or not np.all(np.isfinite(control)):
             raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
         self.control = control.copy()
+        p = self.params
+        self._commands = (min(max(float(control[0]), -p.rudder.max_angle), p.rudder.max_angle),
+                          min(max(float(control[1]), -p.sail.max_angle), p.sail.max_angle))
 
     def step(self, nstep: int = 1) -> None:
         """Advance ``nstep`` base time steps holding the control (one solve_ivp call)."""
@@ -256,15 +259,15 @@ class Wille4DOF:
         return vws_u, vws_v
 
     def _saturated_commands(self):
-        p = self.params
-        sigma_d = float(np.clip(self.control[0], -p.rudder.max_angle, p.rudder.max_angle))
-        lam_d = float(np.clip(self.control[1], -p.sail.max_angle, p.sail.max_angle))
-        return sigma_d, lam_d
+        """The commands after the actuator saturations |sigma| <= sigma_sat, |lambda| <= lambda_sat."""
+        return self._commands
 
     def _rhs(self, t, state):
         p = self.params
         _, _, phi, psi, u, v, pr, r, sigma, lam = state
-        total = sum(self.forces(t, state).values())
+        total = np.zeros(5)
+        for term in self.forces(t, state).values():
+            total += term
         tau = total[:4].copy()
         cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
         if self.model == "paper":

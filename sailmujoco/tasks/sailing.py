@@ -213,7 +213,7 @@ class SpeedTrial(SailTask):
     def summarise(self, records):
         out = {"max_heel": float(max(abs(r["heel"]) for r in records))}
         ends = [t for t, _ in self.segments[1:]] + [self.duration]
-        for (start, angle), end in zip(self.segments, ends, strict=True):
+        for (_start, angle), end in zip(self.segments, ends, strict=True):
             window = [r for r in records if end - 10.0 <= r["t"] <= end + 1e-9]
             if window:
                 out[f"mean_speed_{angle:g}"] = float(np.mean([r["speed"] for r in window]))
