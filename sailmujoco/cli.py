@@ -102,6 +102,26 @@ def _plot_righting_curve(params, path: Path) -> None:
     plt.close(fig)
 
 
+def _sweep(args) -> int:
+    """Run a sweep file on the embedded cluster (or a Dask scheduler); write its table."""
+    from . import sweep
+
+    spec = sweep.load_spec(args.file)
+    out = Path(args.out or Path("results") / "sweeps" / spec["name"])
+    runs = sweep.expand(spec)
+    where = args.scheduler or f"embedded Dask cluster, {args.workers or 'all'} worker(s)"
+    print(f"sweep {spec['name']!r}: {len(runs)} runs ({spec['boat']}, {spec['task']}, "
+          f"{spec['world']}, {spec['controller']}) on {where} -> {out}")
+    table = sweep.run(spec, out, scheduler=args.scheduler, workers=args.workers,
+                      resume=args.resume, retries=args.retries, progress=not args.no_progress)
+    counts = table["status"].value_counts().to_dict()
+    print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
+    for metric in spec.get("metrics", [])[:5]:
+        print("  " + sweep.summarise(table, metric))
+    print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="sailmujoco",
@@ -115,6 +135,16 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--plots", nargs="?", const="results/check", default=None,
                        metavar="DIR", help="write righting-curve plots (default results/check)")
     check.set_defaults(func=_check)
+
+    sweep = sub.add_parser("sweep", help="run a parameter sweep described by a TOML file")
+    sweep.add_argument("file", help="sweep description (TOML), see sailmujoco.sweep")
+    sweep.add_argument("--out", help="results folder (default results/sweeps/<name>)")
+    sweep.add_argument("--scheduler", help="Dask scheduler address tcp://host:port, or 'serial'")
+    sweep.add_argument("--workers", type=int, help="worker processes of the embedded cluster")
+    sweep.add_argument("--resume", action="store_true", help="run only the missing runs")
+    sweep.add_argument("--retries", type=int, default=2, help="extra attempts of a failing run")
+    sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
+    sweep.set_defaults(func=_sweep)
     return parser
 
 

@@ -267,7 +267,7 @@ def saoud_robot(l_phi: float = 1.0) -> BoatParams:
     inertia = (2.5, 3.5, 2.2)
     omega_roll = math.sqrt(mass * c.GRAVITY * l_phi / (inertia[0] + 0.15 * inertia[0]))
     keel_span, keel_chord = 0.35, 0.16  # m, ours
-    rudder_span, rudder_chord = 0.18, 0.08  # m, ours
+    rudder_span, rudder_chord = 0.22, 0.10  # m, ours: the yaw authority a 1 m^2 rig needs
     return BoatParams(
         name="saoud_robot",
         mass=mass,
@@ -295,11 +295,11 @@ def saoud_robot(l_phi: float = 1.0) -> BoatParams:
                   thickness_ratio=0.09, x=0.0, z=-(draft + 0.45 * keel_span)),
         rudder=Foil(area=rudder_span * rudder_chord,
                     aspect_ratio=rudder_span**2 / (rudder_span * rudder_chord),
-                    thickness_ratio=0.15, x=-0.68, z=-(0.05 + 0.4 * rudder_span),
+                    thickness_ratio=0.15, x=-0.65, z=-(0.05 + 0.4 * rudder_span),
                     mass=0.1, max_angle=math.radians(35.0), time_constant=0.2),
         sail=Sail(area=1.0,  # S_s, Table I
                   aspect_ratio=5.0,  # the flat AR 5 sail of §VII-A
-                  mast_x=0.15,  # m, ours
+                  mast_x=0.25,  # m, ours: puts the CE 5 cm behind the keel's CP
                   ce_aft=2.0 / math.sqrt(5.0) / 3.0,  # foot / 3 of the AR 5 triangle
                   ce_height=ce_height,
                   mass=0.5,  # kg, ours: carbon boom and sail

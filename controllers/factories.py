@@ -1,0 +1,88 @@
+"""Named controllers for the sweep engine and the CLI (``sailmujoco.controllers`` entry points).
+
+Each factory takes the environment (for the boat's parameters and the control period) and
+keyword options, and returns a controller (``reset(seed)``, ``__call__(timestep)``).
+Angles in options end in ``_deg``.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .base import Composite
+from .pid import PIDHeading
+from .sail_laws import FixedSail, LeewardSail
+
+
+def _boat(env):
+    return getattr(env.physics, "params", None)
+
+
+def _rudder(env, kp=1.0, ki=0.05, kd=2.0):
+    """PID on the task's reference: desired heading, or the desired course as a heading."""
+    key = "desired_heading" if "desired_heading" in env.observation_spec() else "desired_course"
+    params = _boat(env)
+    max_angle = params.rudder.max_angle if hasattr(params, "rudder") else math.radians(35.0)
+    return PIDHeading(kp=kp, ki=ki, kd=kd, dt=env.control_timestep(), max_angle=max_angle,
+                      reference_key=key)
+
+
+def pid(env, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0, fraction: float = 0.5):
+    """PID heading controller with the leeward rule-of-thumb sail."""
+    return Composite(_rudder(env, kp, ki, kd), LeewardSail(fraction=fraction))
+
+
+def fixed_sail(env, sail_deg: float = 30.0, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0):
+    """PID heading controller with a fixed sail angle to leeward (brute-force searches)."""
+    return Composite(_rudder(env, kp, ki, kd), FixedSail(math.radians(sail_deg)))
+
+
+def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False):
+    """Wille (2016a) heading (or course) controller with the lambda100 sail of Wille (2016b)."""
+    from .wille import WilleHeading
+    from .wille_roll import WilleRollSail
+
+    params = _boat(env)
+    return Composite(WilleHeading(params, kp=kp, kd=kd, course=course),
+                     WilleRollSail(params, roll_control=False))
+
+
+def wille_course(env, kp: float = 3e5, kd: float = 1e6):
+    """Wille (2016a) course controller (eqs. 52-59) with the lambda100 sail."""
+    return wille_heading(env, kp=kp, kd=kd, course=True)
+
+
+def wille_roll(env, wind: str = "perfect", roll_control: bool = True, heel_desired_deg: float = 10.0):
+    """Wille (2016b) roll stabilisation sail with a PID heading rudder (the paper's runs hold a
+    beam-reach course)."""
+    from .wille_roll import WilleRollSail
+
+    return Composite(_rudder(env), WilleRollSail(_boat(env), wind=wind, roll_control=roll_control,
+                                                 heel_desired=math.radians(heel_desired_deg)))
+
+
+def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0):
+    """Saoud (2015) optimal sail angle (eq. 13 / 14) with a PID heading rudder."""
+    from .saoud import SaoudSail
+
+    params = _boat(env)
+    if l_phi is None:
+        l_phi = params.gm_t if hasattr(params, "gm_t") else 1.0
+    phi_max = None if phi_max_deg is None else math.radians(phi_max_deg)
+    return Composite(_rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max))
+
+
+def briere(env):
+    """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder."""
+    from .briere import BriereSail
+
+    return Composite(_rudder(env), BriereSail())
+
+
+def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float = 1.0,
+         k_v: float = 8.0, epsilon_deg: float = 5.0):
+    """Viel et al. position keeping (rudder 10-11, sail 12-17, speed 18, strategy 19-22)."""
+    from .viel import VielController
+
+    return VielController(d_M=d_M, d_T=d_T, k_s=k_s, k_p=k_p, k_v=k_v, epsilon_deg=epsilon_deg,
+                          dt=env.control_timestep())

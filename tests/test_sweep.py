@@ -1,0 +1,163 @@
+"""The sweep engine: Dask = serial, worker and driver deaths lose nothing, bad files exit 2."""
+
+import json
+import math
+import os
+import signal
+import subprocess
+import sys
+import threading
+import time
+
+import pandas as pd
+import pytest
+
+from sailmujoco import sweep
+from sailmujoco.cli import main
+
+SPEC = {
+    "name": "t",
+    "boat": "saoud_robot",
+    "task": "heading_hold",
+    "world": "mujoco",
+    "controller": "pid",
+    "duration": 8.0,
+    "seeds": [0, 1],
+    "metrics": ["mean_surge", "heading_error_rms"],
+    "options": {"env.hydrostatics": "geometric"},
+    "grid": {"task.wind_speed": [3.0, 6.0]},
+    "zip": {"task.wind_from_deg": [60.0, 120.0], "controller.kp": [0.8, 1.2]},
+}
+
+
+def _metrics(table):
+    cols = ["run_id", "mean_surge", "heading_error_rms"]
+    return table[cols].sort_values("run_id").reset_index(drop=True)
+
+
+def test_expand_crosses_grid_and_zips_axes():
+    runs = sweep.expand(sweep.validate(SPEC))
+    assert len(runs) == 2 * 2 * 2  # grid x zip rows x seeds
+    assert len({r["run_id"] for r in runs}) == len(runs)
+    pairs = {(r["task_options"]["wind_from_deg"], r["controller_options"]["kp"]) for r in runs}
+    assert pairs == {(60.0, 0.8), (120.0, 1.2)}  # zipped, not crossed
+
+
+def test_dask_local_cluster_equals_serial(tmp_path):
+    serial = sweep.run(SPEC, tmp_path / "serial", scheduler="serial", progress=False)
+    parallel = sweep.run(SPEC, tmp_path / "dask", workers=2, progress=False)
+    assert len(serial) == len(parallel) == 8
+    assert (serial["status"] == "ok").all() and (parallel["status"] == "ok").all()
+    pd.testing.assert_frame_equal(_metrics(serial), _metrics(parallel))  # bit for bit
+    table = pd.read_parquet(tmp_path / "dask" / "results.parquet")
+    assert set(table["run_id"]) == set(serial["run_id"])
+    assert table["mean_surge"].notna().all()
+
+
+def test_failures_are_recorded_and_the_sweep_goes_on(tmp_path):
+    spec = dict(SPEC, grid={}, seeds=[0], duration=20.0,
+                boat="saoud_robot", controller="fixed_sail",
+                zip={"controller.sail_deg": [30.0, 30.0, 20.0],
+                     "controller.kp": [1.0, float("nan"), 1.0],
+                     "task.wind_speed": [4.0, 4.0, 16.0]},
+                options={"env.hydrostatics": "paper", "boat.l_phi": 0.1})
+    table = sweep.run(spec, tmp_path, scheduler="serial", retries=1, progress=False)
+    by_kp = {(row["controller.kp"] if not math.isnan(row["controller.kp"]) else "nan",
+              row["task.wind_speed"]): row for _, row in table.iterrows()}
+    assert by_kp[(1.0, 4.0)]["status"] == "ok"
+    nan_run = by_kp[("nan", 4.0)]
+    assert nan_run["status"] == "failed" and "finite" in nan_run["error"]
+    record = json.loads(next((tmp_path / "runs").glob(f"{nan_run['run_id']}.json")).read_text())
+    assert record["attempts"] == 2  # retried once, then recorded
+    capsized = by_kp[(1.0, 16.0)]
+    assert capsized["status"] == "stopped" and "capsized" in capsized["error"]
+
+
+def test_killing_a_worker_loses_and_duplicates_nothing(tmp_path):
+    from dask.distributed import Client, LocalCluster
+
+    spec = dict(SPEC, duration=30.0, seeds=[0, 1, 2], grid={"task.wind_speed": [3.0, 5.0]})
+    n_runs = len(sweep.expand(sweep.validate(spec)))
+    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                      dashboard_address=None) as cluster, Client(cluster) as client:
+        result = {}
+        thread = threading.Thread(target=lambda: result.update(
+            table=sweep.run(spec, tmp_path, scheduler=cluster.scheduler_address, progress=False)))
+        thread.start()
+        runs_dir = tmp_path / "runs"
+        deadline = time.time() + 120
+        while time.time() < deadline and len(list(runs_dir.glob("*.json"))) < 2:
+            time.sleep(0.05)
+        assert len(list(runs_dir.glob("*.json"))) < n_runs, "sweep finished before the kill"
+        pids = client.run(os.getpid)
+        os.kill(next(iter(pids.values())), signal.SIGKILL)  # a worker dies mid-sweep
+        thread.join(timeout=300)
+    table = result["table"]
+    assert len(table) == n_runs
+    assert table["run_id"].is_unique
+    assert (table["status"] == "ok").all()
+
+
+def test_killing_the_driver_then_resume_runs_only_the_missing(tmp_path):
+    spec = dict(SPEC, duration=30.0, seeds=[0, 1, 2, 3], grid={"task.wind_speed": [3.0, 5.0]})
+    spec_file = tmp_path / "sweep.toml"
+    spec_file.write_text(_toml(spec))
+    out = tmp_path / "out"
+    cmd = [sys.executable, "-m", "sailmujoco.cli", "sweep", str(spec_file), "--out", str(out),
+           "--scheduler", "serial", "--no-progress"]
+    driver = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                              start_new_session=True)
+    deadline = time.time() + 120
+    while time.time() < deadline and len(list((out / "runs").glob("*.json"))) < 3:
+        time.sleep(0.05)
+    os.killpg(driver.pid, signal.SIGKILL)
+    driver.wait()
+    before = {p.name: p.read_text() for p in (out / "runs").glob("*.json")}
+    n_runs = len(sweep.expand(sweep.validate(spec)))
+    assert 3 <= len(before) < n_runs
+    assert main(["sweep", str(spec_file), "--out", str(out), "--scheduler", "serial",
+                 "--resume", "--no-progress"]) == 0
+    after = {p.name: p.read_text() for p in (out / "runs").glob("*.json")}
+    assert len(after) == n_runs
+    assert all(after[name] == text for name, text in before.items())  # untouched
+    sessions = {json.loads(text)["session"] for name, text in after.items() if name not in before}
+    assert len(sessions) == 1 and not sessions & {json.loads(t)["session"] for t in before.values()}
+    assert len(pd.read_parquet(out / "results.parquet")) == n_runs
+
+
+def _toml(spec):
+    lines = []
+    for key in ("name", "boat", "task", "world", "controller"):
+        lines.append(f'{key} = "{spec[key]}"')
+    lines.append(f"duration = {spec['duration']}")
+    lines.append(f"seeds = {spec['seeds']}")
+    lines.append("metrics = [" + ", ".join(f'"{m}"' for m in spec["metrics"]) + "]")
+    for table in ("options", "grid", "zip"):
+        lines.append(f"[{table}]")
+        for key, value in spec[table].items():
+            lines.append(f'"{key}" = {json.dumps(value)}')
+    return "\n".join(lines) + "\n"
+
+
+@pytest.mark.parametrize("body,message", [
+    ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nspeed = 3\n',
+     "unknown key(s) ['speed']"),
+    ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
+     '[grid]\n"task.wind_speed" = []\n', "must be a non-empty list"),
+    ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nseeds = "0"\n',
+     "seeds must be a non-empty list of integers"),
+    ('boat = "dinghy"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n',
+     "boat = 'dinghy' is not one of: saoud_robot, wille_yacht"),
+    ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
+     '[grid]\n"task.wind_sped" = [1]\n', "unknown task option 'wind_sped'"),
+    ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
+     '[options]\n"boat.l_phi" = -1\n', "l_phi"),
+    ('boat = [unclosed\n', "does not parse as TOML"),
+])
+def test_bad_sweep_files_exit_2_with_one_clear_message(tmp_path, capsys, body, message):
+    path = tmp_path / "bad.toml"
+    path.write_text(body)
+    assert main(["sweep", str(path), "--out", str(tmp_path / "o")]) == 2
+    err = capsys.readouterr().err
+    assert message in err
+    assert err.count("\n") == 1  # one line
