@@ -61,15 +61,31 @@ def wille_roll(env, wind: str = "perfect", roll_control: bool = True, heel_desir
                                                  heel_desired=math.radians(heel_desired_deg)))
 
 
-def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0):
-    """Saoud (2015) optimal sail angle (eq. 13 / 14) with a PID heading rudder."""
-    from .saoud import SaoudSail
+def saoud_params(params):
+    """Saoud's Table I quantities for a boat: mass, sail area, air density and the heeling arm
+    h_s (sail CE above the CG). For saoud_robot at l_phi = 0.1 m this is Table I itself; at
+    l_phi = 1 m the 6-DOF robot's arm is 1.7 m (xml/saoud_robot/README.md)."""
+    from .saoud import SaoudParams
+
+    return SaoudParams(mass=params.mass, sail_area=params.sail.area, rho_air=params.rho_air,
+                       h_s=params.sail.ce_height - params.cg_z)
+
+
+def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
+          paper_numbers: bool = False):
+    """Saoud (2015) optimal sail angle (eq. 13 / 14) with a PID heading rudder.
+
+    By default the optimiser gets the boat's own mass, sail and heeling arm; with
+    ``paper_numbers`` it keeps Table I (h_s = 0.8 m) whatever the boat.
+    """
+    from .saoud import SaoudParams, SaoudSail
 
     params = _boat(env)
     if l_phi is None:
-        l_phi = params.gm_t if hasattr(params, "gm_t") else 1.0
+        l_phi = params.gm_t
     phi_max = None if phi_max_deg is None else math.radians(phi_max_deg)
-    return Composite(_rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max))
+    table = SaoudParams() if paper_numbers else saoud_params(params)
+    return Composite(_rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max, params=table))
 
 
 def briere(env):

@@ -10,7 +10,8 @@ Geometry of a foil section (one convention for all three foils)
 Angle of attack
     The fluid comes from d = -w. alpha = atan2(d.n, d.c), so alpha > 0 when the fluid comes
     from the +n side. This is Wille's alpha = -beta + pi (eqs. 28, 32, 35) written in the foil
-    frame, and Saoud's sin(alpha_s) = -v_as2/|v_as| (§IV).
+    frame. Saoud's angle (§IV) has the opposite sign, alpha = -alpha_s, because his sail angle
+    turns the other way (delta_s = -lambda, see controllers/saoud.py); the forces agree.
 Lift and drag
     F = q A (C_L (span x w_hat) + C_D w_hat), q = rho |w|^2 / 2 (Wille eqs. 21-22): drag along
     the flow, lift perpendicular to it, away from the side the fluid comes from.
