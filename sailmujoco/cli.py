@@ -122,6 +122,47 @@ def _sweep(args) -> int:
     return 0
 
 
+def _floats(text: str) -> list[float]:
+    """'2,4,6' or 'start:stop:step' (stop included) -> floats."""
+    if ":" in text:
+        start, stop, step = (float(v) for v in text.split(":"))
+        return [float(v) for v in np.arange(start, stop + 1e-9, step)]
+    return [float(v) for v in text.split(",")]
+
+
+def _polar(args) -> int:
+    """Polar diagram of a boat and sail law (and comparisons), PNG + CSV."""
+    from . import polar
+    from .params import get_boat
+
+    get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    out = Path(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
+    out.mkdir(parents=True, exist_ok=True)
+    names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
+    frames = {}
+    for name in names:
+        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
+              f"({args.world}, {args.duration:g} s per point)")
+        frames[name] = polar.compute(args.boat, name, out, tws=args.tws, twa=args.twa,
+                                     world=args.world, duration=args.duration,
+                                     scheduler=args.scheduler, workers=args.workers,
+                                     progress=not args.no_progress)
+        frames[name].to_csv(out / f"polar_{name}.csv", index=False)
+    main_frame = frames[args.controller]
+    png = out / f"polar_{args.controller}.png"
+    polar.plot_polar(main_frame, png, f"{args.boat}, {args.controller} ({args.world})")
+    for tws, best in polar.best_vmg(main_frame).items():
+        (au, vu), (ad, vd) = best["upwind"], best["downwind"]
+        print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
+              f"downwind {vd:.2f} m/s at {ad:g} deg")
+    print(f"wrote {png} and {out / f'polar_{args.controller}.csv'}")
+    if len(frames) > 1:
+        compare = out / "compare.png"
+        polar.plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
+        print(f"wrote {compare}")
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="sailmujoco",
@@ -145,6 +186,24 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--retries", type=int, default=2, help="extra attempts of a failing run")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
     sweep.set_defaults(func=_sweep)
+
+    polar = sub.add_parser("polar", help="polar diagram (speed vs true wind angle) of a boat")
+    polar.add_argument("boat")
+    polar.add_argument("--controller", default="saoud",
+                       help="sail law + heading rudder by name (saoud, briere, pid, best, ...)")
+    polar.add_argument("--compare", help="other controllers to compare, comma separated "
+                                         "('best' = brute-force fixed-sail vel_max)")
+    polar.add_argument("--world", default="mujoco", choices=("mujoco", "paper"))
+    polar.add_argument("--tws", type=_floats, default=[2.0, 4.0, 6.0],
+                       help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
+    polar.add_argument("--twa", type=_floats, default=[float(a) for a in range(30, 181, 15)],
+                       help="true wind angles, deg: '30:180:15'")
+    polar.add_argument("--duration", type=float, default=60.0, help="seconds per point")
+    polar.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
+    polar.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
+    polar.add_argument("--workers", type=int)
+    polar.add_argument("--no-progress", action="store_true")
+    polar.set_defaults(func=_polar)
     return parser
 
 

@@ -35,22 +35,26 @@ class HeadingHold(SailTask):
 
     Reference: ``desired_heading`` (rad, compass). Reward terms: ``heading`` = -(e/pi)^2 with e
     the heading error, ``rudder`` = -0.01 (sigma/0.6)^2. Metrics: ``heading_error_rms`` (rad),
-    ``mean_surge`` (m/s), ``heel_amplitude`` (rad).
+    ``mean_surge`` (m/s), ``heel_amplitude`` (rad), and over the last ``steady_window`` seconds
+    ``steady_speed`` (speed over ground, m/s) and ``steady_heel`` (rad): a polar point.
     """
 
     name = "heading_hold"
     duration = 60.0
 
     def __init__(self, seed=None, desired_heading_deg: float = 0.0, wind_speed: float = 6.0,
-                 wind_from_deg: float = 80.0, **kwargs):
+                 wind_from_deg: float = 80.0, gusts: bool = True, wander: bool = True,
+                 steady_window: float = 20.0, **kwargs):
         super().__init__(seed, **kwargs)
         self.desired_heading = math.radians(desired_heading_deg)
         self.wind_speed = wind_speed
         self.wind_from = math.radians(wind_from_deg)
+        self.gusts, self.wander = gusts, wander
+        self.steady_window = steady_window
 
     def wind(self):
-        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from,
-                          seed=0 if self.seed is None else self.seed)
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
+                          wander=self.wander, seed=0 if self.seed is None else self.seed)
 
     def initial_heading(self):
         return self.desired_heading
@@ -68,9 +72,12 @@ class HeadingHold(SailTask):
 
     def summarise(self, records):
         errors = np.array([wrap(r["heading"] - self.desired_heading) for r in records])
+        last = [r for r in records if r["t"] >= records[-1]["t"] - self.steady_window]
         return {"heading_error_rms": float(np.sqrt(np.mean(errors**2))),
                 "mean_surge": float(np.mean([r["surge"] for r in records])),
-                "heel_amplitude": amplitude([r["heel"] for r in records])}
+                "heel_amplitude": amplitude([r["heel"] for r in records]),
+                "steady_speed": float(np.mean([r["speed"] for r in last])),
+                "steady_heel": float(np.mean([r["heel"] for r in last]))}
 
 
 class CourseHold(SailTask):

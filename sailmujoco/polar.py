@@ -1,0 +1,136 @@
+"""Polar diagrams: steady boat speed over true wind speed x true wind angle, on the sweep engine.
+
+Each polar point is a ``heading_hold`` run in a steady wind (no gusts, no wander) with the
+wind coming from ``TWA`` off the starboard bow; the point's speed is the mean speed over
+ground in the last ``steady_window`` seconds. The best VMG upwind (max v cos TWA, TWA < 90)
+and downwind (max -v cos TWA, TWA > 90) are marked.
+
+``best`` is the brute-force polar (Saoud 2015 Fig. 7's vel_max): every fixed sail angle of a
+grid is sailed and the fastest steady speed kept, point by point.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from . import sweep
+
+DEFAULT_TWS = (2.0, 4.0, 6.0)
+DEFAULT_TWA = tuple(range(30, 181, 15))
+BEST_SAIL_DEG = tuple(range(5, 91, 5))
+
+
+def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
+               duration: float = 60.0, steady_window: float = 20.0, controller_grid=None,
+               options: dict | None = None) -> dict:
+    """The sweep description of one polar (TWS x TWA, heading north)."""
+    tws_axis, twa_axis = [], []
+    for s in tws:
+        for a in twa:
+            tws_axis.append(float(s))
+            twa_axis.append(float(a))
+    spec = {
+        "name": f"polar-{boat}-{controller}", "boat": boat, "task": "heading_hold",
+        "world": world, "controller": controller, "duration": float(duration), "seeds": [0],
+        "metrics": ["steady_speed", "steady_heel"],
+        "options": {"task.gusts": False, "task.wander": False, "task.desired_heading_deg": 0.0,
+                    "task.steady_window": float(steady_window), "task.heading_jitter_deg": 0.0,
+                    **(options or {})},
+        "zip": {"task.wind_speed": tws_axis, "task.wind_from_deg": twa_axis},
+        "grid": dict(controller_grid or {}),
+    }
+    return spec
+
+
+def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
+            world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
+            progress: bool = True, options: dict | None = None):
+    """Run a polar; returns a DataFrame with columns tws, twa, speed, heel (and status)."""
+    grid = {"controller.sail_deg": list(BEST_SAIL_DEG)} if controller == "best" else None
+    name = "fixed_sail" if controller == "best" else controller
+    spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
+                      options=options)
+    table = sweep.run(spec, Path(out) / f"sweep-{controller}", scheduler=scheduler, workers=workers,
+                      progress=progress)
+    table = table.rename(columns={"task.wind_speed": "tws", "task.wind_from_deg": "twa",
+                                  "steady_speed": "speed", "steady_heel": "heel"})
+    ok = table[table["status"] == "ok"]
+    if controller == "best":  # the fastest fixed sail at each point
+        idx = ok.groupby(["tws", "twa"])["speed"].idxmax()
+        best = ok.loc[idx].rename(columns={"controller.sail_deg": "sail_deg"})
+        return best[["tws", "twa", "speed", "heel", "sail_deg"]].sort_values(["tws", "twa"])
+    return ok[["tws", "twa", "speed", "heel"]].sort_values(["tws", "twa"])
+
+
+def best_vmg(frame):
+    """Per TWS: (twa, vmg) of the best upwind and downwind velocity made good."""
+    out = {}
+    for tws, group in frame.groupby("tws"):
+        twa = np.radians(group["twa"].to_numpy())
+        speed = group["speed"].to_numpy()
+        up = speed * np.cos(twa)
+        down = -speed * np.cos(twa)
+        iu, idn = int(np.argmax(up)), int(np.argmax(down))
+        out[tws] = {"upwind": (float(group["twa"].iloc[iu]), float(up[iu])),
+                    "downwind": (float(group["twa"].iloc[idn]), float(down[idn]))}
+    return out
+
+
+def plot_polar(frame, path, title: str) -> None:
+    """The classic polar: speed against TWA, one curve per TWS, best VMG marked."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig = plt.figure(figsize=(6.5, 6.5))
+    ax = fig.add_subplot(projection="polar")
+    ax.set_theta_zero_location("N")
+    ax.set_theta_direction(-1)
+    ax.set_thetamin(0)
+    ax.set_thetamax(180)
+    vmg = best_vmg(frame)
+    for tws, group in frame.groupby("tws"):
+        (line,) = ax.plot(np.radians(group["twa"]), group["speed"], "-o", ms=3,
+                          label=f"TWS {tws:g} m/s")
+        for kind, marker in (("upwind", "^"), ("downwind", "v")):
+            a, _ = vmg[tws][kind]
+            v = float(group.loc[group["twa"] == a, "speed"].iloc[0])
+            ax.plot([math.radians(a)], [v], marker, ms=10, color=line.get_color(),
+                    markeredgecolor="k")
+    ax.set_xlabel("true wind angle [deg]   (▲ best VMG upwind, ▼ downwind)")
+    ax.set_title(title + "\nboat speed [m/s]", fontsize=10)
+    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 0.0), fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
+
+
+def plot_comparison(frames: dict, path, title: str) -> None:
+    """Speed against TWA for several sail laws (one panel per TWS)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    tws_values = sorted(next(iter(frames.values()))["tws"].unique())
+    fig, axes = plt.subplots(1, len(tws_values), figsize=(4.2 * len(tws_values), 3.6),
+                             squeeze=False, sharey=False)
+    styles = {"best": dict(color="k", ls="--", label="best fixed sail (vel_max)")}
+    for ax, tws in zip(axes[0], tws_values, strict=True):
+        for name, frame in frames.items():
+            group = frame[frame["tws"] == tws]
+            style = styles.get(name, {"label": name})
+            ax.plot(group["twa"], group["speed"], marker="o", ms=3, **style)
+        ax.set_title(f"TWS {tws:g} m/s")
+        ax.set_xlabel("true wind angle [deg]")
+        ax.grid(alpha=0.3)
+    axes[0][0].set_ylabel("steady speed [m/s]")
+    axes[0][0].legend(fontsize=8)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+    plt.close(fig)
