@@ -32,6 +32,7 @@ import numpy as np
 
 from sailmujoco.frames import wrap_angle
 
+from .sail_laws import keep_side_at_dead_run
 from .saoud import WIND_SOURCES, observed_apparent_wind, sail_angle_from_saoud
 
 # Saoud (2015) Fig. 5: (Theta_V, delta_s) in degrees; the first point is our reading, the last
@@ -76,5 +77,6 @@ class BriereSail:
     def __call__(self, observation: dict) -> float:
         theta_v, speed = observed_apparent_wind(observation, self.wind_source)
         if speed >= self.min_speed:
-            self.last_sail_angle = sail_angle_from_saoud(briere_sail_angle(theta_v))
+            self.last_sail_angle = keep_side_at_dead_run(
+                sail_angle_from_saoud(briere_sail_angle(theta_v)), self.last_sail_angle, theta_v)
         return self.last_sail_angle

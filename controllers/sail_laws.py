@@ -10,6 +10,21 @@ import math
 
 from .base import scalar
 
+DEAD_RUN_BAND = math.radians(10.0)
+
+
+def keep_side_at_dead_run(angle: float, last: float, wind_angle: float,
+                          band: float = DEAD_RUN_BAND) -> float:
+    """Hold the boom on its side while the apparent wind is within ``band`` of dead astern.
+
+    With the wind from astern both sides are leeward; a law that picks the side from the sign
+    of the wind angle gybes at every flicker of it and loses the drive. None of the papers
+    specifies this; every sail law here applies it (``wind_angle`` is AWA or Theta_V, rad).
+    """
+    if last != 0.0 and math.pi - abs(wind_angle) < band:
+        return math.copysign(abs(angle), last)
+    return angle
+
 
 class LeewardSail:
     """Sail angle = ``fraction`` of the apparent wind angle, clipped to [min, max], to leeward.
@@ -36,6 +51,12 @@ class FixedSail:
 
     def __init__(self, angle: float):
         self.angle = abs(angle)
+        self.last = 0.0
+
+    def reset(self, seed: int | None = None) -> None:
+        self.last = 0.0
 
     def __call__(self, observation: dict) -> float:
-        return math.copysign(self.angle, scalar(observation, "apparent_wind_angle"))
+        awa = scalar(observation, "apparent_wind_angle")
+        self.last = keep_side_at_dead_run(math.copysign(self.angle, awa), self.last, awa)
+        return self.last

@@ -75,6 +75,7 @@ from sailmujoco.forces.foil import saoud_normal_coefficient
 from sailmujoco.frames import saoud_theta_v, wrap_angle
 
 from .base import Composite, scalar
+from .sail_laws import keep_side_at_dead_run
 
 _DERIVATIVE_STEP = 1e-3  # largest step of the five-point derivative of f (error ~1e-11)
 _ROOT_TOL = 1e-12  # secant step tolerance on x = sin(alpha_s)
@@ -681,7 +682,8 @@ class SaoudSail:
         if speed < self.min_speed:
             return self.last_sail_angle
         self.last_optimum = optimal_sail(theta_v, speed, self.l_phi, self.phi_max, self.params)
-        self.last_sail_angle = sail_angle_from_saoud(self.last_optimum.delta)
+        self.last_sail_angle = keep_side_at_dead_run(sail_angle_from_saoud(self.last_optimum.delta),
+                                                     self.last_sail_angle, theta_v)
         return self.last_sail_angle
 
 

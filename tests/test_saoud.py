@@ -320,6 +320,7 @@ def test_sail_goes_to_leeward(source):
     for awa_deg in (30.0, 60.0, 90.0, 135.0, 170.0):  # wind from starboard, 30 to 170 deg off the bow
         awa = awa_deg * DEG
         flow = 6.0 * np.array([-math.cos(awa), math.sin(awa)])
+        law.reset()  # no memory of the side (see the dead-run test)
         lam = law(_observation(flow))
         opt = law.last_optimum
         assert opt.delta < 0.0 and opt.phi < 0.0 and lam > 0.0
@@ -329,7 +330,20 @@ def test_sail_goes_to_leeward(source):
         c_n = foil.saoud_normal_coefficient(math.sin(opt.alpha))
         force = SaoudParams().lambda_s * c_n * 36.0 * np.array([-math.sin(opt.delta), math.cos(opt.delta)])
         assert force[0] > 0.0 and force[1] > 0.0
+        law.reset()
         assert law(_observation(flow * np.array([1.0, -1.0]))) == pytest.approx(-lam, abs=1e-12)
+
+
+def test_sail_keeps_its_side_at_dead_run():
+    """Within 10 deg of dead astern the boom stays where it is when the wind angle flickers from
+    one side to the other; outside the band it follows the wind to leeward."""
+    law = SaoudSail(l_phi=0.5)
+    for awa_deg in (150.0, 175.0, -176.0, 178.0, -175.0):
+        awa = awa_deg * DEG
+        lam = law(_observation(6.0 * np.array([-math.cos(awa), math.sin(awa)])))
+        assert lam > 0.0  # started to port (wind from starboard), stays there
+    awa = -150.0 * DEG
+    assert law(_observation(6.0 * np.array([-math.cos(awa), math.sin(awa)]))) < 0.0
 
 
 def test_heel_projection(rng):
