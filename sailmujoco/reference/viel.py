@@ -208,7 +208,8 @@ class VielWorld:
         Table 1 and the actuator limits.
     wind : WindConfig or WindField
         The true wind; ``WindField(config).velocity(t, wind_height)`` gives (a_tw, psi_tw).
-        A WindField instance (or subclass) is used as given.
+        A WindField instance (or subclass) is used as given. Default: Viel §5.1 case 1,
+        10 m/s blowing north (from the south), no gusts, no wander.
     wind_height : float
         Height at which the wind is sampled [m] (the model has no height; 10 m is the
         reference height of ``WindConfig.speed``).
@@ -360,11 +361,8 @@ class VielWorld:
         return apparent_wind(a_tw, psi_tw, self._state[2], self._state[3])
 
     def wind_direction(self) -> float:
-        """Compass bearing the true wind comes from at ``wind_height`` now [rad]."""
-        w = self.wind.velocity(self._time, self.wind_height)
-        if math.hypot(w[0], w[1]) < 1e-12:
-            return float(wrap_angle(self.wind.config.direction_from))
-        return direction_from_psi_tw(math.atan2(w[1], w[0]))
+        """Compass bearing the true wind comes from now [rad] (mean, schedule, oscillation, wander)."""
+        return float(wrap_angle(self.wind.direction_from(self._time)))
 
     def wrenches(self) -> dict:
         """Body (FLU) wrenches (Fx, Fy, Fz, Mx, My, Mz) [N, N m] of the eq. 4-6 terms, now.
@@ -378,7 +376,8 @@ class VielWorld:
         delta_r, delta_s = viel_from_action(self._action)
         a_tw, psi_tw = self.true_wind()
         zero = np.zeros(6)
-        sail = np.array([f["g_s"] * math.sin(delta_s), 0, 0, 0, 0, f["g_s"] * (p.p6 - p.p7 * math.cos(delta_s))])
+        sail = np.array([f["g_s"] * math.sin(delta_s), 0, 0, 0, 0,
+                         f["g_s"] * (p.p6 - p.p7 * math.cos(delta_s))])
         rudder = np.array([-f["g_rv"] * p.p11 * math.sin(delta_r), -f["g_ru"] * p.p11 * math.cos(delta_r),
                            0, 0, 0, -f["g_rv"] * p.p8 * math.cos(delta_r)])
         damping = np.array([-p.p2 * v * abs(v), -p.p2 * u * abs(u), 0, 0, 0, -p.p3 * omega * v])
@@ -393,7 +392,7 @@ def observation_from_world(world: VielWorld, target=None) -> dict:
     Planar world: ``heel``, ``pitch``, roll and pitch rates, ``w`` are zero; no current
     (``u_r = u``); the apparent wind is Viel's §2.3 one (no masthead height in the model);
     ``wind_speed_10`` is the WindConfig's mean speed at 10 m and ``wind_direction`` the
-    bearing the wind comes from at ``wind_height`` (mean + wander; gusts do not turn it).
+    compass bearing the wind comes from (as in :mod:`sailmujoco.tasks.base`).
     ``target`` (x east, y north) [m], if given, becomes ``target_position``.
     """
     x, y, theta, v, u, omega = world.state
