@@ -9,9 +9,30 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .base import Composite
 from .pid import PIDHeading
 from .sail_laws import FixedSail, LeewardSail
+
+
+class Bounded:
+    """A controller whose action is clipped to the environment's action bounds (a controller
+    designed for another boat may ask for more rudder than this one has)."""
+
+    def __init__(self, controller, low, high):
+        self.controller = controller
+        self.low, self.high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
+
+    def reset(self, seed: int | None = None) -> None:
+        if hasattr(self.controller, "reset"):
+            self.controller.reset(seed)
+
+    def __call__(self, timestep) -> np.ndarray:
+        return np.clip(self.controller(timestep), self.low, self.high)
+
+    def __getattr__(self, name):
+        return getattr(self.controller, name)
 
 
 def _boat(env):
@@ -100,5 +121,7 @@ def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float 
     """Viel et al. position keeping (rudder 10-11, sail 12-17, speed 18, strategy 19-22)."""
     from .viel import VielController
 
-    return VielController(d_M=d_M, d_T=d_T, k_s=k_s, k_p=k_p, k_v=k_v, epsilon_deg=epsilon_deg,
-                          dt=env.control_timestep())
+    spec = env.action_spec()
+    return Bounded(VielController(d_M=d_M, d_T=d_T, k_s=k_s, k_p=k_p, k_v=k_v,
+                                  epsilon_deg=epsilon_deg, dt=env.control_timestep()),
+                   spec.minimum, spec.maximum)
