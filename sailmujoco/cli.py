@@ -163,6 +163,46 @@ def _polar(args) -> int:
     return 0
 
 
+STUDY_ENTRY_POINTS = "sailmujoco.studies"
+
+
+def _studies() -> dict:
+    """name -> entry point of every registered study (the library imports none directly)."""
+    from importlib import metadata
+
+    return {ep.name: ep for ep in metadata.entry_points(group=STUDY_ENTRY_POINTS)}
+
+
+STUDY_ORDER = ("saoud_fig3_fig4", "saoud_fig6", "saoud_fig7", "wille_course_table2",
+               "wille_roll_table1", "viel_fig3", "assumptions")
+
+
+def _study(args) -> int:
+    """Run one study, or all of them, into results/<study>/."""
+    studies = _studies()
+    order = [n for n in STUDY_ORDER if n in studies] + sorted(set(studies) - set(STUDY_ORDER))
+    names = order if args.name == "all" else [args.name]
+    unknown = [n for n in names if n not in studies]
+    if unknown:
+        raise ValueError(f"unknown study {unknown[0]!r}; known: all, {', '.join(order)}")
+    root = Path(args.out)
+    start = time.perf_counter()
+    for i, name in enumerate(names, 1):
+        out = root / name
+        out.mkdir(parents=True, exist_ok=True)
+        t0 = time.perf_counter()
+        print(f"[{i}/{len(names)}] study {name}{' (smoke)' if args.smoke else ''} -> {out}",
+              flush=True)
+        headline = studies[name].load()(out, smoke=args.smoke, workers=args.workers,
+                                        progress=not args.no_progress, video=args.video)
+        shown = ", ".join(f"{k} {v:.3g}" if isinstance(v, float) else f"{k} {v}"
+                          for k, v in list(headline.items())[:6])
+        print(f"      done in {time.perf_counter() - t0:.0f} s: {shown}", flush=True)
+    print(f"all done in {time.perf_counter() - start:.0f} s; reports: "
+          + ", ".join(str(root / n / "report.md") for n in names))
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(
         prog="sailmujoco",
@@ -204,6 +244,15 @@ def build_parser() -> argparse.ArgumentParser:
     polar.add_argument("--workers", type=int)
     polar.add_argument("--no-progress", action="store_true")
     polar.set_defaults(func=_polar)
+
+    study = sub.add_parser("study", help="regenerate a paper's figures and tables (or 'all')")
+    study.add_argument("name", help="study name, or 'all'")
+    study.add_argument("--smoke", action="store_true", help="short runs (under a minute)")
+    study.add_argument("--out", default="results", help="results root (default results/)")
+    study.add_argument("--workers", type=int, help="worker processes for the sweeps")
+    study.add_argument("--video", action="store_true", help="also record the main scenario")
+    study.add_argument("--no-progress", action="store_true")
+    study.set_defaults(func=_study)
     return parser
 
 

@@ -1,0 +1,153 @@
+"""What every study shares: running an episode, the Markdown report, progress.
+
+A study is a module of this package with::
+
+    NAME = "saoud_fig6"
+    TITLE = "..."
+    def run(out: Path, smoke: bool = False, workers: int | None = None,
+            progress: bool = True, video: bool = False) -> dict
+
+``run`` writes PNG figures, CSV data and ``report.md`` into ``out`` (results/<study>/) and
+returns the headline numbers (the tests assert on them in smoke mode). It is registered under
+the ``sailmujoco.studies`` entry points, so ``sailmujoco study NAME`` finds it.
+"""
+
+from __future__ import annotations
+
+import math
+import sys
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from sailmujoco import suite, sweep
+
+
+def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
+                controller_options: dict | None = None, **options):
+    """One episode; returns (metrics dict, per-step DataFrame, env).
+
+    ``controller`` is a registered name (see ``sailmujoco.sweep.controller_factories``) or a
+    callable ``factory(env) -> controller``. ``options`` go to :func:`sailmujoco.suite.load`.
+    """
+    env = suite.load(boat, task, world, seed=seed, **options)
+    if isinstance(controller, str):
+        policy = sweep.make_controller(controller, env, **(controller_options or {}))
+    else:
+        policy = controller(env)
+    if hasattr(policy, "reset"):
+        policy.reset(seed)
+    timestep = env.reset()
+    rows = [_row(timestep.observation)]
+    while not timestep.last():
+        timestep = env.step(policy(timestep))
+        rows.append(_row(timestep.observation))
+    return env.task.metrics(), pd.DataFrame(rows), env
+
+
+def _row(observation) -> dict:
+    ts = observation["true_state"]
+    return {"t": float(ts["time"]), "x": float(observation["position"][0]),
+            "y": float(observation["position"][1]), "heading": float(observation["heading"]),
+            "heel": float(observation["heel"]), "roll_rate": float(observation["roll_rate"]),
+            "yaw_rate": float(observation["yaw_rate"]), "u": float(ts["u"]), "v": float(ts["v"]),
+            "speed": float(np.linalg.norm(observation["velocity"])),
+            "rudder": float(ts["rudder"]), "sail": float(ts["sail"]),
+            "awa": float(observation["apparent_wind_angle"]),
+            "aws": float(observation["apparent_wind_speed"])}
+
+
+def relative_difference(ours, paper) -> float:
+    """(ours - paper) / |paper|; nan when either is not a number or the paper's is 0."""
+    if not isinstance(paper, (int, float)) or not isinstance(ours, (int, float)):
+        return float("nan")
+    if paper == 0 or not math.isfinite(paper) or not math.isfinite(ours):
+        return float("nan")
+    return (ours - paper) / abs(paper)
+
+
+@dataclass
+class Report:
+    """A Markdown report: paragraphs, tables of paper vs ours, figures."""
+
+    title: str
+    parts: list = field(default_factory=list)
+
+    def paragraph(self, text: str) -> None:
+        self.parts.append(text.strip() + "\n")
+
+    def table(self, rows: list[dict], columns: list[str] | None = None) -> None:
+        if not rows:
+            return
+        columns = columns or list(rows[0])
+        lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+        for row in rows:
+            lines.append("| " + " | ".join(_cell(row.get(c, "")) for c in columns) + " |")
+        self.parts.append("\n".join(lines) + "\n")
+
+    def comparison(self, rows: list[dict]) -> None:
+        """Rows of quantity / paper / world / ours / cause, with the relative difference."""
+        table = []
+        for row in rows:
+            diff = relative_difference(row["ours"], row.get("paper"))
+            flag = "" if not math.isfinite(diff) or abs(diff) <= 0.10 else " ⚠"
+            table.append({**row, "difference": "—" if not math.isfinite(diff)
+                          else f"{100 * diff:+.0f} %{flag}"})
+        self.table(table, ["quantity", "world", "paper", "ours", "difference", "cause"])
+
+    def figure(self, path: Path, caption: str) -> None:
+        self.parts.append(f"![{caption}]({Path(path).name})\n\n*{caption}*\n")
+
+    def write(self, out: Path) -> Path:
+        path = Path(out) / "report.md"
+        path.write_text(f"# {self.title}\n\n" + "\n".join(self.parts))
+        return path
+
+
+def _cell(value) -> str:
+    if value is None:
+        return "—"
+    if isinstance(value, float):
+        if not math.isfinite(value):
+            return "—"
+        return f"{value:.3g}"
+    return str(value).replace("|", "\\|")
+
+
+class Progress:
+    """A tqdm bar over a known number of simulations (silent when ``show`` is False)."""
+
+    def __init__(self, total: int, label: str, show: bool = True):
+        self.bar = None
+        if show:
+            from tqdm import tqdm
+
+            self.bar = tqdm(total=total, desc=label, unit="sim", file=sys.stderr,
+                            dynamic_ncols=True, leave=False)
+
+    def step(self, n: int = 1) -> None:
+        if self.bar is not None:
+            self.bar.update(n)
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.close()
+
+
+def setup_matplotlib():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcParams.update({"figure.dpi": 110, "axes.grid": True, "grid.alpha": 0.3,
+                         "legend.fontsize": 8})
+    return plt
+
+
+def timer():
+    start = time.perf_counter()
+    return lambda: time.perf_counter() - start
