@@ -35,6 +35,34 @@ class Bounded:
         return getattr(self.controller, name)
 
 
+class SheetFromAngle:
+    """Drive a sheeted sail with an angle law: the sheet is let out to the angle's magnitude.
+
+    A sheet only limits the boom (Wille 2016b §2.1): the wind sets the side, and an angle the
+    wind cannot hold (to windward, or closer than the wind allows) is not reached.
+    """
+
+    def __init__(self, law, params):
+        from sailmujoco.mjcf import sheet_length
+
+        self.law = law
+        self.length = lambda angle: float(sheet_length(params, abs(angle)))
+
+    def reset(self, seed: int | None = None) -> None:
+        if hasattr(self.law, "reset"):
+            self.law.reset(seed)
+
+    def __call__(self, observation) -> float:
+        return self.length(self.law(observation))
+
+
+def _composite(env, rudder, sail):
+    """Rudder + sail law; on a sheeted-sail boat the sail angle becomes a sheet length."""
+    if getattr(env.physics, "sail_mode", "actuated") == "sheeted":
+        sail = SheetFromAngle(sail, _boat(env))
+    return Composite(rudder, sail)
+
+
 def _boat(env):
     return getattr(env.physics, "params", None)
 
@@ -50,12 +78,12 @@ def _rudder(env, kp=1.0, ki=0.05, kd=2.0):
 
 def pid(env, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0, fraction: float = 0.5):
     """PID heading controller with the leeward rule-of-thumb sail."""
-    return Composite(_rudder(env, kp, ki, kd), LeewardSail(fraction=fraction))
+    return _composite(env, _rudder(env, kp, ki, kd), LeewardSail(fraction=fraction))
 
 
 def fixed_sail(env, sail_deg: float = 30.0, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0):
     """PID heading controller with a fixed sail angle to leeward (brute-force searches)."""
-    return Composite(_rudder(env, kp, ki, kd), FixedSail(math.radians(sail_deg)))
+    return _composite(env, _rudder(env, kp, ki, kd), FixedSail(math.radians(sail_deg)))
 
 
 def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False):
@@ -64,8 +92,8 @@ def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False):
     from .wille_roll import WilleRollSail
 
     params = _boat(env)
-    return Composite(WilleHeading(params, kp=kp, kd=kd, course=course),
-                     WilleRollSail(params, roll_control=False))
+    return _composite(env, WilleHeading(params, kp=kp, kd=kd, course=course),
+                      WilleRollSail(params, roll_control=False))
 
 
 def wille_course(env, kp: float = 3e5, kd: float = 1e6):
@@ -78,8 +106,8 @@ def wille_roll(env, wind: str = "perfect", roll_control: bool = True, heel_desir
     beam-reach course)."""
     from .wille_roll import WilleRollSail
 
-    return Composite(_rudder(env), WilleRollSail(_boat(env), wind=wind, roll_control=roll_control,
-                                                 heel_desired=math.radians(heel_desired_deg)))
+    return _composite(env, _rudder(env), WilleRollSail(_boat(env), wind=wind, roll_control=roll_control,
+                                                       heel_desired=math.radians(heel_desired_deg)))
 
 
 def saoud_params(params):
@@ -106,14 +134,14 @@ def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
         l_phi = params.gm_t
     phi_max = None if phi_max_deg is None else math.radians(phi_max_deg)
     table = SaoudParams() if paper_numbers else saoud_params(params)
-    return Composite(_rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max, params=table))
+    return _composite(env, _rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max, params=table))
 
 
 def briere(env):
     """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder."""
     from .briere import BriereSail
 
-    return Composite(_rudder(env), BriereSail())
+    return _composite(env, _rudder(env), BriereSail())
 
 
 def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float = 1.0,

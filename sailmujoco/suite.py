@@ -32,7 +32,8 @@ SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world 
 def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None,
          control_timestep: float = 0.1, time_limit: float | None = None,
          sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
-         paper_model: str = "paper", forces: ForceSwitches | None = None,
+         paper_model: str = "paper", sail_tangential: bool = True,
+         forces: ForceSwitches | None = None,
          boat_options: dict | None = None, **task_options) -> SailEnvironment:
     """Build an environment.
 
@@ -50,6 +51,8 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         MuJoCo world options (see :class:`sailmujoco.physics.BoatPhysics`).
     paper_model : {"paper", "rigid"}
         Wille 4-DOF variant (see :mod:`sailmujoco.reference.wille`).
+    sail_tangential : bool
+        Keep the sail's tangential force C_T (False: Saoud's Assumption 4 made true).
     boat_options : dict, optional
         Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
     task_options
@@ -65,7 +68,7 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     except TypeError as err:
         raise ValueError(f"bad option for task {task!r}: {err}") from None
     wind = the_task.wind()
-    switches = forces or ForceSwitches(hydrostatics=hydrostatics)
+    switches = forces or ForceSwitches(hydrostatics=hydrostatics, sail_tangential=sail_tangential)
     if world == "mujoco":
         physics = BoatPhysics.load(params=params, sail_mode=sail_mode, wind=wind, forces=switches,
                                    dofs=dofs)

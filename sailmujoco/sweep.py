@@ -60,7 +60,8 @@ from . import __version__
 TOP_KEYS = {"name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
             "options", "grid", "zip", "trajectory_rate"}
 NAMESPACES = ("env", "task", "boat", "controller")
-ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_model")
+ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_model",
+               "sail_tangential")
 ENTRY_POINTS = "sailmujoco.controllers"
 
 

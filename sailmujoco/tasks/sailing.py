@@ -44,8 +44,9 @@ class HeadingHold(SailTask):
 
     def __init__(self, seed=None, desired_heading_deg: float = 0.0, wind_speed: float = 6.0,
                  wind_from_deg: float = 80.0, gusts: bool = True, wander: bool = True,
-                 steady_window: float = 20.0, **kwargs):
+                 steady_window: float = 20.0, diagnostics: bool = False, **kwargs):
         super().__init__(seed, **kwargs)
+        self.diagnostics = diagnostics
         self.desired_heading = math.radians(desired_heading_deg)
         self.wind_speed = wind_speed
         self.wind_from = math.radians(wind_from_deg)
@@ -73,11 +74,71 @@ class HeadingHold(SailTask):
     def summarise(self, records):
         errors = np.array([wrap(r["heading"] - self.desired_heading) for r in records])
         last = [r for r in records if r["t"] >= records[-1]["t"] - self.steady_window]
-        return {"heading_error_rms": float(np.sqrt(np.mean(errors**2))),
-                "mean_surge": float(np.mean([r["surge"] for r in records])),
-                "heel_amplitude": amplitude([r["heel"] for r in records]),
-                "steady_speed": float(np.mean([r["speed"] for r in last])),
-                "steady_heel": float(np.mean([r["heel"] for r in last]))}
+        out = {"heading_error_rms": float(np.sqrt(np.mean(errors**2))),
+               "mean_surge": float(np.mean([r["surge"] for r in records])),
+               "heel_amplitude": amplitude([r["heel"] for r in records]),
+               "steady_speed": float(np.mean([r["speed"] for r in last])),
+               "steady_heel": float(np.mean([r["heel"] for r in last]))}
+        if self.diagnostics and "ct_cn" in records[-1]:
+            out.update(diagnostic_summary(last))
+        return out
+
+    def record(self, physics) -> dict:
+        row = super().record(physics)
+        if self.diagnostics and hasattr(physics, "sail_coefficients"):
+            row.update(diagnostic_record(physics))
+        return row
+
+
+def diagnostic_record(physics) -> dict:
+    """What the assumption study measures at one step of a MuJoCo boat (our frames, SI)."""
+    c_n, c_t = physics.sail_coefficients()
+    terms = physics.force_terms()
+    p = physics.params
+    rates = physics.angular_velocity()
+    ixx, iyy, izz = p.inertia
+    heel = physics.heel()
+    # MuJoCo applies the weight itself, at the CG: its roll moment about CO completes the
+    # restoring moment (buoyancy + weight) that the papers' g(eta) stands for
+    weight_body = physics.rotation().T @ np.array([0.0, 0.0, -p.mass * 9.81])
+    gravity_mx = -p.cg_z * weight_body[1]  # (r_G x F)_x with r_G = (cg_x, 0, cg_z)
+    restoring = terms["hydrostatics"][3] + gravity_mx
+    terms = dict(terms, hydrostatics=np.array([0, 0, 0, restoring, 0, 0]))
+    return {
+        "ct_cn": abs(c_t) / abs(c_n) if abs(c_n) > 0.05 else float("nan"),
+        "pitch": physics.pitch(), "heave": float(physics.position()[2]),
+        "drift": physics.drift_angle(), "keel_aoa": physics.angle_of_attack("keel"),
+        # roll moments about body x (N m) of each term
+        **{f"mx_{name}": float(terms[name][3]) for name in
+           ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass")},
+        # Saoud §III: (J33 - J22)/J11 w3^2 tan(phi), as a moment, against the restoring one
+        "omega3_term": (izz - iyy) * rates[2] ** 2 * math.tan(heel),
+        "restoring": float(restoring),
+    }
+
+
+def diagnostic_summary(rows: list[dict]) -> dict:
+    """Steady-window statistics of :func:`diagnostic_record` rows."""
+    def mean(key):
+        values = np.array([r[key] for r in rows], dtype=float)
+        values = values[np.isfinite(values)]
+        return float(values.mean()) if values.size else float("nan")
+
+    names = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass")  # hydrostatics
+    # here means buoyancy + weight, the restoring moment
+    magnitude = {n: float(np.mean([abs(r[f"mx_{n}"]) for r in rows])) for n in names}
+    total = sum(magnitude.values()) or float("nan")
+    return {
+        "ct_cn_ratio": mean("ct_cn"),
+        "pitch_amplitude": amplitude([r["pitch"] for r in rows]),
+        "heave_amplitude": amplitude([r["heave"] for r in rows]),
+        "mean_pitch": mean("pitch"), "mean_heave": mean("heave"),
+        "drift_angle": mean("drift"),
+        "keel_aoa": float(np.mean([abs(r["keel_aoa"]) for r in rows])),
+        **{f"roll_share_{n}": magnitude[n] / total for n in names},
+        "omega3_ratio": float(np.mean([abs(r["omega3_term"]) for r in rows])
+                              / max(np.mean([abs(r["restoring"]) for r in rows]), 1e-9)),
+    }
 
 
 class CourseHold(SailTask):
