@@ -83,3 +83,34 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
                                          model=paper_model))
     return SailEnvironment(physics, the_task, time_limit=time_limit or the_task.duration,
                            control_timestep=control_timestep, legacy_step=False)
+
+
+def rollout(env, controller):
+    """Run one episode of ``env`` with ``controller``; returns a pandas DataFrame, one row per
+    control step: t, x, y (m), heading, heel (rad) and heel_deg, roll_rate, yaw_rate (rad/s),
+    u, v, speed (m/s), rudder, sail (rad), awa (rad), aws (m/s)."""
+    import math
+
+    import numpy as np
+    import pandas as pd
+
+    def row(observation):
+        ts = observation["true_state"]
+        return {"t": float(ts["time"]), "x": float(observation["position"][0]),
+                "y": float(observation["position"][1]), "heading": float(observation["heading"]),
+                "heel": float(observation["heel"]), "heel_deg": math.degrees(float(observation["heel"])),
+                "roll_rate": float(observation["roll_rate"]), "yaw_rate": float(observation["yaw_rate"]),
+                "u": float(ts["u"]), "v": float(ts["v"]),
+                "speed": float(np.linalg.norm(observation["velocity"])),
+                "rudder": float(ts["rudder"]), "sail": float(ts["sail"]),
+                "awa": float(observation["apparent_wind_angle"]),
+                "aws": float(observation["apparent_wind_speed"])}
+
+    if hasattr(controller, "reset"):
+        controller.reset(env.task.seed)
+    timestep = env.reset()
+    rows = [row(timestep.observation)]
+    while not timestep.last():
+        timestep = env.step(controller(timestep))
+        rows.append(row(timestep.observation))
+    return pd.DataFrame(rows)

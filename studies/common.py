@@ -20,9 +20,6 @@ import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-import numpy as np
-import pandas as pd
-
 from sailmujoco import suite, sweep
 
 
@@ -38,26 +35,8 @@ def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
         policy = sweep.make_controller(controller, env, **(controller_options or {}))
     else:
         policy = controller(env)
-    if hasattr(policy, "reset"):
-        policy.reset(seed)
-    timestep = env.reset()
-    rows = [_row(timestep.observation)]
-    while not timestep.last():
-        timestep = env.step(policy(timestep))
-        rows.append(_row(timestep.observation))
-    return env.task.metrics(), pd.DataFrame(rows), env
-
-
-def _row(observation) -> dict:
-    ts = observation["true_state"]
-    return {"t": float(ts["time"]), "x": float(observation["position"][0]),
-            "y": float(observation["position"][1]), "heading": float(observation["heading"]),
-            "heel": float(observation["heel"]), "roll_rate": float(observation["roll_rate"]),
-            "yaw_rate": float(observation["yaw_rate"]), "u": float(ts["u"]), "v": float(ts["v"]),
-            "speed": float(np.linalg.norm(observation["velocity"])),
-            "rudder": float(ts["rudder"]), "sail": float(ts["sail"]),
-            "awa": float(observation["apparent_wind_angle"]),
-            "aws": float(observation["apparent_wind_speed"])}
+    trajectory = suite.rollout(env, policy)
+    return env.task.metrics(), trajectory, env
 
 
 def relative_difference(ours, paper) -> float:
