@@ -253,6 +253,10 @@ def build_parser() -> argparse.ArgumentParser:
     study.add_argument("--video", action="store_true", help="also record the main scenario")
     study.add_argument("--no-progress", action="store_true")
     study.set_defaults(func=_study)
+
+    from . import video
+
+    video.add_parser(sub)
     return parser
 
 

@@ -99,13 +99,15 @@ def _hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
         ring += [(x, b, h.freeboard)]
         rings.append(list(range(len(verts), len(verts) + len(ring))))
         verts += ring
+    # wound outward (positive signed volume), so back-face culling shows the outside; the
+    # ring wraps from the port deck edge to the starboard one, which closes the deck
     faces = []
     for a, b in zip(rings[:-1], rings[1:], strict=True):
         k = len(a)
         for i in range(k):
             j = (i + 1) % k
-            faces += [(a[i], b[i], b[j]), (a[i], b[j], a[j])]
-    for ring, flip in ((rings[0], False), (rings[-1], True)):
+            faces += [(a[i], b[j], b[i]), (a[i], a[j], b[j])]
+    for ring, flip in ((rings[0], True), (rings[-1], False)):
         for i in range(1, len(ring) - 1):
             tri = (ring[0], ring[i], ring[i + 1])
             faces.append(tri[::-1] if flip else tri)

@@ -1,0 +1,103 @@
+"""Offscreen rendering speed: frames per second at 640x480, with and without the overlays.
+
+Run: python benchmarks/render_speed.py [--width 640 --height 480 --frames 40 --camera follow]
+
+All in this run, on the platform MUJOCO_GL names (sailmujoco's default: EGL; Mesa's llvmpipe
+on a CPU machine), for one state of wille_yacht on a beam reach:
+
+* ``scene + wind arrow``: :class:`sailmujoco.video.SceneRenderer` (``mujoco.Renderer`` of the
+  display model, shadows and reflections off) with only the wind arrow added;
+* ``+ force arrows``: with the sail, keel and rudder force arrows;
+* ``+ force arrows + text``: with the PIL text box and legend too (what ``record`` draws);
+* ``record()``: the whole pipeline (simulation, drawing, H.264 encoding by ffmpeg), in video
+  frames per wall-clock second.
+
+Rendering on llvmpipe uses every core; on a shared machine the load average is printed with
+the result.
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+import os
+import tempfile
+import time
+from pathlib import Path
+
+from sailmujoco import suite, sweep, video
+
+
+def best_rates(calls: dict, frames: int, repeats: int) -> dict:
+    """Frames per second of each call: the fastest of ``repeats`` runs of ``frames`` calls,
+    the calls taking turns so that a change of machine load hits them alike."""
+    for fn in calls.values():  # warm up (shader compilation, texture upload)
+        for _ in range(3):
+            fn()
+    best = dict.fromkeys(calls, math.inf)
+    for _ in range(repeats):
+        for name, fn in calls.items():
+            start = time.perf_counter()
+            for _ in range(frames):
+                fn()
+            best[name] = min(best[name], time.perf_counter() - start)
+    return {name: frames / seconds for name, seconds in best.items()}
+
+
+def gl_renderer_name() -> str:
+    try:
+        from OpenGL import GL
+
+        return GL.glGetString(GL.GL_RENDERER).decode()
+    except Exception as err:  # informative only
+        return f"unknown ({type(err).__name__})"
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--width", type=int, default=640)
+    parser.add_argument("--height", type=int, default=480)
+    parser.add_argument("--frames", type=int, default=20, help="frames per timed run")
+    parser.add_argument("--repeats", type=int, default=5, help="timed runs per case (best kept)")
+    parser.add_argument("--camera", default="follow", choices=video.CAMERAS)
+    parser.add_argument("--seconds", type=float, default=4.0, help="simulated seconds for record()")
+    args = parser.parse_args()
+
+    env = suite.load("wille_yacht", "beam_reach_roll", seed=0)
+    policy = sweep.make_controller("pid", env)
+    policy.reset(0)
+    timestep = env.reset()
+    while env.physics.time() < 10.0 - 1e-9:
+        timestep = env.step(policy(timestep))
+    snap = video.snapshot_physics(env.physics)
+
+    renderers = {name: video.SceneRenderer(env.physics.params, args.width, args.height, args.camera,
+                                           forces=forces, overlay=overlay)
+                 for name, forces, overlay in (("scene + wind arrow", False, False),
+                                               ("+ force arrows", True, False),
+                                               ("+ force arrows + text", True, True))}
+    rates = best_rates({name: (lambda r=r: r.render(snap)) for name, r in renderers.items()},
+                       args.frames, args.repeats)
+    platform = gl_renderer_name()  # the last renderer's context is current
+    for renderer in renderers.values():
+        renderer.close()
+
+    with tempfile.TemporaryDirectory() as tmp:
+        rec = video.record("wille_yacht", "beam_reach_roll", "pid", Path(tmp) / "bench.mp4",
+                           seconds=args.seconds, width=args.width, height=args.height,
+                           camera=args.camera)
+    rates["record() (sim + draw + encode)"] = rec.render_rate
+
+    print(f"offscreen rendering, {args.width}x{args.height}, camera {args.camera}, "
+          f"MUJOCO_GL={os.environ.get('MUJOCO_GL')}, GL renderer: {platform}")
+    print(f"cores {os.cpu_count()}, load average {os.getloadavg()[0]:.1f} (shared machines: "
+          "rendering on llvmpipe competes for every core)")
+    width = max(len(k) for k in rates)
+    for name, rate in rates.items():
+        print(f"  {name:{width}s}  {rate:6.1f} frames/s  ({1e3 / rate:6.1f} ms/frame)")
+    print(f"  record(): {rec.frames} frames of {rec.sim_time:.1f} s simulated in {rec.loop_time:.1f} s "
+          f"({rec.wall_time:.1f} s with loading the boat and the controller)")
+
+
+if __name__ == "__main__":
+    main()
