@@ -177,6 +177,22 @@ STUDY_ORDER = ("saoud_fig3_fig4", "saoud_fig6", "saoud_fig7", "wille_course_tabl
                "wille_roll_table1", "viel_fig3", "assumptions")
 
 
+def _record_study_video(entry_point, out: Path, smoke: bool) -> None:
+    """Record the study's main scenario (its module's VIDEO dict) into its results folder."""
+    import importlib
+
+    from . import video
+
+    scenario = dict(getattr(importlib.import_module(entry_point.module), "VIDEO", {}) or {})
+    if not scenario:
+        print("      (this study has no scenario to film)")
+        return
+    if smoke:
+        scenario["seconds"] = min(scenario.get("seconds", 60.0), 5.0)
+    recording = video.record_study_scenario(out, **scenario)
+    print(f"      video: {recording.path}")
+
+
 def _study(args) -> int:
     """Run one study, or all of them, into results/<study>/."""
     studies = _studies()
@@ -195,6 +211,8 @@ def _study(args) -> int:
               flush=True)
         headline = studies[name].load()(out, smoke=args.smoke, workers=args.workers,
                                         progress=not args.no_progress, video=args.video)
+        if args.video:
+            _record_study_video(studies[name], out, args.smoke)
         shown = ", ".join(f"{k} {v:.3g}" if isinstance(v, float) else f"{k} {v}"
                           for k, v in list(headline.items())[:6])
         print(f"      done in {time.perf_counter() - t0:.0f} s: {shown}", flush=True)

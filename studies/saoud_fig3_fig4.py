@@ -25,6 +25,8 @@ NAME = "saoud_fig3_fig4"
 TITLE = "Saoud (2015) Figs. 3-4: optimal sail, roll and attack angles vs apparent wind angle"
 CASES = {"c1": (5.0, 1.0), "c2": (8.0, 1.0), "c3": (5.0, 0.1), "c4": (8.0, 0.1)}
 LIMITS_DEG = (45.0, 20.0, 10.0)
+# `--video` films the optimal sail at work on the robot (the figures themselves are static)
+VIDEO = {"boat": "saoud_robot", "task": "speed_trial", "controller": "saoud", "seconds": 60.0}
 
 
 def curves(step_deg: float) -> pd.DataFrame:
