@@ -1,0 +1,95 @@
+"""Viel Fig. 3 study (studies/viel_fig3.py): the smoke run and the pieces it measures with."""
+
+import math
+
+import numpy as np
+import pytest
+from sailmujoco.studies import viel_fig3
+
+from sailmujoco.reference.viel import VielWorld
+from sailmujoco.tasks.base import SailEnvironment
+from sailmujoco.tasks.position import CASES, VielPhysics
+
+
+@pytest.fixture(scope="module")
+def smoke(tmp_path_factory):
+    out = tmp_path_factory.mktemp("viel_fig3")
+    return out, viel_fig3.run(out, smoke=True, progress=False)
+
+
+def test_smoke_writes_report_figures_and_data(smoke):
+    out, headline = smoke
+    report = (out / "report.md").read_text()
+    assert "Done-when" in report and "max after stop" in report
+    for name in ("fig3_paper.png", "fig3_wille_yacht.png", "fig3_saoud_robot.png", "max_distance.png",
+                 "six_dof_switches.png"):
+        assert (out / name).stat().st_size > 10_000, name
+        assert f"]({name})" in report
+    for name in ("summary.csv", "trajectories.csv", "switches.csv", "start_grid.csv",
+                 "heading_hold_check.csv"):
+        assert (out / name).stat().st_size > 100, name
+    assert headline["smoke"] is True and headline["wall_time_s"] > 0.0
+
+
+def test_smoke_paper_world_enters_and_stops_inside(smoke):
+    _, h = smoke
+    assert h["paper_all_entered"]
+    # the task's metric starts at the entry crossing, d = d_T = 7 m: never far below it
+    assert 6.5 < h["paper_max_after_entry_m"] < viel_fig3.D_T
+    for case in (1, 2):  # the first 60 s: it stops well inside, before any drift to the edge
+        assert h[f"paper_case{case}_max_after_stop_m"] < viel_fig3.PAPER_MAX_M
+    assert h["dt_0.01_case1_max_after_stop_m"] < viel_fig3.PAPER_MAX_M  # the paper's dt runs too
+    assert 0.0 <= h["grid_fraction_below_6_4m"] <= 1.0 and h["grid_runs"] == 4
+
+
+def test_smoke_six_dof_findings(smoke):
+    _, h = smoke
+    # from the task's start (0.5 m/s, first turn through the wind) neither boat gets in within 60 s
+    assert h["wille_yacht_cases_entered"] == 0 and h["saoud_robot_cases_entered"] == 0
+    # under way on the tack, the robot reaches the buoy in 5 m/s and stops inside
+    assert h["saoud_robot_under_way_case2_max_after_stop_m"] < viel_fig3.D_T
+    # both boats sail 45 deg off a 5 m/s wind far faster than off a 10 m/s one (overpowered)
+    for boat in ("wille_yacht", "saoud_robot"):
+        assert h[f"{boat}_pid_135deg_5ms_speed"] > 1.5 * h[f"{boat}_pid_135deg_10ms_speed"]
+
+
+def test_after_entry_measures_from_the_stop():
+    t = np.arange(0.0, 100.0, 0.5)
+    d = np.where(t < 20.0, 30.0 - 1.2 * t, 6.0 + 0.1 * (t - 20.0))  # in at 19.2 s... stop at 20 s
+    d = np.maximum(d, 0.0)
+    entered = float(t[np.argmax(d < 7.0)])
+    m = viel_fig3.after_entry(t, d, entered)
+    assert m["stopped_at"] == pytest.approx(20.0)
+    assert m["stop_distance"] == pytest.approx(6.0)
+    assert m["max_after_stop"] == pytest.approx(d[-1])
+    assert m["to_paper_bound_s"] == pytest.approx(4.0)  # 6.0 -> 6.4 m at 0.1 m/s
+    assert m["to_first_exit_s"] == pytest.approx(10.0)  # 6.0 -> 7.0 m
+    assert m["exits"] == 1
+    never = viel_fig3.after_entry(t, d + 50.0, float("nan"))
+    assert math.isnan(never["max_after_stop"]) and never["exits"] == 0
+
+
+def test_linear_rudder_world_equals_the_printed_one_with_the_rudder_centred():
+    start = [-5.0, 3.0, 0.4, 1.3, 0.1, 0.02]
+    printed, linear = VielWorld(), viel_fig3.LinearRudderVielWorld()
+    for world in (printed, linear):
+        world.reset(start)
+        for _ in range(20):
+            world.step([0.0, 0.3], 0.1)
+    np.testing.assert_allclose(linear.state, printed.state, rtol=0, atol=1e-12)
+    # with the rudder over, the linear law turns harder below 1 m/s
+    for world in (printed, linear):
+        world.reset([0.0, 0.0, 0.0, 0.3, 0.0, 0.0])
+        world.step([-0.5, 0.0], 1.0)
+    assert abs(linear.yaw_rate()) > 2.0 * abs(printed.yaw_rate())
+
+
+def test_started_task_places_the_boat_under_way():
+    task = viel_fig3.StartedPositionKeeping(seed=0, case=2, heading_deg=135.0, surge=1.5)
+    env = SailEnvironment(VielPhysics(VielWorld(wind=task.wind())), task, time_limit=1.0,
+                          control_timestep=0.1, legacy_step=False)
+    obs = env.reset().observation
+    assert math.degrees(float(obs["heading"])) == pytest.approx(135.0)
+    assert float(np.linalg.norm(obs["velocity"])) == pytest.approx(1.5)
+    np.testing.assert_allclose(obs["position"], [-30.0, 40.0])
+    assert CASES[2][0] == 5.0
