@@ -1,0 +1,727 @@
+"""Wille, Hassani & Sprenger (2016b) §5 Table 1, Figs. 5-7, the moment shares of §3 (Fig. 3) and
+Fig. 8: roll stabilisation by the sail.
+
+Beam reach (wind from the west, desired heading north, PID heading rudder), U10 = 10 m/s with
+NORSOK gusts and direction wander, 300 s, metrics over the last 50 s, control at 10 Hz. Sail:
+the lambda_100 look-up table (sim 1, roll control off), and the roll LQR of eqs. 64-71 through
+the lambda_67/33/0 tables with only the mean wind known (sim 2) or the true wind at the sail
+(sim 3). The paper does not say which wind sim 1's lambda_100 uses; both are run: "sim 1" with
+the true wind (the lambda_100 of sim 3) and "sim 1, mean wind" (the lambda_100 of sim 2).
+
+The paper shows one gust realisation. Ours are five (seeds 0-4, the same realisation for the
+four simulations of a seed): the NORSOK spectrum has components of minutes, so the mean wind
+over a 50 s window differs from seed to seed, and with it how far the boat heels past the 10 deg
+at which the law acts. Table 1 gives the mean over the seeds; the figures show the median seed
+(median sim-1 roll amplitude).
+
+Fig. 3 (§3): the roll moments of each force term on the same beam reach at U10 = 5 m/s with
+the roll control off, 150 s, seed 0; shares = mean |K_term| over the last 50 s / their sum.
+In 6-DOF the restoring moment is buoyancy plus the weight's moment about CO (gravity is
+MuJoCo's). Fig. 8: mean surge over the last 50 s of 150 s runs (seed 0) on a grid of phi_d (the
+roll law's desired heel, true wind) at U10 = 13 and 16 m/s, on the sweep engine.
+
+Our sail is the flat AR 5 sail (Saoud's C_N, our C_T), not Marchaj's coefficients (which we do
+not have), and our roll LQR gain is K = [5.82e4, 1.0e5] from the paper's A, B, Q, R, not the
+printed [9.0e4, 1.0e5] (controllers/wille_roll.py and its test explain why). Both are switched
+below, with the hysteresis band (ours 5 deg; the paper gives none), the 4-DOF yaw kinematics
+(``paper_model="rigid"``) and, in 6-DOF, heave and pitch (``dofs=4``).
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from sailmujoco import sweep
+
+from .common import Report, setup_matplotlib, timer
+from .wille_course_table2 import make_env, run_jobs
+
+NAME = "wille_roll_table1"
+TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"
+WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
+SIMS = {  # options of the registered "wille_roll" controller
+    "sim1": dict(roll_control=False, wind="perfect"),
+    "sim1_mean": dict(roll_control=False, wind="mean"),
+    "sim2": dict(roll_control=True, wind="mean"),
+    "sim3": dict(roll_control=True, wind="perfect"),
+}
+SIM_LABELS = {"sim1": "sim 1: roll control off (λ100, true wind)",
+              "sim1_mean": "sim 1: roll control off (λ100, mean wind)",
+              "sim2": "sim 2: roll control, mean wind known",
+              "sim3": "sim 3: roll control, perfect wind"}
+PAPER_TABLE1 = {  # Table 1: roll amplitude (deg), max roll rate (deg/s), mean surge (m/s)
+    "sim1": {"roll_amplitude": 4.38, "max_roll_rate": 5.15, "mean_surge": 7.75},
+    "sim2": {"roll_amplitude": 1.18, "max_roll_rate": 1.42, "mean_surge": 6.59},
+    "sim3": {"roll_amplitude": 0.29, "max_roll_rate": 0.47, "mean_surge": 6.59},
+}
+PAPER_REDUCTION = {"sim2": 1 - 1.18 / 4.38, "sim3": 1 - 0.29 / 4.38}  # 73 %, 93 %
+QUANTITIES = {"roll_amplitude": "roll amplitude [deg]", "max_roll_rate": "max roll rate p [deg/s]",
+              "mean_surge": "mean surge u [m/s]"}
+PAPER_SHARES = {"sail + restoring": 0.91, "keel": 0.08, "rudder + damping": 0.01}  # §3
+PAPER_OPTIMUM_DEG = {13.0: 34.0, 16.0: 35.0}  # §5, Fig. 8
+WIND = 10.0  # m/s, U10 of Table 1
+SHARES_WIND = 5.0  # m/s, §3
+DURATION, SHARES_DURATION, FIG8_DURATION = 300.0, 150.0, 150.0  # s
+SMOKE_DURATION = 60.0  # s
+WINDOW = 50.0  # s, the task's metric window (BeamReachRoll.window)
+SEEDS = (0, 1, 2, 3, 4)
+SWITCH_SEEDS = (0, 1)
+FIG8_WINDS = (13.0, 16.0)  # m/s
+FIG8_HEEL_DEG = (10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0)
+FIG8_SWITCH_HEEL_DEG = (25.0, 30.0, 35.0, 40.0)
+PAPER_GAIN = (9.0e4, 1.0e5)  # Wille (2016b) §4, the printed K
+SAIL_FACTOR = 1.5  # sail-force switch: our seed-0 sim-1 surge meets the paper's 7.75 m/s
+NARROW_BAND_DEG = 1.0  # hysteresis switch: heel_off = heel_on - 1 deg
+TERMS = ("sail", "restoring", "keel", "rudder", "damping", "added_mass")
+CASES = {"main": "headline", "sail": f"switch: sail force x{SAIL_FACTOR:g}",
+         "gain": "switch: the printed LQR gain K = [9.0e4, 1.0e5]",
+         "band": f"switch: hysteresis band {NARROW_BAND_DEG:g}° (ours 5°)",
+         "rigid": "switch: rigid-hull yaw kinematics (paper_model='rigid')",
+         "dofs4": "switch: heave and pitch held (dofs = 4)",
+         "sail dofs4": f"switch: sail force x{SAIL_FACTOR:g}, heave and pitch held"}
+
+
+# ----------------------------------------------------------------------------- one simulation
+def simulate(job: dict) -> dict:
+    """One beam reach; returns metrics and a 10 Hz trajectory (with roll moments if asked)."""
+    env = make_env("beam_reach_roll", job["world"], seed=job["seed"],
+                   sail_factor=job.get("sail_factor", 1.0), paper_model=job.get("paper_model", "paper"),
+                   dofs=job.get("dofs", 6), time_limit=job["duration"], wind_speed=job["wind_speed"])
+    controller = sweep.make_controller("wille_roll", env, **SIMS[job["sim"]],
+                                       heel_desired_deg=job.get("heel_desired_deg", 10.0))
+    sail = controller.sail
+    if job.get("gain") == "paper":  # the printed LQR gain in place of ours
+        sail.lqr = dataclasses.replace(sail.lqr, K=np.array(PAPER_GAIN))
+    if job.get("band_deg") is not None:  # the hysteresis band
+        sail.heel_off = max(sail.heel_on - math.radians(job["band_deg"]), 0.0)
+    controller.reset(job["seed"])
+    timestep = env.reset()
+    rows = []
+    while True:
+        rows.append(_row(timestep.observation, sail, env.physics if job.get("moments") else None))
+        if timestep.last():
+            break
+        timestep = env.step(controller(timestep))
+    return {"metrics": env.task.metrics(), "trajectory": pd.DataFrame(rows)}
+
+
+def _row(obs, sail, physics) -> dict:
+    ts = obs["true_state"]
+    row = {"t": float(ts["time"]), "heel_deg": math.degrees(float(obs["heel"])),
+           "p_deg_s": math.degrees(float(obs["roll_rate"])), "u": float(ts["u"]),
+           "heading_deg": math.degrees(math.remainder(float(obs["heading"]), 2 * math.pi)),
+           "rudder_deg": math.degrees(float(ts["rudder"])), "sail_deg": math.degrees(float(ts["sail"])),
+           "wind_ce": float(np.hypot(*ts["true_wind"])), "active": float(sail.active)}
+    if physics is not None:  # roll moments about CO (N m, positive heeling to starboard)
+        for term in TERMS:
+            row[f"K_{term}"] = float(ts[f"{term}_wrench"][3])
+        if hasattr(physics, "data"):  # 6-DOF: the weight's moment about CO, from MuJoCo
+            d, m = physics.data, physics.model
+            body = 1  # the hull: the root of the boat's kinematic tree
+            rot = d.xmat[body].reshape(3, 3)
+            moment = np.cross(d.subtree_com[body] - d.xpos[body], m.body_subtreemass[body] * m.opt.gravity)
+            row["K_restoring"] += float((rot.T @ moment)[0])
+    return row
+
+
+# ----------------------------------------------------------------------------- the jobs
+def jobs_for(smoke: bool) -> list[dict]:
+    duration = SMOKE_DURATION if smoke else DURATION
+    seeds = (0,) if smoke else SEEDS
+    base = dict(wind_speed=WIND, duration=duration)
+    jobs = [dict(base, key=("main", w, s, seed), world=w, sim=s, seed=seed)
+            for w in WORLDS for s in SIMS for seed in seeds]
+    shares = dict(wind_speed=SHARES_WIND, duration=30.0 if smoke else SHARES_DURATION, sim="sim1",
+                  seed=0, moments=True)
+    jobs += [dict(shares, key=("shares", w, "sim1", 0), world=w) for w in WORLDS]
+    if smoke:
+        return jobs
+    controlled = ("sim2", "sim3")
+    # the sail switch on the lull (seed 0) in both worlds, and on seed 1 in the cheap 6-DOF world
+    jobs += [dict(base, key=("sail", w, s, seed), world=w, sim=s, seed=seed, sail_factor=SAIL_FACTOR)
+             for w, seed in (("paper", 0), ("mujoco", 0), ("mujoco", 1)) for s in SIMS]
+    jobs += [dict(base, key=("gain", "paper", s, 1), world="paper", sim=s, seed=1, gain="paper")
+             for s in controlled]
+    jobs += [dict(base, key=("dofs4", "mujoco", s, seed), world="mujoco", sim=s, seed=seed, dofs=4)
+             for seed in SWITCH_SEEDS for s in SIMS]
+    jobs += [dict(base, key=("band", "paper", s, 0), world="paper", sim=s, seed=0, band_deg=NARROW_BAND_DEG)
+             for s in controlled]
+    jobs += [dict(base, key=("rigid", "paper", s, 1), world="paper", sim=s, seed=1, paper_model="rigid")
+             for s in ("sim1", "sim3")]
+    jobs += [dict(base, key=("sail dofs4", "mujoco", s, 0), world="mujoco", sim=s, seed=0, dofs=4,
+                  sail_factor=SAIL_FACTOR) for s in SIMS]
+    jobs.append(dict(shares, key=("shares", "paper", "sail", 0), world="paper", sail_factor=SAIL_FACTOR))
+    jobs += [dict(key=("fig8 sail", "paper", wind, heel), world="paper", sim="sim3", seed=0, wind_speed=wind,
+                  duration=FIG8_DURATION, heel_desired_deg=heel, sail_factor=SAIL_FACTOR)
+             for wind in FIG8_WINDS for heel in FIG8_SWITCH_HEEL_DEG]
+    # the paper world first (the slow one), long and windy runs first: the pool ends together
+    return sorted(jobs, key=lambda j: (j["world"] != "paper", -j["duration"] * j["wind_speed"]))
+
+
+FIG8_LABELS = {"paper": WORLDS["paper"], "mujoco": WORLDS["mujoco"],
+               "mujoco_dofs4": "MuJoCo, heave and pitch held"}
+
+
+def fig8_sweep(world: str, out: Path, smoke: bool, workers, progress: bool) -> dict[str, pd.DataFrame]:
+    """Fig. 8 on the sweep engine: mean surge (last 50 s) over phi_d x U10 (x dofs 6, 4 in the
+    MuJoCo world, full mode). Returns {variant: table}."""
+    grid = {"task.wind_speed": list(FIG8_WINDS),
+            "controller.heel_desired_deg": [10.0, 30.0] if smoke else list(FIG8_HEEL_DEG)}
+    if world == "mujoco" and not smoke:
+        grid["env.dofs"] = [6, 4]
+    spec = {"name": f"fig8_{world}", "boat": "wille_yacht", "task": "beam_reach_roll", "world": world,
+            "controller": "wille_roll", "duration": 30.0 if smoke else FIG8_DURATION, "seeds": [0],
+            "metrics": ["mean_surge", "mean_heel", "roll_amplitude", "max_roll_rate"],
+            "options": {"controller.wind": "perfect"}, "grid": grid}
+    scheduler = "serial" if workers == 1 else None
+    table = sweep.run(spec, out / f"fig8_sweep_{world}", scheduler=scheduler, workers=workers,
+                      progress=progress)
+    table = table.rename(columns={"task.wind_speed": "wind_speed",
+                                  "controller.heel_desired_deg": "heel_desired_deg"})
+    if "env.dofs" not in table:
+        return {world: table}
+    return {world: table[table["env.dofs"] == 6], f"{world}_dofs4": table[table["env.dofs"] == 4]}
+
+
+# ----------------------------------------------------------------------------- numbers
+def numbers(result: dict) -> dict:
+    m, traj = result["metrics"], result["trajectory"]
+    late = traj[traj["t"] >= traj["t"].iloc[-1] - WINDOW]
+    return {"roll_amplitude": math.degrees(m["roll_amplitude"]),
+            "max_roll_rate": math.degrees(m["max_roll_rate"]),
+            "mean_surge": m["mean_surge"], "mean_heel": math.degrees(m["mean_heel"]),
+            "on": float(late["active"].mean()), "wind_ce": float(late["wind_ce"].mean()),
+            "rudder_mean": float(late["rudder_deg"].mean()),
+            "heading_min": float(late["heading_deg"].min())}
+
+
+def reduction(before: dict, after: dict) -> float:
+    return 1.0 - after["roll_amplitude"] / before["roll_amplitude"]
+
+
+def shares(result: dict) -> dict:
+    traj = result["trajectory"]
+    late = traj[traj["t"] >= traj["t"].iloc[-1] - WINDOW]
+    size = {term: float(late[f"K_{term}"].abs().mean()) for term in TERMS}
+    total = sum(size.values())
+    return {"rudder_deg": float(late["rudder_deg"].mean()),
+            "sail + restoring": (size["sail"] + size["restoring"]) / total, "keel": size["keel"] / total,
+            "rudder + damping": (size["rudder"] + size["damping"] + size["added_mass"]) / total,
+            **{f"{term}_Nm": float(late[f"K_{term}"].mean()) for term in TERMS}}
+
+
+STALLED = 2.0  # m/s: a run whose mean surge is below this has broached (rounded up and stopped)
+
+
+def optimum(table: pd.DataFrame, wind: float) -> float:
+    """phi_d of the fastest finished run at ``wind``; the vertex of the parabola through the
+    best grid point and its neighbours when it lies inside the grid. Runs that broached
+    (mean surge below ``STALLED``) are left out."""
+    rows = table[(table["wind_speed"] == wind) & (table["status"] == "ok")
+                 & (table["mean_surge"] >= STALLED)].sort_values("heel_desired_deg")
+    if rows.empty:
+        return float("nan")
+    x, y = rows["heel_desired_deg"].to_numpy(float), rows["mean_surge"].to_numpy(float)
+    i = int(np.argmax(y))
+    if 0 < i < len(x) - 1:
+        a, b, _ = np.polyfit(x[i - 1:i + 2], y[i - 1:i + 2], 2)
+        if a < 0:
+            return float(-b / (2 * a))
+    return float(x[i])
+
+
+class Results:
+    """Access to the runs by (case, world, sim, seed), and the seed means."""
+
+    def __init__(self, results: dict, seeds):
+        self.raw = results
+        self.seeds = tuple(seeds)
+        self.n = {k: numbers(v) for k, v in results.items() if k[0] not in ("fig8 sail",)}
+
+    def get(self, case, world, sim, seed=0) -> dict:
+        return self.n[(case, world, sim, seed)]
+
+    def has(self, case, world, sim, seed=0) -> bool:
+        return (case, world, sim, seed) in self.n
+
+    def mean(self, world, sim) -> dict:
+        values = [self.get("main", world, sim, s) for s in self.seeds]
+        return {k: float(np.mean([v[k] for v in values])) for k in values[0]}
+
+    def span(self, world, sim, key) -> tuple[float, float]:
+        values = [self.get("main", world, sim, s)[key] for s in self.seeds]
+        return min(values), max(values)
+
+    def median_seed(self, world="paper") -> int:
+        amps = [(self.get("main", world, "sim1", s)["roll_amplitude"], s) for s in self.seeds]
+        return sorted(amps)[len(amps) // 2][1]
+
+
+# ----------------------------------------------------------------------------- figures
+SIM_STYLE = {"sim1": ("tab:blue", "-"), "sim1_mean": ("tab:blue", ":"), "sim2": ("tab:orange", "-"),
+             "sim3": ("tab:green", "-")}
+
+
+def figure_series(r: Results, out, plt, column, sims, number, title, ylabel) -> Path:
+    seed = r.median_seed()
+    panels = [(world, label) for world, label in WORLDS.items()]
+    fig, axes = plt.subplots(len(panels), 1, figsize=(9, 2.8 * len(panels) + 0.8), sharex=True)
+    for ax, (world, label) in zip(axes, panels, strict=True):
+        for sim in sims:
+            traj = r.raw[("main", world, sim, seed)]["trajectory"]
+            late = traj[traj["t"] >= traj["t"].iloc[-1] - WINDOW]
+            colour, style = SIM_STYLE[sim]
+            ax.plot(late["t"], late[column], color=colour, ls=style, label=SIM_LABELS[sim])
+        if column == "heel_deg":
+            ax.axhline(10.0, color="k", lw=0.7, ls="--", label="φ_d = 10°")
+        ax.set_ylabel(ylabel)
+        ax.set_title(f"{label}, seed {seed}", fontsize=10)
+    axes[0].legend(loc="upper left", ncol=2, fontsize=7)
+    axes[-1].set_xlabel("time [s]")
+    fig.suptitle(f"Fig. {number} (reproduced): {title}\nbeam reach, U10 = {WIND:g} m/s, last {WINDOW:g} s "
+                 "of 300 s", fontsize=11)
+    fig.tight_layout()
+    path = out / f"fig{number}_{column.split('_')[0]}.png"
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def figure_seeds(r: Results, out, plt) -> Path:
+    """Roll angle of sims 1 and 3 for every seed (paper world): the lulls explain the spread."""
+    fig, axes = plt.subplots(len(r.seeds), 1, figsize=(9, 1.6 * len(r.seeds) + 0.9), sharex=True,
+                             sharey=True)
+    axes = np.atleast_1d(axes)
+    for ax, seed in zip(axes, r.seeds, strict=True):
+        for sim in ("sim1", "sim2", "sim3"):
+            traj = r.raw[("main", "paper", sim, seed)]["trajectory"]
+            late = traj[traj["t"] >= traj["t"].iloc[-1] - WINDOW]
+            colour, style = SIM_STYLE[sim]
+            ax.plot(late["t"], late["heel_deg"], color=colour, ls=style, label=SIM_LABELS[sim])
+        ax.axhline(10.0, color="k", lw=0.7, ls="--")
+        n1 = r.get("main", "paper", "sim1", seed)
+        ax.set_title(f"seed {seed}: wind at the sail {n1['wind_ce']:.1f} m/s (window mean), "
+                     f"sim 1 mean heel {n1['mean_heel']:.1f}°", fontsize=8)
+        ax.set_ylabel("φ [deg]")
+    axes[0].legend(loc="upper left", ncol=3, fontsize=7)
+    axes[-1].set_xlabel("time [s]")
+    fig.suptitle("Roll angle by gust realisation, paper world (last 50 s)", fontsize=11)
+    fig.tight_layout()
+    path = out / "fig5_seeds.png"
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def figure_moments(r: Results, out, plt) -> Path:
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
+    for ax, world in zip(axes, WORLDS, strict=True):
+        traj = r.raw[("shares", world, "sim1", 0)]["trajectory"]
+        for term in TERMS:
+            ax.plot(traj["t"], traj[f"K_{term}"] / 1e3, label=term.replace("_", " "))
+        ax.set_xlabel("time [s]")
+        ax.set_title(WORLDS[world] + (" (restoring = buoyancy + weight)" if world == "mujoco" else ""),
+                     fontsize=10)
+    axes[0].set_ylabel("roll moment about CO [kN m]")
+    axes[0].legend(ncol=3, fontsize=7)
+    fig.suptitle(f"Fig. 3 (reproduced): moments in roll while beam reaching, U10 = {SHARES_WIND:g} m/s, "
+                 "roll control off")
+    fig.tight_layout()
+    path = out / "fig3_moments.png"
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+def figure_fig8(tables, switch, out, plt) -> Path:
+    fig, ax = plt.subplots(figsize=(11.5, 5.5))
+    colours = {13.0: "tab:blue", 16.0: "tab:red"}
+    styles = {"paper": ("-", "o"), "mujoco": ("--", "s"), "mujoco_dofs4": ("-.", "d")}
+    for variant, table in tables.items():
+        style, marker = styles[variant]
+        for wind in FIG8_WINDS:
+            rows = table[(table["wind_speed"] == wind) & (table["status"] == "ok")].sort_values(
+                "heel_desired_deg")
+            ax.plot(rows["heel_desired_deg"], rows["mean_surge"], ls=style, marker=marker,
+                    color=colours[wind], label=f"{FIG8_LABELS[variant]}, U10 = {wind:g} m/s")
+    if switch is not None:
+        for wind in FIG8_WINDS:
+            rows = switch[switch["wind_speed"] == wind].sort_values("heel_desired_deg")
+            ax.plot(rows["heel_desired_deg"], rows["mean_surge"], ls=":", marker="^", color=colours[wind],
+                    label=f"paper world, sail x{SAIL_FACTOR:g}, U10 = {wind:g} m/s")
+    for wind, heel in PAPER_OPTIMUM_DEG.items():
+        ax.axvline(heel, color=colours[wind], lw=0.8, alpha=0.5)
+    ax.text(35.3, 0.97, "paper's optima\n34° (13 m/s), 35° (16 m/s)", fontsize=7, va="top",
+            transform=ax.get_xaxis_transform())
+    ax.set_xlabel("desired heel φ_d [deg]")
+    ax.set_ylabel("top speed in surge u [m/s] (mean of the last 50 s)")
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
+    ax.set_title("Fig. 8 (reproduced): top surge speed against φ_d, beam reach")
+    fig.tight_layout()
+    path = out / "fig8_speed_vs_heel.png"
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
+# ----------------------------------------------------------------------------- the study
+def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bool = False) -> dict:
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    elapsed = timer()
+    jobs = jobs_for(smoke)
+    raw = run_jobs(simulate, jobs, workers, progress, NAME)
+    sim_time = elapsed()
+    tables = {}
+    for world in WORLDS:
+        tables.update(fig8_sweep(world, out, smoke, workers, progress))
+    for variant, table in tables.items():
+        table.to_csv(out / f"fig8_{variant}.csv", index=False)
+    switch8 = None
+    if not smoke:
+        switch8 = pd.DataFrame([{"wind_speed": key[2], "heel_desired_deg": key[3],
+                                 "mean_surge": res["metrics"]["mean_surge"],
+                                 "mean_heel_deg": math.degrees(res["metrics"]["mean_heel"]),
+                                 "status": "stopped" if res["metrics"].get("stopped") else "ok"}
+                                for key, res in raw.items() if key[0] == "fig8 sail"])
+        switch8.to_csv(out / "fig8_paper_sail_switch.csv", index=False)
+    r = Results(raw, (0,) if smoke else SEEDS)
+    pd.DataFrame([{"case": k[0], "world": k[1], "sim": k[2], "seed": k[3], **v} for k, v in r.n.items()]
+                 ).sort_values(["case", "world", "sim", "seed"]).to_csv(out / "runs.csv", index=False)
+    seed = r.median_seed()
+    for world in WORLDS:
+        for sim in SIMS:
+            r.raw[("main", world, sim, seed)]["trajectory"].to_csv(
+                out / f"trajectory_{world}_{sim}_seed{seed}.csv", index=False)
+
+    plt = setup_matplotlib()
+    figs = {
+        "5": figure_series(r, out, plt, "heel_deg", ("sim1", "sim1_mean", "sim2", "sim3"), 5,
+                           "roll angle φ, all simulations", "φ [deg]"),
+        "6": figure_series(r, out, plt, "p_deg_s", ("sim1", "sim2"), 6, "roll rate p, simulations 1 and 2",
+                           "p [deg/s]"),
+        "7": figure_series(r, out, plt, "p_deg_s", ("sim2", "sim3"), 7, "roll rate p, simulations 2 and 3",
+                           "p [deg/s]"),
+        "3": figure_moments(r, out, plt),
+        "8": figure_fig8(tables, switch8, out, plt),
+    }
+    if not smoke:
+        figs["seeds"] = figure_seeds(r, out, plt)
+
+    share = {w: shares(raw[("shares", w, "sim1", 0)]) for w in WORLDS}
+    optima = {(v, wind): optimum(tables[v], wind) for v in tables for wind in FIG8_WINDS}
+    headline = {}
+    for w in WORLDS:
+        means = {s: r.mean(w, s) for s in SIMS}
+        for s in SIMS:
+            for k in ("roll_amplitude", "max_roll_rate", "mean_surge", "mean_heel"):
+                headline[f"{w}_{s}_{k}"] = means[s][k]
+        for base in ("sim1", "sim1_mean"):
+            for s in ("sim2", "sim3"):
+                headline[f"{w}_reduction_{base}_{s}"] = reduction(means[base], means[s])
+        for k in ("sail + restoring", "keel", "rudder + damping"):
+            headline[f"{w}_share_{k.replace(' + ', '_')}"] = share[w][k]
+        for wind in FIG8_WINDS:
+            headline[f"{w}_fig8_optimum_deg_{wind:g}"] = optima[(w, wind)]
+    headline["simulation_wall_time_s"] = sim_time
+    headline["wall_time_s"] = elapsed()
+
+    report = Report(TITLE)
+    report.paragraph(__doc__.split("\n\n", 1)[1])
+    n_sweep = sum(len(t) for t in tables.values())
+    report.paragraph(
+        f"Runs: {len(jobs)} simulations plus {n_sweep} on the sweep engine"
+        f"{'; smoke mode: 60 s, seed 0 only, metrics over the last 50 s' if smoke else ''}; "
+        f"wall time {elapsed():.0f} s ({sim_time:.0f} s before the Fig. 8 sweeps).")
+    report.paragraph("## Table 1" + ("" if smoke else f" (mean over seeds {', '.join(map(str, r.seeds))})"))
+    report.comparison(_table1_rows(r, smoke))
+    report.paragraph("Reductions of the roll amplitude (the paper: sim 1 → sim 2 73 %, sim 1 → sim 3 "
+                     "93 %; done-when, paper world: both at least 60 %), from the seed means and per seed:")
+    report.table(_reduction_rows(r, smoke), ["world", "case", "seed", "sim 1 mean heel [deg]",
+                                             "sim 1 → sim 2", "sim 1 (mean wind) → sim 2", "sim 1 → sim 3",
+                                             "sim 1 (mean wind) → sim 3"])
+    report.paragraph("Every run (u mean surge, ψ_min the lowest heading in the window, δ_r the mean "
+                     "rudder angle, \"on\" the share of the window the roll law is on):")
+    report.table(_detail_rows(r), ["case", "world", "seed", "simulation", "amplitude [deg]", "max p [deg/s]",
+                                   "u [m/s]", "mean heel [deg]", "wind at sail [m/s]", "on", "δ_r [deg]",
+                                   "ψ_min [deg]"])
+    if not smoke:
+        report.paragraph(_causes(r, tables))
+        report.figure(figs["seeds"], "Roll angle of sims 1-3 for each gust realisation (paper world)")
+    report.figure(figs["5"], "Fig. 5: roll angle φ, all simulations (last 50 s)")
+    report.figure(figs["6"], "Fig. 6: roll rate p, simulations 1 and 2")
+    report.figure(figs["7"], "Fig. 7: roll rate p, simulations 2 and 3")
+    report.paragraph("## Fig. 3: moment shares in roll (beam reach, U10 = 5 m/s, roll control off)")
+    report.comparison(_share_rows(share, raw, smoke))
+    report.figure(figs["3"], "Fig. 3: roll moments of each force term")
+    report.paragraph("## Fig. 8: top surge speed against φ_d")
+    report.comparison(_fig8_rows(optima, tables, switch8))
+    report.paragraph(_fig8_text(tables, switch8))
+    report.figure(figs["8"], "Fig. 8: mean surge speed (last 50 s) against the desired heel φ_d")
+    report.write(out)
+    return headline
+
+
+# ----------------------------------------------------------------------------- report parts
+def _table1_rows(r: Results, smoke) -> list[dict]:
+    rows = []
+    for world, label in WORLDS.items():
+        for sim in SIMS:
+            paper = PAPER_TABLE1["sim1" if sim == "sim1_mean" else sim]
+            mean = r.mean(world, sim)
+            for key, name in QUANTITIES.items():
+                lo, hi = r.span(world, sim, key)
+                cause = "" if smoke else _cause(r, world, sim, key)
+                rows.append({"quantity": f"{SIM_LABELS[sim]}: {name}", "world": label,
+                             "paper": paper[key], "ours": mean[key],
+                             "cause": (f"seeds {lo:.2f}-{hi:.2f}. " if len(r.seeds) > 1 else "") + cause})
+    return rows
+
+
+def _cause(r: Results, world, sim, key) -> str:
+    """The modelling difference behind a Table 1 miss, with the switch that shows it."""
+    paper = PAPER_TABLE1["sim1" if sim == "sim1_mean" else sim][key]
+    diff = abs(r.mean(world, sim)[key] / paper - 1.0)
+    if diff <= 0.10:
+        return ""
+    s0, sail0 = r.get("main", world, sim, 0), r.get("sail", world, sim, 0)
+    if key == "mean_surge":
+        text = (f"our flat AR 5 sail drives less than Marchaj's: sail x{SAIL_FACTOR:g}, seed 0: "
+                f"{s0[key]:.2f} → {sail0[key]:.2f} m/s")
+        if world == "mujoco":
+            d4 = r.get("dofs4", world, sim, 0)
+            text += f"; heave and pitch held: {d4[key]:.2f} m/s"
+            if sail0[key] < 2.0:
+                text += " (with the stronger sail the 6-DOF boat broaches, see causes)"
+        return text
+    if sim in ("sim1", "sim1_mean"):
+        mean, mm = r.mean(world, "sim1"), r.mean(world, "sim1_mean")
+        return (f"sim 1's wind estimate (true vs mean wind: {mean[key]:.2f} vs {mm[key]:.2f}); "
+                f"the gust realisation; sail x{SAIL_FACTOR:g}, seed 0: {s0[key]:.2f} → {sail0[key]:.2f}")
+    return (f"the boat heels too little past 10° for the law to act in lulls (seed 0: sim-1 heel "
+            f"{r.get('main', world, 'sim1', 0)['mean_heel']:.1f}°, {s0[key]:.2f}; seed 1: "
+            f"{r.get('main', world, 'sim1', 1)['mean_heel']:.1f}°, {r.get('main', world, sim, 1)[key]:.2f}); "
+            f"sail x{SAIL_FACTOR:g}, seed 0: {sail0[key]:.2f}")
+
+
+def _reduction_rows(r: Results, smoke) -> list[dict]:
+    rows = []
+
+    def row(world, case, seed_label, n):
+        return {"world": WORLDS[world], "case": CASES[case], "seed": seed_label,
+                "sim 1 mean heel [deg]": f"{n['sim1']['mean_heel']:.1f}",
+                "sim 1 → sim 2": f"{100 * reduction(n['sim1'], n['sim2']):.0f} %",
+                "sim 1 (mean wind) → sim 2": f"{100 * reduction(n['sim1_mean'], n['sim2']):.0f} %",
+                "sim 1 → sim 3": f"{100 * reduction(n['sim1'], n['sim3']):.0f} %",
+                "sim 1 (mean wind) → sim 3": f"{100 * reduction(n['sim1_mean'], n['sim3']):.0f} %"}
+
+    for world in WORLDS:
+        rows.append(row(world, "main", "mean", {s: r.mean(world, s) for s in SIMS}))
+        if len(r.seeds) > 1:
+            for seed in r.seeds:
+                rows.append(row(world, "main", str(seed), {s: r.get("main", world, s, seed) for s in SIMS}))
+    if not smoke:
+        for case in ("sail", "dofs4"):
+            for world in WORLDS:
+                for seed in (0, 1):
+                    if r.has(case, world, "sim1", seed):
+                        rows.append(row(world, case, str(seed), {s: r.get(case, world, s, seed) for s in SIMS}))
+        rows.append(row("mujoco", "sail dofs4", "0", {s: r.get("sail dofs4", "mujoco", s, 0) for s in SIMS}))
+        n = {s: r.get("main", "paper", s, 1) for s in ("sim1", "sim1_mean")}
+        n.update({s: r.get("gain", "paper", s, 1) for s in ("sim2", "sim3")})
+        rows.append(row("paper", "gain", "1", n))
+        n = {s: r.get("main", "paper", s, 0) for s in ("sim1", "sim1_mean")}
+        n.update({s: r.get("band", "paper", s, 0) for s in ("sim2", "sim3")})
+        rows.append(row("paper", "band", "0", n))
+    return rows
+
+
+def _detail_rows(r: Results) -> list[dict]:
+    rows = []
+    order = list(CASES)
+    for (case, world, sim, seed), n in sorted(r.n.items(), key=lambda kv: (
+            kv[0][1], order.index(kv[0][0]) if kv[0][0] in order else 99, kv[0][3], kv[0][2])):
+        if case == "shares":
+            continue
+        rows.append({"case": CASES[case], "world": WORLDS[world], "seed": seed, "simulation": SIM_LABELS[sim],
+                     "amplitude [deg]": n["roll_amplitude"], "max p [deg/s]": n["max_roll_rate"],
+                     "u [m/s]": n["mean_surge"], "mean heel [deg]": n["mean_heel"],
+                     "wind at sail [m/s]": n["wind_ce"], "on": f"{100 * n['on']:.0f} %",
+                     "δ_r [deg]": n["rudder_mean"], "ψ_min [deg]": n["heading_min"]})
+    return rows
+
+
+def _causes(r: Results, tables: dict) -> str:
+    g = r.get
+    m = {s: r.mean("paper", s) for s in SIMS}
+    mm = {s: r.mean("mujoco", s) for s in SIMS}
+    p0 = {s: g("main", "paper", s, 0) for s in SIMS}
+    p1 = {s: g("main", "paper", s, 1) for s in SIMS}
+    x0 = {s: g("sail", "paper", s, 0) for s in SIMS}
+    xm0 = {s: g("sail", "mujoco", s, 0) for s in SIMS}
+    xm1 = {s: g("sail", "mujoco", s, 1) for s in SIMS}
+    d0 = {s: g("dofs4", "mujoco", s, 0) for s in SIMS}
+    d1 = {s: g("dofs4", "mujoco", s, 1) for s in SIMS}
+    dx0 = {s: g("sail dofs4", "mujoco", s, 0) for s in SIMS}
+    k2, k3 = g("gain", "paper", "sim2", 1), g("gain", "paper", "sim3", 1)
+    b2, b3 = g("band", "paper", "sim2", 0), g("band", "paper", "sim3", 0)
+    r1, r3 = g("rigid", "paper", "sim1", 1), g("rigid", "paper", "sim3", 1)
+    red = lambda a, b: 100 * reduction(a, b)  # noqa: E731
+    heel_by_seed = ", ".join(f"{g('main', 'paper', 'sim1', s)['mean_heel']:.1f}" for s in r.seeds)
+    wind_by_seed = ", ".join(f"{g('main', 'paper', 'sim1', s)['wind_ce']:.1f}" for s in r.seeds)
+    sim3_by_seed = ", ".join(f"{g('main', 'paper', 'sim3', s)['roll_amplitude']:.2f}" for s in r.seeds)
+    broach = []
+    for variant in ("mujoco", "mujoco_dofs4"):
+        t = tables.get(variant)
+        if t is None:
+            continue
+        slow = t[(t["wind_speed"] == 16.0) & (t["mean_surge"] < STALLED)]
+        if len(slow):
+            broach.append(f"{FIG8_LABELS[variant]} for φ_d ≥ {slow['heel_desired_deg'].min():g}°")
+    broach_text = ("; in the Fig. 8 sweep at U10 = 16 m/s: " + ", ".join(broach)) if broach else ""
+    return f"""### Causes, each checked by switching it
+
+1. **How far past 10° the boat heels (gust realisation × sail-force level).** The law switches on
+   above 10° and can only take moment away (λ100 is the most it has): where the boat heels less
+   than about 10° it clips the peaks and leaves the troughs alone. Sim 1's mean heel over the
+   window, seeds {', '.join(map(str, r.seeds))}: {heel_by_seed}° (window-mean wind at the sail
+   {wind_by_seed} m/s); sim 3's roll amplitude {sim3_by_seed}°. Seed 0's window is a lull: sim 1
+   heels {p0['sim1']['mean_heel']:.1f}°, the law trims peaks only ({p0['sim2']['roll_amplitude']:.2f}° /
+   {p0['sim3']['roll_amplitude']:.2f}° for sims 2 / 3, reductions {red(p0['sim1'], p0['sim2']):.0f} /
+   {red(p0['sim1'], p0['sim3']):.0f} %). Seed 1 heels {p1['sim1']['mean_heel']:.1f}°: sims 1-3
+   {p1['sim1']['roll_amplitude']:.2f} / {p1['sim2']['roll_amplitude']:.2f} / {p1['sim3']['roll_amplitude']:.2f}°,
+   {p1['sim1']['max_roll_rate']:.2f} / {p1['sim2']['max_roll_rate']:.2f} / {p1['sim3']['max_roll_rate']:.2f} °/s,
+   {p1['sim1']['mean_surge']:.2f} / {p1['sim2']['mean_surge']:.2f} / {p1['sim3']['mean_surge']:.2f} m/s
+   (paper 4.38 / 1.18 / 0.29°, 5.15 / 1.42 / 0.47 °/s, 7.75 / 6.59 / 6.59 m/s), reductions
+   {red(p1['sim1'], p1['sim2']):.0f} / {red(p1['sim1'], p1['sim3']):.0f} %. Our flat AR 5 sail (in place of
+   Marchaj's coefficients, which we do not have) sets the margin: the switch multiplies its force by
+   {SAIL_FACTOR:g} (area 22.8 → {22.8 * SAIL_FACTOR:.1f} m², in the physics and the λ tables; the factor at
+   which the seed-0 sim-1 surge meets the paper's 7.75 m/s; the roll numbers are not fitted). On
+   the lull (seed 0) sim 1 then heels {x0['sim1']['mean_heel']:.1f}°, the law is on
+   {100 * x0['sim3']['on']:.0f} % of the window, and sims 1-3 give {x0['sim1']['roll_amplitude']:.2f} /
+   {x0['sim2']['roll_amplitude']:.2f} / {x0['sim3']['roll_amplitude']:.2f}°, {x0['sim1']['max_roll_rate']:.2f} /
+   {x0['sim2']['max_roll_rate']:.2f} / {x0['sim3']['max_roll_rate']:.2f} °/s, {x0['sim1']['mean_surge']:.2f} /
+   {x0['sim2']['mean_surge']:.2f} / {x0['sim3']['mean_surge']:.2f} m/s, reductions
+   {red(x0['sim1'], x0['sim2']):.0f} / {red(x0['sim1'], x0['sim3']):.0f} % (against the mean-wind sim 1:
+   {red(x0['sim1_mean'], x0['sim2']):.0f} / {red(x0['sim1_mean'], x0['sim3']):.0f} %); the speed cost of
+   the control is then {100 * (1 - x0['sim3']['mean_surge'] / x0['sim1']['mean_surge']):.0f} % (paper 15 %).
+2. **Sim 1's wind estimate.** λ100 from the true wind against λ100 from the mean wind (seed mean):
+   roll amplitude {m['sim1']['roll_amplitude']:.2f}° vs {m['sim1_mean']['roll_amplitude']:.2f}° (paper 4.38°),
+   max p {m['sim1']['max_roll_rate']:.2f} vs {m['sim1_mean']['max_roll_rate']:.2f} °/s (5.15). A sail trimmed to
+   the mean wind does not follow the gusts' direction and rolls more. Against the mean-wind sim 1
+   (the same wind knowledge as sim 2) the reductions are {red(m['sim1_mean'], m['sim2']):.0f} /
+   {red(m['sim1_mean'], m['sim3']):.0f} %, against the true-wind one {red(m['sim1'], m['sim2']):.0f} /
+   {red(m['sim1'], m['sim3']):.0f} %.
+3. **The LQR gain.** The printed K = [9.0e4, 1.0e5] in place of ours [5.82e4, 1.0e5] (seed 1, where
+   the law is on all the time): sim 2 amplitude {p1['sim2']['roll_amplitude']:.2f} → {k2['roll_amplitude']:.2f}°,
+   sim 3 {p1['sim3']['roll_amplitude']:.2f} → {k3['roll_amplitude']:.2f}°, max p {p1['sim3']['max_roll_rate']:.2f} →
+   {k3['max_roll_rate']:.2f} °/s.
+4. **Hysteresis.** A {NARROW_BAND_DEG:g}° band in place of our 5° (seed 0, where the law switches):
+   sim 2 / sim 3 amplitude {b2['roll_amplitude']:.2f}° / {b3['roll_amplitude']:.2f}° (ours
+   {p0['sim2']['roll_amplitude']:.2f}° / {p0['sim3']['roll_amplitude']:.2f}°), on {100 * b2['on']:.0f} % /
+   {100 * b3['on']:.0f} % of the window (ours {100 * p0['sim2']['on']:.0f} % / {100 * p0['sim3']['on']:.0f} %).
+5. **Yaw kinematics of the 4-DOF model** (``paper_model="rigid"``, seed 1): sim 1 / sim 3 amplitude
+   {r1['roll_amplitude']:.2f}° / {r3['roll_amplitude']:.2f}° (ours {p1['sim1']['roll_amplitude']:.2f}° /
+   {p1['sim3']['roll_amplitude']:.2f}°), surge {r1['mean_surge']:.2f} / {r3['mean_surge']:.2f} m/s.
+6. **Sim 3's remaining roll** (paper 0.29°, ours {m['sim3']['roll_amplitude']:.2f}° on the seed mean,
+   {p1['sim3']['roll_amplitude']:.2f}° for seed 1): the paper names the sail actuator's delay
+   (T_λ = 0.5 s); ours adds the 10 Hz sampling and the λ-table inversion; not switched.
+7. **6-DOF world.** Seed means {mm['sim1']['roll_amplitude']:.2f} / {mm['sim2']['roll_amplitude']:.2f} /
+   {mm['sim3']['roll_amplitude']:.2f}°, surge {mm['sim1']['mean_surge']:.2f} / {mm['sim2']['mean_surge']:.2f} /
+   {mm['sim3']['mean_surge']:.2f} m/s, sim-1 heel {mm['sim1']['mean_heel']:.1f}° (paper world
+   {m['sim1']['mean_heel']:.1f}°): the 6-DOF boat is slower and heels less, so cause 1 weighs more.
+   Switch, heave and pitch held (``dofs=4``): seed 0 surge {d0['sim1']['mean_surge']:.2f} m/s
+   (6-DOF {g('main', 'mujoco', 'sim1', 0)['mean_surge']:.2f}, paper world {p0['sim1']['mean_surge']:.2f}), heel
+   {d0['sim1']['mean_heel']:.1f}°; seed 1: {d1['sim1']['roll_amplitude']:.2f} / {d1['sim2']['roll_amplitude']:.2f} /
+   {d1['sim3']['roll_amplitude']:.2f}°, {d1['sim1']['mean_surge']:.2f} / {d1['sim2']['mean_surge']:.2f} /
+   {d1['sim3']['mean_surge']:.2f} m/s: the free heave and pitch cost the speed and the heel (how, we did
+   not isolate; the mean rudder angle, δ_r in the table, shows the 6-DOF boat's larger weather helm).
+   With the sail x{SAIL_FACTOR:g} and the roll control off, the 6-DOF boat **broaches**: in a gust at
+   25-35° of heel the weather helm exceeds the rudder (δ_r at its 35° stop), the boat rounds up to
+   ψ_min = {xm0['sim1']['heading_min']:.0f}° / {xm1['sim1']['heading_min']:.0f}° (seeds 0 / 1; the wind comes
+   from -90°) and stalls ({xm0['sim1']['mean_surge']:.2f} / {xm1['sim1']['mean_surge']:.2f} m/s). With heave
+   and pitch held it does not at 10 m/s ({dx0['sim1']['mean_surge']:.2f} m/s, ψ_min
+   {dx0['sim1']['heading_min']:.1f}°){broach_text}. The roll law, holding 10°, prevents it
+   ({xm0['sim3']['mean_surge']:.2f} / {xm1['sim3']['mean_surge']:.2f} m/s in sim 3). The paper's 4-DOF
+   model (eqs. 3-4) has no heel-induced yaw moment of this size and cannot broach.
+"""
+
+
+def _share_rows(share, raw, smoke) -> list[dict]:
+    alt = None if smoke else shares(raw[("shares", "paper", "sail", 0)])
+    rows = []
+    for world, label in WORLDS.items():
+        s = share[world]
+        for key, paper in PAPER_SHARES.items():
+            cause = ""
+            if key == "keel" and abs(s[key] / paper - 1) > 0.10:
+                cause = (f"the rudder, at {s['rudder_deg']:.1f}°, sees the keel's leeway (eqs. 30, 34) and carries "
+                         f"side force too: rudder/keel roll moment {s['rudder_Nm'] / s['keel_Nm']:.2f}, against "
+                         f"A_r C_L0r h3 / (A_k C_L0k h2) = {_rudder_keel_ratio():.2f} from the foil data; the paper's "
+                         "1 % for rudder and drag implies a rudder that carries almost none; not isolated")
+                if alt is not None and world == "paper":
+                    cause += f"; not the sail: sail x{SAIL_FACTOR:g} gives keel {100 * alt['keel']:.1f} %"
+            elif key == "rudder + damping" and abs(s[key] / paper - 1) > 0.10:
+                cause = "as the keel row: mostly the rudder"
+            rows.append({"quantity": f"share of |roll moment|: {key}", "world": label, "paper": paper,
+                         "ours": s[key], "cause": cause})
+    return rows
+
+
+def _rudder_keel_ratio() -> float:
+    """Roll-moment ratio of rudder to keel at the same angle of attack (linear lift)."""
+    from sailmujoco.controllers.wille import lift_slope
+
+    from sailmujoco.params import get_boat
+
+    p = get_boat("wille_yacht")
+    return (p.rudder.area * lift_slope(p.rudder) * -p.rudder.z) / (p.keel.area * lift_slope(p.keel) * -p.keel.z)
+
+
+def _fig8_rows(optima, tables, switch8) -> list[dict]:
+    rows = []
+    for (variant, wind), heel in optima.items():
+        table = tables[variant]
+        ok = table[(table["wind_speed"] == wind) & (table["status"] == "ok")]
+        top_heel = math.degrees(float(ok["mean_heel"].max())) if len(ok) else float("nan")
+        slow = ok[ok["mean_surge"] < STALLED]
+        cause = f"the boat heels at most {top_heel:.0f}° (mean of the window) with λ100 here"
+        if len(slow):
+            cause = (f"the MuJoCo boat broaches for φ_d ≥ {slow['heel_desired_deg'].min():g}° "
+                     f"(u < {STALLED:g} m/s; left out): see Table 1 cause 7")
+        rows.append({"quantity": f"φ_d of the top surge speed at U10 = {wind:g} m/s [deg]",
+                     "world": FIG8_LABELS[variant], "paper": PAPER_OPTIMUM_DEG[wind], "ours": heel,
+                     "cause": cause})
+    if switch8 is not None and len(switch8):
+        for wind in FIG8_WINDS:
+            rows.append({"quantity": f"φ_d of the top surge speed at U10 = {wind:g} m/s [deg]",
+                         "world": f"{WORLDS['paper']}, sail x{SAIL_FACTOR:g}", "paper": PAPER_OPTIMUM_DEG[wind],
+                         "ours": optimum(switch8, wind), "cause": "switch: the sail-force level"})
+    return rows
+
+
+def _fig8_text(tables, switch8) -> str:
+    parts = []
+    for variant, t in tables.items():
+        for wind in FIG8_WINDS:
+            rows = t[(t["wind_speed"] == wind) & (t["status"] == "ok")].sort_values("heel_desired_deg")
+            if rows.empty:
+                continue
+            parts.append(f"{FIG8_LABELS[variant]}, U10 = {wind:g} m/s: u = "
+                         + ", ".join(f"{u:.2f}" for u in rows["mean_surge"]) + " m/s at φ_d = "
+                         + ", ".join(f"{h:g}" for h in rows["heel_desired_deg"]) + "°.")
+    text = ("The curve rises while φ_d limits the heel; once φ_d exceeds the heel the boat reaches "
+            "with λ100 the law is never on and the curve is flat. The paper's optimum is a maximum "
+            "inside that range: heeling further turns β_ws towards head-on (eqs. 26-27). "
+            + " ".join(parts))
+    if switch8 is not None and len(switch8):
+        text += (f" With the sail force x{SAIL_FACTOR:g} (paper world) the boat heels further and the "
+                 "maximum moves to " + " and ".join(f"{optimum(switch8, w):.0f}° at {w:g} m/s"
+                                                   for w in FIG8_WINDS)
+                 + ": where the optimum lies depends on the sail-force level.")
+    return text

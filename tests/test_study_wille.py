@@ -1,0 +1,103 @@
+"""The Wille studies (2016a Table 2, 2016b Table 1) in smoke mode: they run, write their report
+and figures, and their headline numbers say what the papers say in kind.
+
+Smoke mode is short (30 s close-hauled, 60 s beam reach, a 2 x 2 Fig. 8 grid): the assertions
+are on properties that already hold then, not on the paper's numbers (the full studies compare
+those in their reports).
+"""
+
+import math
+
+import pandas as pd
+import pytest
+from sailmujoco.studies import wille_course_table2, wille_roll_table1
+
+
+@pytest.fixture(scope="module")
+def course(tmp_path_factory):
+    out = tmp_path_factory.mktemp("wille_course_table2")
+    return out, wille_course_table2.run(out, smoke=True, workers=1, progress=False)
+
+
+@pytest.fixture(scope="module")
+def roll(tmp_path_factory):
+    out = tmp_path_factory.mktemp("wille_roll_table1")
+    return out, wille_roll_table1.run(out, smoke=True, workers=1, progress=False)
+
+
+def test_course_study_writes_report_and_figures(course):
+    out, _ = course
+    report = (out / "report.md").read_text()
+    assert "Table 2" in report
+    assert "| quantity | world | paper | ours | difference | cause |" in report
+    for name in ("fig4_position.png", "fig5_course.png"):
+        assert (out / name).stat().st_size > 10_000, name
+    table = pd.read_csv(out / "table2.csv")
+    assert len(table) == 4  # two controllers in two worlds
+    assert set(table["law"]) == {"heading", "course"}
+
+
+@pytest.mark.parametrize("world", ["paper", "mujoco"])
+def test_course_controller_cuts_the_drift(course, world):
+    _, h = course
+    # the heading controller drifts to leeward (east: the wind comes from 310 deg) by degrees
+    assert h[f"{world}_heading_east"] > 0.0
+    assert 1.0 < h[f"{world}_heading_error_deg"] < 6.0
+    # both sail north, close-hauled
+    assert h[f"{world}_heading_north"] > 20.0 and h[f"{world}_course_north"] > 20.0
+    # the correction term removes most of it (done-when for the full paper-world run: >= 80 %)
+    assert h[f"{world}_error_reduction"] > 0.6
+    assert h[f"{world}_course_error_deg"] < 0.4 * h[f"{world}_heading_error_deg"]
+
+
+def test_course_study_paper_world_is_quiet_at_50_hz(course):
+    _, h = course
+    assert h["paper_heading_rudder_rms_deg"] < 3.0  # no rudder limit cycle at the headline rate
+    assert h["wall_time_s"] < 60.0
+
+
+def test_roll_study_writes_report_and_figures(roll):
+    out, _ = roll
+    report = (out / "report.md").read_text()
+    for heading in ("Table 1", "Fig. 3", "Fig. 8"):
+        assert heading in report
+    pngs = sorted(p.name for p in out.glob("*.png"))
+    assert len(pngs) == 5, pngs  # Figs. 3, 5, 6, 7, 8
+    for name in pngs:
+        assert (out / name).stat().st_size > 10_000, name
+    for world in ("paper", "mujoco"):  # the sweep engine's store
+        assert (out / f"fig8_sweep_{world}" / "results.parquet").exists()
+
+
+@pytest.mark.parametrize("world", ["paper", "mujoco"])
+def test_roll_study_table1_numbers(roll, world):
+    _, h = roll
+    for sim in ("sim1", "sim1_mean", "sim2", "sim3"):
+        assert 0.1 < h[f"{world}_{sim}_roll_amplitude"] < 15.0
+        assert 0.1 < h[f"{world}_{sim}_max_roll_rate"] < 20.0
+        assert 4.0 < h[f"{world}_{sim}_mean_surge"] < 10.0  # beam reach in 10 m/s
+    # the roll control with the true wind rolls less than lambda_100 alone (either baseline)
+    assert h[f"{world}_sim3_roll_amplitude"] < h[f"{world}_sim1_roll_amplitude"]
+    assert h[f"{world}_sim3_roll_amplitude"] < h[f"{world}_sim1_mean_roll_amplitude"]
+    # and never heels more on average than lambda_100 (it can only take moment away)
+    assert h[f"{world}_sim3_mean_heel"] <= h[f"{world}_sim1_mean_heel"] + 0.2
+
+
+@pytest.mark.parametrize("world", ["paper", "mujoco"])
+def test_roll_study_moment_shares(roll, world):
+    _, h = roll
+    shares = [h[f"{world}_share_{k}"] for k in ("sail_restoring", "keel", "rudder_damping")]
+    assert sum(shares) == pytest.approx(1.0, abs=1e-9)
+    # §3: sail and restoring dominate (paper 91 %), the keel is next (8 %), the rest small (1 %)
+    assert shares[0] > 0.85
+    assert shares[1] > shares[2]
+    assert shares[2] < 0.05
+
+
+def test_roll_study_fig8_grid(roll):
+    _, h = roll
+    for world in ("paper", "mujoco"):
+        for wind in (13, 16):
+            assert h[f"{world}_fig8_optimum_deg_{wind}"] in (10.0, 30.0)  # a grid point in smoke mode
+    assert h["wall_time_s"] < 60.0
+    assert math.isfinite(h["simulation_wall_time_s"])
