@@ -42,6 +42,9 @@ from .common import Progress, Report, relative_difference, run_episode, setup_ma
 
 NAME = "viel_fig3"
 TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, three worlds"
+# the scenario `sailmujoco study viel_fig3 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "position_keeping", "controller": "viel",
+         "seconds": 120.0, "camera": "top", "case": 2}
 
 PAPER_MAX_M = 6.4  # m, Viel §5.2: distance after entering the target area stays below this
 D_T, D_M = 7.0, 14.0  # m, Viel §5.1 target and pre-arrival radii

@@ -39,6 +39,9 @@ from .common import Progress, Report, relative_difference, setup_matplotlib, tim
 
 NAME = "wille_course_table2"
 TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
+# the scenario `sailmujoco study wille_course_table2 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "course_hold", "controller": "wille_course",
+         "seconds": 60.0, "camera": "top", "control_timestep": 0.02}
 BOAT = "wille_yacht"
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 CONTROL_TIMESTEP = 0.02  # s, 50 Hz (see the module docstring)

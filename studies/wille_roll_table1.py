@@ -43,6 +43,9 @@ from .wille_course_table2 import make_env, run_jobs
 
 NAME = "wille_roll_table1"
 TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"
+# the scenario `sailmujoco study wille_roll_table1 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "beam_reach_roll", "controller": "wille_roll",
+         "seconds": 60.0, "controller_options": {"wind": "perfect"}}
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 SIMS = {  # options of the registered "wille_roll" controller
     "sim1": dict(roll_control=False, wind="perfect"),
