@@ -6,9 +6,9 @@ import sys
 from sailmujoco.cli import main
 
 
-def test_help_runs():
+def test_help_runs(tmp_path):
     out = subprocess.run([sys.executable, "-m", "sailmujoco.cli", "--help"], capture_output=True,
-                         text=True, check=True)
+                         text=True, check=True, cwd=tmp_path)
     assert "check" in out.stdout
 
 

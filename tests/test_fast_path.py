@@ -56,7 +56,7 @@ def test_compiled_equals_interpreted(boat, hydrostatics, tmp_path):
               f"from test_fast_path import evaluate;"
               f"json.dump(evaluate({boat!r}, {hydrostatics!r}, 21), open({str(tmp_path / 'r.json')!r}, 'w'))")
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
-    subprocess.run([sys.executable, "-c", script], check=True, env=env, timeout=600)
+    subprocess.run([sys.executable, "-c", script], check=True, env=env, timeout=600, cwd=tmp_path)
     reference = json.loads((tmp_path / "r.json").read_text())
     assert fast["status"] == reference["status"]
     assert all(s == kernels.STATUS_OK for s in fast["status"])

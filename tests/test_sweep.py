@@ -105,10 +105,13 @@ def test_killing_the_driver_then_resume_runs_only_the_missing(tmp_path):
     out = tmp_path / "out"
     cmd = [sys.executable, "-m", "sailmujoco.cli", "sweep", str(spec_file), "--out", str(out),
            "--scheduler", "serial", "--no-progress"]
+    # run outside the checkout: from its root, `python -m` would import the source tree
+    # instead of the installed package
     driver = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
-                              start_new_session=True)
+                              start_new_session=True, cwd=tmp_path)
     deadline = time.time() + 120
     while time.time() < deadline and len(list((out / "runs").glob("*.json"))) < 3:
+        assert driver.poll() is None, "the sweep driver exited before it was killed"
         time.sleep(0.05)
     os.killpg(driver.pid, signal.SIGKILL)
     driver.wait()
