@@ -33,7 +33,7 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
          control_timestep: float = 0.1, time_limit: float | None = None,
          sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
          paper_model: str = "paper", sail_tangential: bool = True,
-         forces: ForceSwitches | None = None,
+         forces: ForceSwitches | None = None, params=None,
          boat_options: dict | None = None, **task_options) -> SailEnvironment:
     """Build an environment.
 
@@ -55,6 +55,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         Keep the sail's tangential force C_T (False: Saoud's Assumption 4 made true).
     boat_options : dict, optional
         Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
+    params : BoatParams, optional
+        The boat's parameters as an object (a changed copy, for a modelling switch); then
+        ``boat`` only names the run and ``boat_options`` must be empty.
     task_options
         Passed to the task (e.g. ``case=3`` for position_keeping).
     """
@@ -62,7 +65,10 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         raise ValueError(f"unknown task {task!r}; known tasks: {', '.join(TASKS)}")
     if world not in WORLDS:
         raise ValueError(f"unknown world {world!r}; choose one of {WORLDS}")
-    params = get_boat(boat, **(boat_options or {}))
+    if params is None:
+        params = get_boat(boat, **(boat_options or {}))
+    elif boat_options:
+        raise ValueError("give either params or boat_options, not both")
     try:
         the_task = TASKS[task](seed=seed, **task_options)
     except TypeError as err:

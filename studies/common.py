@@ -96,6 +96,31 @@ def _cell(value) -> str:
     return str(value).replace("|", "\\|")
 
 
+def parallel_map(fn, items: list, workers: int | None = None, progress: bool = True,
+                 label: str = "simulations") -> list:
+    """``[fn(item) for item in items]`` in ``workers`` spawned processes (MuJoCo and numba state
+    stay per process; 1 worker: in this process), with a progress bar; results in input order."""
+    import multiprocessing
+    from concurrent.futures import ProcessPoolExecutor, as_completed
+
+    workers = workers or multiprocessing.cpu_count() or 1
+    bar = Progress(len(items), label, progress)
+    results = [None] * len(items)
+    if workers <= 1 or len(items) <= 1:
+        for i, item in enumerate(items):
+            results[i] = fn(item)
+            bar.step()
+    else:
+        context = multiprocessing.get_context("spawn")
+        with ProcessPoolExecutor(max_workers=min(workers, len(items)), mp_context=context) as pool:
+            futures = {pool.submit(fn, item): i for i, item in enumerate(items)}
+            for future in as_completed(futures):
+                results[futures[future]] = future.result()
+                bar.step()
+    bar.close()
+    return results
+
+
 class Progress:
     """A tqdm bar over a known number of simulations (silent when ``show`` is False)."""
 

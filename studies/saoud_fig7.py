@@ -22,9 +22,7 @@ range of the paper's other angle plots (Figs. 3-5 in 001), and mark the no-go zo
 from __future__ import annotations
 
 import math
-import multiprocessing
 import shutil
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import numpy as np
@@ -32,7 +30,7 @@ import pandas as pd
 
 from sailmujoco import polar, sweep
 
-from .common import Progress, Report, run_episode, setup_matplotlib, timer
+from .common import Report, parallel_map, run_episode, setup_matplotlib, timer
 from .saoud_fig6 import (
     BOAT,
     L_PHI,
@@ -161,21 +159,12 @@ def law_run(world: str, l_phi: float, law: str, angle: float, duration: float) -
 
 def law_runs(jobs, *, workers=None, progress=True) -> pd.DataFrame:
     """Run ``law_run`` over ``jobs`` (serially, or in spawned worker processes)."""
-    bar = Progress(len(jobs), "Fig. 7 S and Bm", progress)
-    rows = []
-    workers = workers or multiprocessing.cpu_count() or 1
-    if workers == 1:
-        for job in jobs:
-            rows.append(law_run(*job))
-            bar.step()
-    else:
-        context = multiprocessing.get_context("spawn")  # MuJoCo and numba state per process
-        with ProcessPoolExecutor(max_workers=workers, mp_context=context) as pool:
-            for future in as_completed([pool.submit(law_run, *job) for job in jobs]):
-                rows.append(future.result())
-                bar.step()
-    bar.close()
+    rows = parallel_map(_law_run_job, jobs, workers, progress, "Fig. 7 S and Bm")
     return pd.DataFrame(rows).sort_values(["world", "l_phi", "law", "angle"]).reset_index(drop=True)
+
+
+def _law_run_job(job):
+    return law_run(*job)
 
 
 # ----------------------------------------------------------------------------- the study

@@ -19,9 +19,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import multiprocessing
-import os
-from concurrent.futures import ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 import numpy as np
@@ -32,10 +29,8 @@ from sailmujoco.controllers.wille_roll import WilleRollSail
 
 from sailmujoco import suite, sweep
 from sailmujoco.params import get_boat
-from sailmujoco.physics import BoatPhysics, ForceSwitches
-from sailmujoco.tasks.base import PaperPhysics, SailEnvironment
 
-from .common import Progress, Report, relative_difference, setup_matplotlib, timer
+from .common import Report, parallel_map, relative_difference, setup_matplotlib, timer
 
 NAME = "wille_course_table2"
 TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
@@ -66,47 +61,20 @@ def scaled_sail(params, factor: float):
 
 def make_env(task: str, world: str, *, seed: int = 0, sail_factor: float = 1.0,
              paper_model: str = "paper", control_timestep: float = 0.1, dofs: int = 6,
-             time_limit: float | None = None, **task_options) -> SailEnvironment:
-    """The Wille yacht on ``task`` in ``world``: :func:`sailmujoco.suite.load`, or, for the
-    sail-force switch (``sail_factor`` != 1), the same environment built from scaled parameters
-    (``suite.load`` takes boat names, not parameter objects). ``dofs``: 6, or 4 with heave and
-    pitch held (MuJoCo world)."""
-    if sail_factor == 1.0:
-        return suite.load(BOAT, task, world, seed=seed, control_timestep=control_timestep,
-                          time_limit=time_limit, paper_model=paper_model, dofs=dofs, **task_options)
-    from sailmujoco.reference.wille import Wille4DOF
-
+             time_limit: float | None = None, **task_options):
+    """The Wille yacht on ``task`` in ``world`` (:func:`sailmujoco.suite.load`), its sail
+    force scaled by ``sail_factor`` for the sail switch. ``dofs``: 6, or 4 with heave and pitch
+    held (MuJoCo world)."""
     params = scaled_sail(get_boat(BOAT), sail_factor)
-    the_task = suite.TASKS[task](seed=seed, **task_options)
-    switches = ForceSwitches()
-    if world == "mujoco":
-        physics = BoatPhysics.load(params=params, wind=the_task.wind(), forces=switches, dofs=dofs)
-    else:
-        physics = PaperPhysics(Wille4DOF(params=params, wind=the_task.wind(), switches=switches,
-                                         model=paper_model))
-    return SailEnvironment(physics, the_task, time_limit=time_limit or the_task.duration,
-                           control_timestep=control_timestep, legacy_step=False)
+    return suite.load(BOAT, task, world, seed=seed, control_timestep=control_timestep,
+                      time_limit=time_limit, paper_model=paper_model, dofs=dofs, params=params,
+                      **task_options)
 
 
 def run_jobs(simulate, jobs: list[dict], workers: int | None, progress: bool, label: str) -> dict:
-    """``{job["key"]: simulate(job)}``, in ``workers`` processes (1: in this process)."""
-    workers = workers or os.cpu_count() or 1
-    bar = Progress(len(jobs), label, progress)
-    results = {}
-    if workers <= 1 or len(jobs) <= 1:
-        for job in jobs:
-            results[job["key"]] = simulate(job)
-            bar.step()
-    else:
-        # fork: the children inherit the compiled kernels and the cached sail tables
-        context = multiprocessing.get_context("fork")
-        with ProcessPoolExecutor(max_workers=min(workers, len(jobs)), mp_context=context) as pool:
-            futures = {pool.submit(simulate, job): job["key"] for job in jobs}
-            for future in as_completed(futures):
-                results[futures[future]] = future.result()
-                bar.step()
-    bar.close()
-    return results
+    """``{job["key"]: simulate(job)}`` over worker processes (:func:`common.parallel_map`)."""
+    return dict(zip([job["key"] for job in jobs],
+                    parallel_map(simulate, jobs, workers, progress, label), strict=True))
 
 
 def percent(ours: float, paper: float) -> str:
