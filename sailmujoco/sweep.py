@@ -48,7 +48,6 @@ import math
 import os
 import sys
 import time
-import tomllib
 import traceback
 from importlib import metadata
 from pathlib import Path
@@ -56,6 +55,7 @@ from pathlib import Path
 import numpy as np
 
 from . import __version__
+from .tomlfile import read_toml
 
 TOP_KEYS = {"name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
             "options", "grid", "zip", "trajectory_rate"}
@@ -87,12 +87,7 @@ def make_controller(name: str, env, **options):
 def load_spec(path) -> dict:
     """Read and validate a sweep TOML file."""
     path = Path(path)
-    try:
-        spec = tomllib.loads(path.read_text())
-    except FileNotFoundError:
-        raise SweepError(f"sweep file {str(path)!r} does not exist") from None
-    except tomllib.TOMLDecodeError as err:
-        raise SweepError(f"sweep file {str(path)!r} does not parse as TOML: {err}") from None
+    spec = read_toml(path, "sweep file", SweepError)
     spec.setdefault("name", path.stem)
     return validate(spec)
 

@@ -22,7 +22,6 @@ Wind direction is where the wind comes *from* (compass bearing), see :mod:`sailm
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, fields
 from pathlib import Path
 
@@ -30,6 +29,7 @@ import numpy as np
 
 from .. import constants as c
 from .._jit import kernel
+from ..tomlfile import read_toml
 
 F_MAX = 0.4  # Hz, upper end of the simulated gust band (Wille §2.1)
 WANDER_DT = 0.1  # s, grid of the direction-wander random walk
@@ -111,14 +111,8 @@ class WindConfig:
     @classmethod
     def from_toml(cls, path: str | Path) -> WindConfig:
         """Load a wind file (TOML, optionally under a ``[wind]`` table)."""
-        path = Path(path)
-        try:
-            data = tomllib.loads(path.read_text())
-        except FileNotFoundError:
-            raise ValueError(f"wind file {str(path)!r} does not exist") from None
-        except tomllib.TOMLDecodeError as err:
-            raise ValueError(f"wind file {str(path)!r} does not parse as TOML: {err}") from None
-        return cls.from_dict(data.get("wind", data), source=f"wind file {str(path)!r}")
+        data = read_toml(path, "wind file")
+        return cls.from_dict(data.get("wind", data), source=f"wind file {str(Path(path))!r}")
 
 
 def norsok_spectrum(f, z, mean_speed_10):

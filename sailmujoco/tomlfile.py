@@ -1,0 +1,17 @@
+"""Reading the package's TOML files (wind files, sweep files) with one clear error."""
+
+from __future__ import annotations
+
+import tomllib
+from pathlib import Path
+
+
+def read_toml(path, what: str, error: type[Exception] = ValueError) -> dict:
+    """The parsed TOML at ``path``; a missing or malformed file raises ``error`` naming ``what``."""
+    path = Path(path)
+    try:
+        return tomllib.loads(path.read_text())
+    except FileNotFoundError:
+        raise error(f"{what} {str(path)!r} does not exist") from None
+    except tomllib.TOMLDecodeError as err:
+        raise error(f"{what} {str(path)!r} does not parse as TOML: {err}") from None
