@@ -32,3 +32,14 @@ def gusty(speed=10.0, seed=0, direction_deg=45.0):
 @pytest.fixture
 def rng():
     return np.random.default_rng(12345)
+
+
+def sail_observation(flow_xy, heel=0.0):
+    """The part of an observation a sail law reads: the apparent wind at the sail CE (body x-y,
+    FLU) and at the masthead, and the heel."""
+    from sailmujoco.frames import apparent_wind_angle
+
+    flow_xy = np.asarray(flow_xy, dtype=float)
+    return {"heel": np.array(heel), "apparent_wind_angle": np.array(apparent_wind_angle(flow_xy)),
+            "apparent_wind_speed": np.array(np.hypot(*flow_xy)),
+            "true_state": {"apparent_wind_ce": flow_xy}}

@@ -4,10 +4,9 @@ import math
 
 import numpy as np
 import pytest
+from conftest import sail_observation as _observation
 from sailmujoco.controllers.briere import BriereSail, briere_sail_angle
 from sailmujoco.controllers.saoud import equilibrium_heels, optimal_sail, sail_cost
-
-from sailmujoco.frames import apparent_wind_angle
 
 DEG = math.radians(1.0)
 
@@ -39,13 +38,6 @@ def test_odd_symmetry(rng):
     for t in rng.uniform(-math.pi, math.pi, 200):
         assert briere_sail_angle(-t) == pytest.approx(-briere_sail_angle(t), abs=1e-15)
     assert briere_sail_angle(2 * math.pi + 1.0) == pytest.approx(briere_sail_angle(1.0), abs=1e-12)
-
-
-def _observation(flow_xy, heel=0.0):
-    flow_xy = np.asarray(flow_xy, dtype=float)
-    return {"heel": np.array(heel), "apparent_wind_angle": np.array(apparent_wind_angle(flow_xy)),
-            "apparent_wind_speed": np.array(np.hypot(*flow_xy)),
-            "true_state": {"apparent_wind_ce": flow_xy}}
 
 
 @pytest.mark.parametrize("source", ["ce", "masthead"])

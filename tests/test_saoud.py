@@ -5,6 +5,7 @@ import time
 
 import numpy as np
 import pytest
+from conftest import sail_observation as _observation
 from sailmujoco.controllers import saoud
 from sailmujoco.controllers.base import Composite
 from sailmujoco.controllers.saoud import (
@@ -302,13 +303,6 @@ def test_conversion_matches_the_library_sail_force(rng):
         theirs = params.lambda_s * foil.saoud_normal_coefficient(sin_alpha_s) * (v @ v) * np.array(
             [-math.sin(delta), math.cos(delta), 0.0])
         np.testing.assert_allclose(ours, theirs, atol=1e-9 * max(1.0, np.abs(theirs).max()))
-
-
-def _observation(flow_xy, heel=0.0):
-    flow_xy = np.asarray(flow_xy, dtype=float)
-    return {"heel": np.array(heel), "apparent_wind_angle": np.array(apparent_wind_angle(flow_xy)),
-            "apparent_wind_speed": np.array(np.hypot(*flow_xy)),
-            "true_state": {"apparent_wind_ce": flow_xy}}
 
 
 @pytest.mark.parametrize("source", ["ce", "masthead"])
