@@ -17,6 +17,8 @@ Example::
 
 from __future__ import annotations
 
+import math
+
 from .params import BOATS, get_boat
 from .physics import BoatPhysics, ForceSwitches
 from .tasks.base import PaperPhysics, SailEnvironment
@@ -65,6 +67,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         raise ValueError(f"unknown task {task!r}; known tasks: {', '.join(TASKS)}")
     if world not in WORLDS:
         raise ValueError(f"unknown world {world!r}; choose one of {WORLDS}")
+    dt_ok = isinstance(control_timestep, (int, float)) and not isinstance(control_timestep, bool)
+    if not (dt_ok and math.isfinite(control_timestep) and control_timestep > 0):
+        raise ValueError(f"control_timestep must be a positive time in s, got {control_timestep!r}")
     if params is None:
         params = get_boat(boat, **(boat_options or {}))
     elif boat_options:
@@ -81,7 +86,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     elif task == "position_keeping":
         from .reference.viel import VielWorld
 
-        physics = VielPhysics(VielWorld(wind=wind))
+        # the world integrates adaptively inside a step; the step only has to divide the control period
+        sub_step = control_timestep / math.ceil(control_timestep / 0.05)
+        physics = VielPhysics(VielWorld(wind=wind), timestep=sub_step)
     else:
         from .reference.wille import Wille4DOF
 

@@ -23,6 +23,7 @@ from sailmujoco.reference.viel import (
     observation_from_world,
     psi_aw_from_awa,
     psi_tw_from_direction,
+    rudder_forces,
     viel_from_action,
 )
 
@@ -160,52 +161,90 @@ def test_observation_matches_world():
 # --- steady states -----------------------------------------------------------------------------
 
 
+def _rudder_speed(params, speed):
+    """The speed factor of eqs. 7-8: linear (our reading, Table 1's kg/s) or as printed (v|v|)."""
+    return speed if params.rudder_law == "linear" else speed * abs(speed)
+
+
 def _beam_reach_balance(params, a, sail_viel, v, delta_r=0.0):
     """Eq. 4 right-hand side by hand for a boat heading east, wind blowing north (psi_tw - theta = pi/2)."""
     wx, wy = -abs(v), a  # §2.3 with cos(pi/2) = 0, sin(pi/2) = 1
     a_aw, psi_aw = math.hypot(wx, wy), math.atan2(wy, wx)
     g_s = params.p4 * a_aw * math.sin(sail_viel - psi_aw)
-    g_rv = params.p5 * v * v * math.sin(delta_r)
+    g_rv = params.p5 * _rudder_speed(params, v) * math.sin(delta_r)
     return (g_s * math.sin(sail_viel) - g_rv * params.p11 * math.sin(delta_r) - params.p2 * v * abs(v)), g_s
 
 
-def test_terminal_speed_on_a_beam_reach():
-    """Fixed sail (60 deg to leeward), rudder amidships, steady beam wind: eq. 4 balance by brentq.
+def _sway_balance(params, a, u, delta_r=0.0):
+    """Eq. 5 right-hand side by hand, beam wind: -g_ru p11 cos(dr) - p2 u|u| + p1 a^2."""
+    g_ru = params.p5 * _rudder_speed(params, u) * math.cos(delta_r)
+    return -g_ru * params.p11 * math.cos(delta_r) - params.p2 * u * abs(u) + params.p1 * a * a
+
+
+def test_rudder_forces_read_linear_in_speed():
+    """Eqs. 7-8 read with Table 1's unit (p5 in kg/s): forces linear in v and u; "printed" keeps v^2."""
+    linear, printed = P, replace(P, rudder_law="printed")
+    assert linear.rudder_law == "linear"
+    g_rv, g_ru = rudder_forces(linear, 0.4, -0.2, 0.3)
+    assert g_rv == pytest.approx(1500 * 0.4 * math.sin(0.3))
+    assert g_ru == pytest.approx(1500 * -0.2 * math.cos(0.3))
+    g_rv, g_ru = rudder_forces(printed, 0.4, -0.2, 0.3)
+    assert g_rv == pytest.approx(1500 * 0.16 * math.sin(0.3))
+    assert g_ru == pytest.approx(-1500 * 0.04 * math.cos(0.3))
+    # the two readings agree at 1 m/s, so the difference is all in the low-speed authority
+    assert rudder_forces(linear, 1.0, 1.0, 0.3) == pytest.approx(rudder_forces(printed, 1.0, 1.0, 0.3))
+    with pytest.raises(ValueError, match="rudder_law"):
+        replace(P, rudder_law="cubic")
+
+
+def test_linear_rudder_turns_harder_when_slow():
+    """At 0.3 m/s with the rudder over, the linear law gives 1/0.3 times the printed yaw moment."""
+    worlds = {law: VielWorld(replace(P, rudder_law=law)) for law in ("linear", "printed")}
+    for world in worlds.values():
+        world.reset([0.0, 0.0, 0.0, 0.3, 0.0, 0.0])
+    rates = {law: w.rates(action=[-0.5, 0.0])[5] for law, w in worlds.items()}
+    assert rates["linear"] == pytest.approx(rates["printed"] / 0.3, rel=1e-9)
+
+
+@pytest.mark.parametrize("law", ["linear", "printed"])
+def test_terminal_speed_on_a_beam_reach(law):
+    """Fixed sail (60 deg to leeward), rudder amidships, steady beam wind: eqs. 4-5 balance by brentq.
 
     p6 = p7 cos(delta_s) makes the sail moment of eq. 6 vanish, so theta stays constant and eqs. 4
-    and 5 decouple: v solves 0 = g_s sin(delta_s) - p2 v^2, u solves
-    0 = -(p5 p11 + p2) u|u| + p1 a^2 sin(psi_tw - theta).
+    and 5 decouple: v solves 0 = g_s sin(delta_s) - p2 v^2, u solves eq. 5 with psi_tw - theta = pi/2.
     """
     sail = math.radians(60.0)  # ours, to port = leeward for a wind from starboard
-    params = replace(P, p6=P.p7 * math.cos(sail))
+    params = replace(P, p6=P.p7 * math.cos(sail), rudder_law=law)
     a = 8.0
     v_hand = brentq(lambda v: _beam_reach_balance(params, a, -sail, v)[0], 1e-3, 50.0)
-    u_hand = math.sqrt(params.p1 * a * a / (params.p5 * params.p11 + params.p2))
+    u_hand = brentq(lambda u: _sway_balance(params, a, u), 0.0, 5.0)
     world = VielWorld(params, wind=steady_wind(speed=a))
     world.reset([0, 0, 0, 0.5, 0, 0])
     for _ in range(120):  # the quadratic sway drag converges at ~0.17 /s near u_hand
         world.step([0.0, sail], 1.0)
-    assert v_hand > 1.0
+    assert v_hand > 1.0 and 0.0 < u_hand < 0.1
     assert world.forward_speed() == pytest.approx(v_hand, rel=1e-6)
     assert world.sway_speed() == pytest.approx(u_hand, rel=1e-6)
     assert world.yaw() == 0.0 and world.yaw_rate() == 0.0
     assert world.velocity() == pytest.approx([v_hand, u_hand], rel=1e-5)
 
 
-def test_yaw_trimmed_steady_state_default_params():
-    """Default Table 1: the rudder trim that cancels the sail moment (eq. 6 with omega = 0) and the
-    speed that balances eq. 4, solved by hand; the model's rates vanish there and it stays there."""
+@pytest.mark.parametrize("law", ["linear", "printed"])
+def test_yaw_trimmed_steady_state(law):
+    """Table 1: the rudder trim that cancels the sail moment (eq. 6 with omega = 0) and the speed
+    that balances eq. 4, solved by hand; the model's rates vanish there and it stays there."""
     sail, a = math.radians(50.0), 8.0
-    p = P
+    p = replace(P, rudder_law=law)
 
-    def trim(v):  # eq. 6: g_s (p6 - p7 cos ds) = p8 p5 v^2 sin(dr) cos(dr)
+    def trim(v):  # eq. 6: g_s (p6 - p7 cos ds) = p8 p5 f(v) sin(2 dr) / 2
         g_s = _beam_reach_balance(p, a, -sail, v)[1]
-        return 0.5 * math.asin(2 * g_s * (p.p6 - p.p7 * math.cos(-sail)) / (p.p8 * p.p5 * v * v))
+        moment = g_s * (p.p6 - p.p7 * math.cos(-sail))
+        return 0.5 * math.asin(2 * moment / (p.p8 * p.p5 * _rudder_speed(p, v)))
 
     v_hand = brentq(lambda v: _beam_reach_balance(p, a, -sail, v, trim(v))[0], 0.5, 50.0)
     delta_r = trim(v_hand)
-    u_hand = math.sqrt(p.p1 * a * a / (p.p5 * p.p11 * math.cos(delta_r) ** 2 + p.p2))
-    world = VielWorld(wind=steady_wind(speed=a))
+    u_hand = brentq(lambda u: _sway_balance(p, a, u, delta_r), 0.0, 5.0)
+    world = VielWorld(p, wind=steady_wind(speed=a))
     state = [0, 0, 0, v_hand, u_hand, 0]
     action = action_from_viel(delta_r, -sail)
     assert np.allclose(world.rates(state, action)[2:], 0.0, atol=1e-9)
@@ -397,26 +436,14 @@ def runs():
     return {case: closed_loop(case) for case in CASES}
 
 
-@pytest.mark.parametrize("case", [1, 2])
+@pytest.mark.parametrize("case", CASES)
 def test_closed_loop_keeps_position(runs, case):
-    """Steady winds (our WindField, no gusts/wander): enters the target area, then stays within 7 m.
-
-    In this world the boat, nearly stopped in the target area with little rudder authority
-    (g_rv ~ v^2), drifts sideways under p1 a_tw^2 and nears the area's edge after ~150 s, so the
-    margin below 7 m is small (about 6.93 m at dt = 0.1 s from this start; with the paper's
-    dt = 0.01 s case 1 goes out to about 8.3 m and comes back). The paper reports < 6.4 m."""
+    """§5.1 winds (our WindField, no gusts/wander), from 45 m downwind: the boat works upwind,
+    enters the target area and stays within d_T = 7 m; over the last 100 s it is within the
+    paper's 6.4 m. (With eqs. 7-8 as printed it stalls beam-on and drifts out: the study.)"""
     d, modes = runs[case]
     entered = np.flatnonzero(d < 7.0)
     assert entered.size > 0 and d[0] > 40.0
     assert d[entered[0]:].max() < 7.0
+    assert d[-1000:].max() < 6.4  # the last 100 s at dt = 0.1 s
     assert {cv.TACK, cv.UPWIND_STOP, cv.UPWIND_DRIVE} <= modes
-
-
-@pytest.mark.parametrize("case", [3, 4, 5, 6])
-def test_closed_loop_paper_case_winds(runs, case):
-    """Oscillating winds: enters the target area and comes back whenever the wind pushes it out."""
-    d, _ = runs[case]
-    entered = np.flatnonzero(d < 7.0)
-    assert entered.size > 0
-    assert d[entered[0]:].max() < 7.5
-    assert d[-1] < 7.5

@@ -20,7 +20,7 @@ Wind angles (Viel §2.3, Jaulin's convention)
     wind angle (AWA, from the bow, positive from starboard) ``psi_aw = pi - AWA``.
 
 Rudder and sail signs (derived from eqs. 4-6 and 9)
-    Eq. 6 gives the rudder moment ``-p8 g_rv cos(delta_r)`` with ``g_rv = p5 v^2 sin(delta_r)``:
+    Eq. 6 gives the rudder moment ``-p8 g_rv cos(delta_r)`` with ``g_rv = p5 v sin(delta_r)``:
     a positive ``delta_r`` turns the boat clockwise (to starboard), so the rudder lift pushes
     the stern to port and the trailing edge points to starboard. For the sail, eqs. 4, 6 and 9
     are reproduced exactly by a boom pointing aft along ``(-cos delta_s, -sin delta_s)`` from a
@@ -36,12 +36,13 @@ Rudder and sail signs (derived from eqs. 4-6 and 9)
 Readings of the text (the paper's own model, kept as printed unless marked)
     * §2.3 writes the apparent wind with ``-|v|``: kept (the paper world), although for a boat
       going astern (``v < 0``, which Viel's step 4 allows) the physical term is ``-v``.
-    * Eq. 7 uses ``v^2`` (not ``v|v|``), so going astern the rudder still turns the boat the
-      same way and the rudder brake in eq. 4 pushes astern; eq. 6's ``-p3 omega v`` becomes an
-      anti-damping for ``v < 0``. Kept as printed; only slow astern motion occurs in practice.
+    * Eqs. 7-8 print ``p5 v^2`` and ``p5 u|u|`` with p5 in kg/s: read linear in the speed
+      (Jaulin's law, which Table 1's p5 belongs to), see :func:`rudder_forces`; the printed
+      squares are ``VielParams(rudder_law="printed")``. Eq. 6's ``-p3 omega v`` becomes an
+      anti-damping for ``v < 0``; kept as printed, only slow astern motion occurs in practice.
     * Eq. 5 has ``-g_ru p11 cos(delta_r)`` while the proof (A.7) drops ``p11``; eq. 5 is used.
-    * Table 1 gives p2 and p5 in kg/s; with the quadratic laws of eqs. 4 and 7 they are in
-      kg/m (they are kg/s in Jaulin's original linear-in-v rudder law). Values kept.
+    * Table 1 gives p2 in kg/s too, but eq. 4's friction ``p2 v|v|`` is quadratic in Jaulin's
+      model as well (the unit is his mislabel): kept quadratic, p2 in kg/m.
 """
 
 from __future__ import annotations
@@ -56,6 +57,7 @@ from ..forces.wind import WindConfig, WindField
 from ..frames import heading_from_yaw, wrap_angle
 
 STATE_NAMES = ("x", "y", "theta", "v", "u", "omega")
+RUDDER_LAWS = ("linear", "printed")  # Viel eqs. 7-8: read linear in the speed, or as printed
 
 
 @dataclass(frozen=True)
@@ -68,7 +70,7 @@ class VielParams:
     p2 : tangential friction, ``p2 v|v|`` and ``p2 u|u|`` [kg/m]
     p3 : angular friction, ``p3 omega v`` [kg m]
     p4 : sail lift, ``g_s = p4 a_aw sin(delta_s - psi_aw)`` [kg/s]
-    p5 : rudder lift, ``g_rv = p5 v^2 sin(delta_r)`` [kg/m]
+    p5 : rudder lift, ``g_rv = p5 v sin(delta_r)`` [kg/s] (eq. 7 read linear, :func:`rudder_forces`)
     p6 : distance from the mast to the sail's centre of effort [m]
     p7 : distance from G to the mast [m]
     p8 : distance from G to the rudder [m]
@@ -77,13 +79,14 @@ class VielParams:
     p11 : rudder brake coefficient [-]
     rudder_max : |delta_r| limit [rad]
     sail_max : |delta_s| limit [rad]
+    rudder_law : "linear" (default) or "printed": how eqs. 7-8 are read, see :func:`rudder_forces`
     """
 
     p1: float = 0.03  # kg/m, Viel Table 1 "drift coefficient" (unit not printed)
     p2: float = 40.0  # kg/m, Viel Table 1 "tangential friction" (printed kg/s, see module doc)
     p3: float = 6000.0  # kg m, Viel Table 1 "angular friction"
     p4: float = 200.0  # kg/s, Viel Table 1 "sail lift"
-    p5: float = 1500.0  # kg/m, Viel Table 1 "rudder lift" (printed kg/s, see module doc)
+    p5: float = 1500.0  # kg/s, Viel Table 1 "rudder lift" (kg/m with eq. 7's printed v^2)
     p6: float = 0.5  # m, Viel Table 1 "distance to sail" (mast to centre of effort)
     p7: float = 0.5  # m, Viel Table 1 "distance to mast" (G to mast)
     p8: float = 2.0  # m, Viel Table 1 "distance to rudder"
@@ -92,9 +95,15 @@ class VielParams:
     p11: float = 0.2  # -, Viel Table 1 "rudder break coefficient"
     rudder_max: float = math.pi / 4.0  # rad, Viel §2.1 delta_r,max
     sail_max: float = math.pi / 2.0  # rad, Viel §2.1 delta_s,max
+    rudder_law: str = "linear"  # Viel eqs. 7-8: "linear" (Table 1's kg/s, Jaulin) or "printed" (v^2)
+
 
     def __post_init__(self):
+        if self.rudder_law not in RUDDER_LAWS:
+            raise ValueError(f"VielParams.rudder_law must be one of {RUDDER_LAWS}, got {self.rudder_law!r}")
         for f in fields(self):
+            if f.name == "rudder_law":
+                continue
             value = getattr(self, f.name)
             if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
                 raise ValueError(f"VielParams.{f.name} must be a finite number, got {value!r}")
@@ -158,6 +167,26 @@ def apparent_wind(a_tw: float, psi_tw: float, theta: float, v: float) -> tuple[f
     return math.hypot(wx, wy), math.atan2(wy, wx)
 
 
+def rudder_forces(params: VielParams, v: float, u: float, delta_r: float) -> tuple[float, float]:
+    """(g_rv, g_ru) [N], the rudder (and keel) forces of Viel eqs. 7-8.
+
+    Eq. 7 prints ``g_rv = p5 v^2 sin(delta_r)`` and eq. 8 ``g_ru = p5 u|u| cos(delta_r)``, but
+    Table 1 gives p5 in kg/s, which makes a force only of ``p5 v``: the unit and the value
+    (1500) are those of Jaulin's rudder law ``p5 v sin(delta_r)`` in the model Table 1 is taken
+    from (Melin 2015 after Jaulin; p1-p11 are Jaulin's). We read the printed squares as the error
+    and use the law linear in the speed for both (``rudder_law="linear"``, the default):
+    ``g_rv = p5 v sin(delta_r)``, ``g_ru = p5 u cos(delta_r)``. ``rudder_law="printed"`` keeps
+    eqs. 7-8 as printed (then p5 is in kg/m); the viel_fig3 study reports both. Measured: with
+    the printed squares the rudder has no authority once the boat has stopped in the target area
+    (g_rv ~ v^2), and the hull wind p1 a_tw^2 turns and pushes it out of the area.
+    """
+    if params.rudder_law == "printed":
+        return (params.p5 * v * v * math.sin(delta_r),  # Viel eq. 7 as printed
+                params.p5 * u * abs(u) * math.cos(delta_r))  # Viel eq. 8 as printed
+    return (params.p5 * v * math.sin(delta_r),  # Viel eq. 7, read linear in v (Table 1's kg/s)
+            params.p5 * u * math.cos(delta_r))  # Viel eq. 8, read linear in u (Table 1's kg/s)
+
+
 def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
                  psi_tw: float) -> dict:
     """The force terms of eqs. 4-9 (Viel signs), N and N m.
@@ -169,8 +198,7 @@ def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw
     p = params
     _, _, theta, v, u, omega = (float(s) for s in state)
     a_aw, psi_aw = apparent_wind(a_tw, psi_tw, theta, v)
-    g_rv = p.p5 * v * v * math.sin(delta_r)  # Viel eq. 7
-    g_ru = p.p5 * u * abs(u) * math.cos(delta_r)  # Viel eq. 8
+    g_rv, g_ru = rudder_forces(p, v, u, delta_r)  # Viel eqs. 7-8 (reading: see rudder_forces)
     g_s = p.p4 * a_aw * math.sin(delta_s - psi_aw)  # Viel eq. 9
     hull_wind = p.p1 * a_tw * a_tw
     surge = (g_s * math.sin(delta_s) - g_rv * p.p11 * math.sin(delta_r) - p.p2 * v * abs(v)
