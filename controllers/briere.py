@@ -57,14 +57,14 @@ class BriereSail:
 
     Parameters
     ----------
-    wind_source : {"ce", "masthead"}
-        Where the apparent wind is read (:func:`controllers.saoud.observed_apparent_wind`,
-        which also undoes the heel projection tan AWA = cos(phi) tan(Theta_V)).
+    wind_source : {"saoud_v", "ce", "masthead"}
+        Where the apparent wind comes from (:func:`controllers.saoud.observed_apparent_wind`:
+        Saoud's V by default; the measured readings are un-heeled, tan AWA = cos(phi) tan(Theta_V)).
     min_speed : float
         Below this apparent speed [m/s] Theta_V is undefined and the last command is held.
     """
 
-    def __init__(self, *, wind_source: str = "ce", min_speed: float = 0.1):
+    def __init__(self, *, wind_source: str = "saoud_v", min_speed: float = 0.1):
         if wind_source not in WIND_SOURCES:
             raise ValueError(f"unknown wind source {wind_source!r}; known: {', '.join(WIND_SOURCES)}")
         self.wind_source, self.min_speed = wind_source, min_speed

@@ -121,11 +121,12 @@ def saoud_params(params):
 
 
 def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
-          paper_numbers: bool = False):
+          paper_numbers: bool = False, wind_source: str = "saoud_v"):
     """Saoud (2015) optimal sail angle (eq. 13 / 14) with a PID heading rudder.
 
     By default the optimiser gets the boat's own mass, sail and heeling arm; with
-    ``paper_numbers`` it keeps Table I (h_s = 0.8 m) whatever the boat.
+    ``paper_numbers`` it keeps Table I (h_s = 0.8 m) whatever the boat. ``wind_source``:
+    "saoud_v" (Saoud's V, §IV), "ce" or "masthead" (measured; they include the boom's swing).
     """
     from .saoud import SaoudParams, SaoudSail
 
@@ -134,14 +135,16 @@ def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
         l_phi = params.gm_t
     phi_max = None if phi_max_deg is None else math.radians(phi_max_deg)
     table = SaoudParams() if paper_numbers else saoud_params(params)
-    return _composite(env, _rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max, params=table))
+    return _composite(env, _rudder(env), SaoudSail(l_phi=l_phi, phi_max=phi_max, params=table,
+                                                   wind_source=wind_source))
 
 
-def briere(env):
-    """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder."""
+def briere(env, wind_source: str = "saoud_v"):
+    """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder; ``wind_source``
+    as for :func:`saoud`."""
     from .briere import BriereSail
 
-    return _composite(env, _rudder(env), BriereSail())
+    return _composite(env, _rudder(env), BriereSail(wind_source=wind_source))
 
 
 def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float = 1.0,

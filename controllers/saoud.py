@@ -611,20 +611,33 @@ def brute_force_sail(theta_v: float, apparent_speed: float, l_phi: float, phi_ma
 
 # --- the controllers -----------------------------------------------------------------------
 
-WIND_SOURCES = ("ce", "masthead")
+WIND_SOURCES = ("saoud_v", "ce", "masthead")
 
 
-def observed_apparent_wind(observation: dict, source: str = "ce") -> tuple[float, float]:
+def observed_apparent_wind(observation: dict, source: str = "saoud_v") -> tuple[float, float]:
     """Saoud's (Theta_V [rad], |V| [m/s]) from an observation (see :mod:`controllers.base`).
 
+    ``source="saoud_v"`` (default) builds Saoud's own V (§IV): V = R_z(psi)^T (v - v_w), the
+    boat's ground ``velocity`` less the true wind at the sail (``true_state["true_wind"]``, both
+    ENU) in the level heading frame of ``true_state["yaw"]`` -- no roll rate, no swing of the
+    boom, no wind gradient between a sensor and the sail ("by neglecting the angular velocity
+    of the rotating sail"). Measured readings include the boom's own swing, which on a dead run
+    flips the apparent wind from side to side and makes a sail law gybe every step.
     ``source="ce"`` reads ``true_state["apparent_wind_ce"]``, the air velocity relative to the
-    sail's centre of effort in body x-y (FLU): Saoud's v_as is the apparent velocity of the
-    sail (§IV). ``source="masthead"`` rebuilds the same body x-y flow from the anemometer's
-    ``apparent_wind_angle`` and ``apparent_wind_speed`` (fx = -AWS cos AWA, fy = AWS sin AWA,
-    the inverse of :func:`sailmujoco.frames.apparent_wind_angle`); the masthead sees a faster
-    wind than the CE (wind gradient) and the roll rate's motion. Both are un-heeled by
-    :func:`saoud_apparent_wind` with the observed ``heel``.
+    sail's centre of effort in body x-y (FLU). ``source="masthead"`` rebuilds the same body x-y
+    flow from the anemometer's ``apparent_wind_angle`` and ``apparent_wind_speed`` (fx = -AWS
+    cos AWA, fy = AWS sin AWA, the inverse of :func:`sailmujoco.frames.apparent_wind_angle`); the
+    masthead sees a faster wind than the CE (wind gradient) and the roll rate's motion. The two
+    measured readings are un-heeled by :func:`saoud_apparent_wind` with the observed ``heel``.
     """
+    if source == "saoud_v":
+        state = observation["true_state"]
+        air = (np.asarray(state["true_wind"], dtype=float).reshape(2)
+               - np.asarray(observation["velocity"], dtype=float).reshape(2))  # air over the boat, ENU
+        yaw = scalar(state, "yaw")
+        c, s = math.cos(yaw), math.sin(yaw)
+        level = np.array([c * air[0] + s * air[1], -s * air[0] + c * air[1]])  # level heading frame
+        return saoud_theta_v((level[0], level[1])), float(np.hypot(*level))  # Saoud §IV
     heel = scalar(observation, "heel")
     if source == "ce":
         flow = np.asarray(observation["true_state"]["apparent_wind_ce"], dtype=float).reshape(2)
@@ -651,8 +664,8 @@ class SaoudSail:
         Roll limit [rad] (problem 14); None for problem 5. Saoud's Fig. 7 uses 30 deg.
     params : SaoudParams
         Mass, sail area, g, rho_air, h_s of the reduced model.
-    wind_source : {"ce", "masthead"}
-        Where the apparent wind is read (:func:`observed_apparent_wind`).
+    wind_source : {"saoud_v", "ce", "masthead"}
+        Where the apparent wind comes from (:func:`observed_apparent_wind`); default Saoud's V.
     min_speed : float
         Below this apparent speed [m/s] (Assumption 3, |V| > 0, fails) the last command is held.
 
@@ -663,7 +676,7 @@ class SaoudSail:
     """
 
     def __init__(self, *, l_phi: float, phi_max: float | None = None, params: SaoudParams = SaoudParams(),
-                 wind_source: str = "ce", min_speed: float = 0.1):
+                 wind_source: str = "saoud_v", min_speed: float = 0.1):
         if wind_source not in WIND_SOURCES:
             raise ValueError(f"unknown wind source {wind_source!r}; known: {', '.join(WIND_SOURCES)}")
         if not l_phi > 0.0:

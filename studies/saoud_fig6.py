@@ -25,9 +25,6 @@ from typing import NamedTuple
 import numpy as np
 import pandas as pd
 from sailmujoco.controllers import factories
-from sailmujoco.controllers.base import Composite
-from sailmujoco.controllers.briere import BriereSail
-from sailmujoco.controllers.saoud import SaoudSail
 
 from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import get_boat
@@ -46,7 +43,7 @@ WORLD_NAMES = {"paper": "paper world (4-DOF reduced model)", "mujoco": "MuJoCo 6
 L_PHI = (0.1, 1.0)  # m, the paper's two metacentric heights (Figs. 3-4)
 TRUE_WIND = 4.0  # m/s, §VII-B
 PHI_MAX_DEG = 30.0  # deg, the roll limit of S (§VII-B, Fig. 7)
-WIND_SOURCE = "saoud_v"  # what S and Bm read as the apparent wind (see SaoudV)
+WIND_SOURCE = "saoud_v"  # what S and Bm read as the apparent wind (controllers.saoud.observed_apparent_wind)
 WINDOW = 10.0  # s, the end of each segment over which the means are taken
 HELD_DEG = 20.0  # deg, a segment whose mean |heading| exceeds this did not hold heading 0
 SEGMENTS = tuple((start, angle, end) for (start, angle), end in
@@ -70,62 +67,21 @@ def wind_speed_10(boat: str = BOAT, l_phi: float = 0.1, speed: float = TRUE_WIND
     return speed / float(log_profile(ce_height, 1.0))
 
 
-class SaoudV:
-    """A sail law fed Saoud's V (§IV) instead of a measured flow: ``law(observation)``.
-
-    Saoud's V = R_z(psi)^T (v - v_w) is the boat's ground velocity less the true wind, in the
-    level heading frame: no roll rate, no swing of the boom, no wind gradient between sensor and
-    sail (§IV: "by neglecting the angular velocity of the rotating sail"). It is built from the
-    GPS ``velocity``, the true wind at the sail CE (``true_state["true_wind"]``) and the yaw, and
-    handed to the wrapped law (which reads ``apparent_wind_ce`` and un-heels its lateral part,
-    :func:`sailmujoco.controllers.saoud.saoud_apparent_wind`) as the heeled reading of that flow.
-    """
-
-    def __init__(self, law):
-        self.law = law
-
-    def reset(self, seed: int | None = None) -> None:
-        self.law.reset(seed)
-
-    def __call__(self, observation: dict) -> float:
-        state = observation["true_state"]
-        yaw = float(np.asarray(state["yaw"]).reshape(()))
-        heel = float(np.asarray(observation["heel"]).reshape(()))
-        flow = (np.asarray(state["true_wind"], float).reshape(2)
-                - np.asarray(observation["velocity"], float).reshape(2))  # air over the boat, ENU
-        c, s = math.cos(yaw), math.sin(yaw)
-        fx, fy = c * flow[0] + s * flow[1], -s * flow[0] + c * flow[1]  # level heading frame
-        reading = np.array([fx, fy * math.cos(heel)])  # as a heeled body x-y sensor reads it
-        return self.law({**observation, "true_state": {**state, "apparent_wind_ce": reading}})
-
-
-def _sail_law(make, wind_source: str):
-    return SaoudV(make("ce")) if wind_source == "saoud_v" else make(wind_source)
-
-
 def saoud_law(env, wind_source: str = WIND_SOURCE):
     """S: the registered ``saoud`` controller (PID rudder + problem 14, φ_max = 30°, the boat's
-    own m, S_s, h_s and l_φ) reading the apparent wind from ``wind_source``: "saoud_v"
-    (:class:`SaoudV`), "ce" (the flow at the sail CE, the registered default) or "masthead"."""
-    base = factories.saoud(env, phi_max_deg=PHI_MAX_DEG)
-    sail = base.sail
-    return Composite(base.rudder, _sail_law(
-        lambda source: SaoudSail(l_phi=sail.l_phi, phi_max=sail.phi_max, params=sail.params,
-                                 wind_source=source), wind_source))
+    own m, S_s, h_s and l_φ) reading the apparent wind from ``wind_source``: "saoud_v" (Saoud's
+    V, the registered default), "ce" (the measured flow at the sail CE) or "masthead"."""
+    return factories.saoud(env, phi_max_deg=PHI_MAX_DEG, wind_source=wind_source)
 
 
 def saoud_law_unlimited(env):
     """S without the roll limit (problem 5; Remark 1 bounds the heel by 45°)."""
-    base = factories.saoud(env, phi_max_deg=None)
-    sail = base.sail
-    return Composite(base.rudder, SaoudV(SaoudSail(l_phi=sail.l_phi, phi_max=None, params=sail.params,
-                                                   wind_source="ce")))
+    return factories.saoud(env, phi_max_deg=None, wind_source=WIND_SOURCE)
 
 
 def briere_law(env, wind_source: str = WIND_SOURCE):
     """Bm: the registered ``briere`` controller reading the apparent wind from ``wind_source``."""
-    return Composite(factories.briere(env).rudder,
-                     _sail_law(lambda source: BriereSail(wind_source=source), wind_source))
+    return factories.briere(env, wind_source=wind_source)
 
 
 def saoud_law_ce(env):
@@ -447,9 +403,9 @@ h_s = 0.8 m exactly and at which φ_max = 30° can bind (β = m g l_φ/(λ_s h_s
 6-DOF robot's arm is 1.7 m (xml/saoud_robot/README.md). (3) *Wind sensor*: S and Bm are
 given Saoud's V = R_z(ψ)^T (v − v_w) (§IV), the boat's ground velocity less the true wind at the
 sail, in the level heading frame: no roll rate and no boom swing in it (§IV builds v_as "by
-neglecting the angular velocity of the rotating sail"). The registered controllers read the
-flow at the sail CE, which includes the boom's own swing (Wille eq. 26, the λ̇ term), and the
-masthead sensor adds the roll rate times the 2.3 m mast; both were tried (checks). (4) Heading
+neglecting the angular velocity of the rotating sail"); the registered controllers' default.
+The measured flow at the sail CE includes the boom's own swing (Wille eq. 26, the λ̇ term), and
+the masthead sensor adds the roll rate times the 2.3 m mast; both were tried (checks). (4) Heading
 jitter 0 (the paper starts on heading 0), seed 0, steady wind, the registered PID rudder for
 both laws. A segment counts as sailed on heading 0 when the mean |ψ| over its last
 {window:g} s is at most {held:g}°.

@@ -36,10 +36,13 @@ def rng():
 
 def sail_observation(flow_xy, heel=0.0):
     """The part of an observation a sail law reads: the apparent wind at the sail CE (body x-y,
-    FLU) and at the masthead, and the heel."""
+    FLU, heeled) and at the masthead, the heel, and the same flow as Saoud's V: a boat at rest
+    facing east (yaw 0) in a true wind equal to the un-heeled flow. All three wind sources of
+    :func:`controllers.saoud.observed_apparent_wind` then read the same (Theta_V, |V|)."""
     from sailmujoco.frames import apparent_wind_angle
 
     flow_xy = np.asarray(flow_xy, dtype=float)
+    level = np.array([flow_xy[0], flow_xy[1] / max(np.cos(heel), 0.1)])
     return {"heel": np.array(heel), "apparent_wind_angle": np.array(apparent_wind_angle(flow_xy)),
-            "apparent_wind_speed": np.array(np.hypot(*flow_xy)),
-            "true_state": {"apparent_wind_ce": flow_xy}}
+            "apparent_wind_speed": np.array(np.hypot(*flow_xy)), "velocity": np.zeros(2),
+            "true_state": {"apparent_wind_ce": flow_xy, "true_wind": level, "yaw": np.array(0.0)}}

@@ -40,7 +40,7 @@ def test_odd_symmetry(rng):
     assert briere_sail_angle(2 * math.pi + 1.0) == pytest.approx(briere_sail_angle(1.0), abs=1e-12)
 
 
-@pytest.mark.parametrize("source", ["ce", "masthead"])
+@pytest.mark.parametrize("source", ["saoud_v", "ce", "masthead"])
 def test_sail_goes_to_leeward(source):
     """Beam wind from starboard: Theta_V = -90 deg, delta_s = -(15 + 45 * 75/105) deg on the ramp,
     so our lambda = +47.14 deg (boom to port, leeward); the mirror wind gives the mirror angle."""

@@ -14,12 +14,14 @@ from sailmujoco.controllers.saoud import (
     SaoudSail,
     brute_force_sail,
     eq13_residual,
+    observed_apparent_wind,
     optimal_sail,
     sail_angle_from_saoud,
     saoud_apparent_wind,
     saoud_from_sail_angle,
 )
 
+from sailmujoco import suite, sweep
 from sailmujoco.forces import foil
 from sailmujoco.frames import apparent_wind_angle
 
@@ -305,7 +307,7 @@ def test_conversion_matches_the_library_sail_force(rng):
         np.testing.assert_allclose(ours, theirs, atol=1e-9 * max(1.0, np.abs(theirs).max()))
 
 
-@pytest.mark.parametrize("source", ["ce", "masthead"])
+@pytest.mark.parametrize("source", ["saoud_v", "ce", "masthead"])
 def test_sail_goes_to_leeward(source):
     """Wind from starboard (the air flows to port, +y): delta_s* < 0, the boom (-i_s) ends to port,
     and our lambda > 0; the boat heels to port (phi* < 0) and the sail force pulls forward and
@@ -387,3 +389,38 @@ def test_controller_composite_and_reset():
     assert ctrl.sail(_observation([0.0, 0.0])) == held
     with pytest.raises(ValueError):
         SaoudSail(l_phi=0.5, wind_source="anemometer")
+
+
+def test_saoud_v_is_the_level_heading_frame_velocity():
+    """Saoud §IV: V = R_z(psi)^T (v - v_w). A boat heading north (yaw 90 deg) at 2 m/s in a true
+    wind blowing 5 m/s to the east (from the west): V = (2, 5) in the heading frame (forward,
+    port), Theta_V = atan2(5, 2), whatever the heel; the measured sources are not read at all."""
+    obs = {"heel": np.array(0.4), "velocity": np.array([0.0, 2.0]),
+           "true_state": {"yaw": np.array(math.pi / 2), "true_wind": np.array([5.0, 0.0])}}
+    theta_v, speed = observed_apparent_wind(obs, "saoud_v")
+    assert speed == pytest.approx(math.hypot(2.0, 5.0))
+    assert theta_v == pytest.approx(math.atan2(5.0, 2.0))
+
+
+@pytest.mark.parametrize("law", ["saoud", "briere"])
+def test_registered_laws_hold_their_side_on_a_dead_run(law):
+    """The robot runs dead downwind (5 m/s from astern, 30 s): fed Saoud's V (the registered
+    default) the sail stays on one side and drives the boat at > 1 m/s; fed the flow measured at
+    the sail CE, the boom's own swing flips the wind side and the law gybes again and again."""
+    flips, speed = {}, {}
+    for source in ("saoud_v", "ce"):
+        env = suite.load("saoud_robot", "heading_hold", "mujoco", seed=0, time_limit=30.0,
+                         desired_heading_deg=0.0, wind_speed=5.0, wind_from_deg=180.0,
+                         gusts=False, wander=False)
+        controller = sweep.make_controller(law, env, wind_source=source)
+        controller.reset(0)
+        timestep, sails, surge = env.reset(), [], []
+        while not timestep.last():
+            action = controller(timestep)
+            timestep = env.step(action)
+            sails.append(action[1])
+            surge.append(float(timestep.observation["true_state"]["u"]))
+        flips[source] = int(np.sum(np.sign(sails[1:]) != np.sign(sails[:-1])))
+        speed[source] = float(np.mean(surge[-100:]))
+    assert flips["saoud_v"] == 0 and speed["saoud_v"] > 1.0
+    assert flips["ce"] > 20
