@@ -72,6 +72,9 @@ Readings chosen where the extracted text of the papers is garbled or silent
   the keel moment to the integral action (the option §4 mentions). The keel's roll moment is
   -F_U h2 (§4), so eq. 70 adds F_U h2 (F_U < 0 for a wind from port) to the sail's demand.
   Note that ``"wrench"`` reads the true forces also in ``wind="mean"``.
+* ``wind="mean_speed"`` (Table 1's sim 2, "only the average wind speed is known", read
+  literally): the apparent wind *direction* at the CE is measured (a vane: the true
+  ``apparent_wind_ce`` direction) and its *speed* is that of the ``"mean"`` estimate below.
 * ``wind="mean"``: only the mean wind U_m10 and direction are known; the speed at the CE
   follows eq. 40 (log profile) at the CE height R[2] . r_CE (eq. 42's h1 cos(phi), plus the
   boom's sideways offset and the pitch; the hull's heave is neglected), and the velocity of the CE
@@ -101,6 +104,7 @@ PHI_D = math.radians(10.0)  # rad, desired heel = linearisation point phi_w (§4
 Q_WEIGHTS = (0.75, 1.0)  # eq. 71, weights on (phi - phi_d) [1/rad^2] and p [s^2/rad^2]
 R_WEIGHT = 1e-10  # §4, weight on u [1/(N m)^2]
 K_I = 2500.0  # N m/(rad s), §4, integral gain
+WIND_ESTIMATES = ("perfect", "mean", "mean_speed")  # WilleRollSail(wind=...), module docstring
 FRACTIONS = (0.67, 0.33, 0.0)  # §2.2, moment limits of lambda_67, lambda_33, lambda_0
 SOLUTIONS = ("lambda_100", "lambda_67", "lambda_33", "lambda_0")
 BETA_STEP = math.radians(1.0)  # rad, grid of beta_ws (§2.1: "a step size of 1deg")
@@ -536,9 +540,9 @@ class WilleRollSail:
     ----------
     params : BoatParams, optional
         Boat (default the Wille yacht).
-    wind : {"perfect", "mean"}
-        Wind estimate: the true apparent wind at the CE, or the mean true wind only (module
-        docstring).
+    wind : {"perfect", "mean_speed", "mean"}
+        Wind estimate: the true apparent wind at the CE; its measured direction with the speed
+        from the mean wind; or the mean true wind only (module docstring).
     roll_control : bool
         False: always lambda_100 ("roll control off").
     side_force : {"wrench", "model", "none"}
@@ -566,8 +570,8 @@ class WilleRollSail:
                  q: tuple[float, float] = Q_WEIGHTS, r: float = R_WEIGHT,
                  dt: float | None = None, gybe_margin: float = GYBE_MARGIN,
                  tables: WilleSailTables | None = None):
-        if wind not in ("perfect", "mean"):
-            raise ValueError(f"wind must be 'perfect' or 'mean', got {wind!r}")
+        if wind not in WIND_ESTIMATES:
+            raise ValueError(f"wind must be one of {WIND_ESTIMATES}, got {wind!r}")
         if side_force not in ("wrench", "model", "none"):
             raise ValueError(f"side_force must be 'wrench', 'model' or 'none', got {side_force!r}")
         self.params = wille_yacht() if params is None else params
@@ -620,6 +624,10 @@ class WilleRollSail:
         velocity = np.array([scalar(state, "u"), scalar(state, "v"), scalar(state, "w")])
         omega = np.array([scalar(state, "roll_rate"), 0.0, scalar(state, "yaw_rate")])
         flow = wind_body - (velocity + np.cross(omega, r_ce))  # Wille (2016a) eq. 26 in FLU
+        if self.wind == "mean_speed":  # the direction from the vane, the speed from the mean wind
+            measured = np.asarray(state["apparent_wind_ce"], dtype=float).reshape(-1)[:2]
+            norm = float(np.hypot(*measured))
+            return measured * (float(np.hypot(*flow[:2])) / norm) if norm > 0.0 else flow[:2]
         return flow[:2]
 
     def _side_force(self, observation: dict, beta_ws: float, speed: float) -> float:

@@ -4,9 +4,12 @@ Fig. 8: roll stabilisation by the sail.
 Beam reach (wind from the west, desired heading north, PID heading rudder), U10 = 10 m/s with
 NORSOK gusts and direction wander, 300 s, metrics over the last 50 s, control at 10 Hz. Sail:
 the lambda_100 look-up table (sim 1, roll control off), and the roll LQR of eqs. 64-71 through
-the lambda_67/33/0 tables with only the mean wind known (sim 2) or the true wind at the sail
-(sim 3). The paper does not say which wind sim 1's lambda_100 uses; both are run: "sim 1" with
-the true wind (the lambda_100 of sim 3) and "sim 1, mean wind" (the lambda_100 of sim 2).
+the lambda_67/33/0 tables with "only the average wind speed known" (sim 2) or the true wind at
+the sail (sim 3). Sim 2 is read literally: the wind *speed* is the mean one (U_m10 through the
+log profile, with the boat's own motion), the apparent wind *direction* is measured (a vane at
+the sail); with the mean direction as well ("sim 2, mean wind") it is run beside it. The paper
+does not say which wind sim 1's lambda_100 uses; both are run: "sim 1" with the true wind (the
+lambda_100 of sims 2 and 3, which depends on the direction only) and "sim 1, mean wind".
 
 The paper shows one gust realisation. Ours are five (seeds 0-4, the same realisation for the
 four simulations of a seed): the NORSOK spectrum has components of minutes, so the mean wind
@@ -35,11 +38,13 @@ from pathlib import Path
 
 import numpy as np
 import pandas as pd
+from sailmujoco.controllers.wille_roll import build_sail_tables
 
 from sailmujoco import sweep
+from sailmujoco.params import get_boat
 
 from .common import Report, setup_matplotlib, timer
-from .wille_course_table2 import make_env, run_jobs
+from .wille_course_table2 import BOAT, make_env, run_jobs
 
 NAME = "wille_roll_table1"
 TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"
@@ -50,13 +55,21 @@ WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 SIMS = {  # options of the registered "wille_roll" controller
     "sim1": dict(roll_control=False, wind="perfect"),
     "sim1_mean": dict(roll_control=False, wind="mean"),
-    "sim2": dict(roll_control=True, wind="mean"),
+    "sim2": dict(roll_control=True, wind="mean_speed"),
+    "sim2_mean": dict(roll_control=True, wind="mean"),
     "sim3": dict(roll_control=True, wind="perfect"),
 }
+SWITCH_SIMS = ("sim1", "sim1_mean", "sim2", "sim3")  # the simulations each switch reruns
 SIM_LABELS = {"sim1": "sim 1: roll control off (λ100, true wind)",
               "sim1_mean": "sim 1: roll control off (λ100, mean wind)",
-              "sim2": "sim 2: roll control, mean wind known",
+              "sim2": "sim 2: roll control, mean wind speed known",
+              "sim2_mean": "sim 2: roll control, mean wind speed and direction",
               "sim3": "sim 3: roll control, perfect wind"}
+
+
+def paper_sim(sim: str) -> str:
+    """The Table 1 column a simulation is compared with ("sim1_mean" -> "sim1")."""
+    return sim.split("_")[0]
 PAPER_TABLE1 = {  # Table 1: roll amplitude (deg), max roll rate (deg/s), mean surge (m/s)
     "sim1": {"roll_amplitude": 4.38, "max_roll_rate": 5.15, "mean_surge": 7.75},
     "sim2": {"roll_amplitude": 1.18, "max_roll_rate": 1.42, "mean_surge": 6.59},
@@ -147,17 +160,17 @@ def jobs_for(smoke: bool) -> list[dict]:
     controlled = ("sim2", "sim3")
     # the sail switch on the lull (seed 0) in both worlds, and on seed 1 in the cheap 6-DOF world
     jobs += [dict(base, key=("sail", w, s, seed), world=w, sim=s, seed=seed, sail_factor=SAIL_FACTOR)
-             for w, seed in (("paper", 0), ("mujoco", 0), ("mujoco", 1)) for s in SIMS]
+             for w, seed in (("paper", 0), ("mujoco", 0), ("mujoco", 1)) for s in SWITCH_SIMS]
     jobs += [dict(base, key=("gain", "paper", s, 1), world="paper", sim=s, seed=1, gain="paper")
              for s in controlled]
     jobs += [dict(base, key=("dofs4", "mujoco", s, seed), world="mujoco", sim=s, seed=seed, dofs=4)
-             for seed in SWITCH_SEEDS for s in SIMS]
+             for seed in SWITCH_SEEDS for s in SWITCH_SIMS]
     jobs += [dict(base, key=("band", "paper", s, 0), world="paper", sim=s, seed=0, band_deg=NARROW_BAND_DEG)
              for s in controlled]
     jobs += [dict(base, key=("rigid", "paper", s, 1), world="paper", sim=s, seed=1, paper_model="rigid")
              for s in ("sim1", "sim3")]
     jobs += [dict(base, key=("sail dofs4", "mujoco", s, 0), world="mujoco", sim=s, seed=0, dofs=4,
-                  sail_factor=SAIL_FACTOR) for s in SIMS]
+                  sail_factor=SAIL_FACTOR) for s in SWITCH_SIMS]
     jobs.append(dict(shares, key=("shares", "paper", "sail", 0), world="paper", sail_factor=SAIL_FACTOR))
     jobs += [dict(key=("fig8 sail", "paper", wind, heel), world="paper", sim="sim3", seed=0, wind_speed=wind,
                   duration=FIG8_DURATION, heel_desired_deg=heel, sail_factor=SAIL_FACTOR)
@@ -267,7 +280,7 @@ class Results:
 
 # ----------------------------------------------------------------------------- figures
 SIM_STYLE = {"sim1": ("tab:blue", "-"), "sim1_mean": ("tab:blue", ":"), "sim2": ("tab:orange", "-"),
-             "sim3": ("tab:green", "-")}
+             "sim2_mean": ("tab:orange", ":"), "sim3": ("tab:green", "-")}
 
 
 def figure_series(r: Results, out, plt, column, sims, number, title, ylabel) -> Path:
@@ -425,7 +438,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
             for k in ("roll_amplitude", "max_roll_rate", "mean_surge", "mean_heel"):
                 headline[f"{w}_{s}_{k}"] = means[s][k]
         for base in ("sim1", "sim1_mean"):
-            for s in ("sim2", "sim3"):
+            for s in ("sim2", "sim2_mean", "sim3"):
                 headline[f"{w}_reduction_{base}_{s}"] = reduction(means[base], means[s])
         for k in ("sail + restoring", "keel", "rudder + damping"):
             headline[f"{w}_share_{k.replace(' + ', '_')}"] = share[w][k]
@@ -446,8 +459,8 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     report.paragraph("Reductions of the roll amplitude (the paper: sim 1 → sim 2 73 %, sim 1 → sim 3 "
                      "93 %; done-when, paper world: both at least 60 %), from the seed means and per seed:")
     report.table(_reduction_rows(r, smoke), ["world", "case", "seed", "sim 1 mean heel [deg]",
-                                             "sim 1 → sim 2", "sim 1 (mean wind) → sim 2", "sim 1 → sim 3",
-                                             "sim 1 (mean wind) → sim 3"])
+                                             "sim 1 → sim 2", "sim 1 (mean wind) → sim 2 (mean wind)",
+                                             "sim 1 → sim 3", "sim 1 (mean wind) → sim 3"])
     report.paragraph("Every run (u mean surge, ψ_min the lowest heading in the window, δ_r the mean "
                      "rudder angle, \"on\" the share of the window the roll law is on):")
     report.table(_detail_rows(r), ["case", "world", "seed", "simulation", "amplitude [deg]", "max p [deg/s]",
@@ -475,7 +488,7 @@ def _table1_rows(r: Results, smoke) -> list[dict]:
     rows = []
     for world, label in WORLDS.items():
         for sim in SIMS:
-            paper = PAPER_TABLE1["sim1" if sim == "sim1_mean" else sim]
+            paper = PAPER_TABLE1[paper_sim(sim)]
             mean = r.mean(world, sim)
             for key, name in QUANTITIES.items():
                 lo, hi = r.span(world, sim, key)
@@ -488,16 +501,17 @@ def _table1_rows(r: Results, smoke) -> list[dict]:
 
 def _cause(r: Results, world, sim, key) -> str:
     """The modelling difference behind a Table 1 miss, with the switch that shows it."""
-    paper = PAPER_TABLE1["sim1" if sim == "sim1_mean" else sim][key]
+    paper = PAPER_TABLE1[paper_sim(sim)][key]
     diff = abs(r.mean(world, sim)[key] / paper - 1.0)
     if diff <= 0.10:
         return ""
-    s0, sail0 = r.get("main", world, sim, 0), r.get("sail", world, sim, 0)
+    switched = sim if sim in SWITCH_SIMS else paper_sim(sim)  # the switches rerun SWITCH_SIMS only
+    s0, sail0 = r.get("main", world, sim, 0), r.get("sail", world, switched, 0)
     if key == "mean_surge":
         text = (f"our flat AR 5 sail drives less than Marchaj's: sail x{SAIL_FACTOR:g}, seed 0: "
                 f"{s0[key]:.2f} → {sail0[key]:.2f} m/s")
         if world == "mujoco":
-            d4 = r.get("dofs4", world, sim, 0)
+            d4 = r.get("dofs4", world, switched, 0)
             text += f"; heave and pitch held: {d4[key]:.2f} m/s"
             if sail0[key] < 2.0:
                 text += " (with the stronger sail the 6-DOF boat broaches, see causes)"
@@ -506,6 +520,9 @@ def _cause(r: Results, world, sim, key) -> str:
         mean, mm = r.mean(world, "sim1"), r.mean(world, "sim1_mean")
         return (f"sim 1's wind estimate (true vs mean wind: {mean[key]:.2f} vs {mm[key]:.2f}); "
                 f"the gust realisation; sail x{SAIL_FACTOR:g}, seed 0: {s0[key]:.2f} → {sail0[key]:.2f}")
+    if sim == "sim2_mean":
+        return (f"the mean wind direction: with the measured direction (sim 2) {r.mean(world, 'sim2')[key]:.2f}; "
+                f"the gust realisation (seed 0: {s0[key]:.2f}, seed 1: {r.get('main', world, sim, 1)[key]:.2f})")
     return (f"the boat heels too little past 10° for the law to act in lulls (seed 0: sim-1 heel "
             f"{r.get('main', world, 'sim1', 0)['mean_heel']:.1f}°, {s0[key]:.2f}; seed 1: "
             f"{r.get('main', world, 'sim1', 1)['mean_heel']:.1f}°, {r.get('main', world, sim, 1)[key]:.2f}); "
@@ -519,7 +536,8 @@ def _reduction_rows(r: Results, smoke) -> list[dict]:
         return {"world": WORLDS[world], "case": CASES[case], "seed": seed_label,
                 "sim 1 mean heel [deg]": f"{n['sim1']['mean_heel']:.1f}",
                 "sim 1 → sim 2": f"{100 * reduction(n['sim1'], n['sim2']):.0f} %",
-                "sim 1 (mean wind) → sim 2": f"{100 * reduction(n['sim1_mean'], n['sim2']):.0f} %",
+                "sim 1 (mean wind) → sim 2 (mean wind)": (
+                    f"{100 * reduction(n['sim1_mean'], n['sim2_mean']):.0f} %" if "sim2_mean" in n else "—"),
                 "sim 1 → sim 3": f"{100 * reduction(n['sim1'], n['sim3']):.0f} %",
                 "sim 1 (mean wind) → sim 3": f"{100 * reduction(n['sim1_mean'], n['sim3']):.0f} %"}
 
@@ -533,8 +551,10 @@ def _reduction_rows(r: Results, smoke) -> list[dict]:
             for world in WORLDS:
                 for seed in (0, 1):
                     if r.has(case, world, "sim1", seed):
-                        rows.append(row(world, case, str(seed), {s: r.get(case, world, s, seed) for s in SIMS}))
-        rows.append(row("mujoco", "sail dofs4", "0", {s: r.get("sail dofs4", "mujoco", s, 0) for s in SIMS}))
+                        rows.append(row(world, case, str(seed),
+                                        {s: r.get(case, world, s, seed) for s in SWITCH_SIMS}))
+        rows.append(row("mujoco", "sail dofs4", "0",
+                        {s: r.get("sail dofs4", "mujoco", s, 0) for s in SWITCH_SIMS}))
         n = {s: r.get("main", "paper", s, 1) for s in ("sim1", "sim1_mean")}
         n.update({s: r.get("gain", "paper", s, 1) for s in ("sim2", "sim3")})
         rows.append(row("paper", "gain", "1", n))
@@ -565,16 +585,19 @@ def _causes(r: Results, tables: dict) -> str:
     mm = {s: r.mean("mujoco", s) for s in SIMS}
     p0 = {s: g("main", "paper", s, 0) for s in SIMS}
     p1 = {s: g("main", "paper", s, 1) for s in SIMS}
-    x0 = {s: g("sail", "paper", s, 0) for s in SIMS}
-    xm0 = {s: g("sail", "mujoco", s, 0) for s in SIMS}
-    xm1 = {s: g("sail", "mujoco", s, 1) for s in SIMS}
-    d0 = {s: g("dofs4", "mujoco", s, 0) for s in SIMS}
-    d1 = {s: g("dofs4", "mujoco", s, 1) for s in SIMS}
-    dx0 = {s: g("sail dofs4", "mujoco", s, 0) for s in SIMS}
+    x0 = {s: g("sail", "paper", s, 0) for s in SWITCH_SIMS}
+    xm0 = {s: g("sail", "mujoco", s, 0) for s in SWITCH_SIMS}
+    xm1 = {s: g("sail", "mujoco", s, 1) for s in SWITCH_SIMS}
+    d0 = {s: g("dofs4", "mujoco", s, 0) for s in SWITCH_SIMS}
+    d1 = {s: g("dofs4", "mujoco", s, 1) for s in SWITCH_SIMS}
+    dx0 = {s: g("sail dofs4", "mujoco", s, 0) for s in SWITCH_SIMS}
     k2, k3 = g("gain", "paper", "sim2", 1), g("gain", "paper", "sim3", 1)
     b2, b3 = g("band", "paper", "sim2", 0), g("band", "paper", "sim3", 0)
     r1, r3 = g("rigid", "paper", "sim1", 1), g("rigid", "paper", "sim3", 1)
     red = lambda a, b: 100 * reduction(a, b)  # noqa: E731
+    lams, _, moms = build_sail_tables(get_boat(BOAT)).solutions(math.radians(130.0), 1)
+    lam33, lam0, mom33, mom0 = math.degrees(lams[2]), math.degrees(lams[3]), moms[2], moms[3]
+    slope = (mom33 - mom0) / abs(lam33 - lam0)
     heel_by_seed = ", ".join(f"{g('main', 'paper', 'sim1', s)['mean_heel']:.1f}" for s in r.seeds)
     wind_by_seed = ", ".join(f"{g('main', 'paper', 'sim1', s)['wind_ce']:.1f}" for s in r.seeds)
     sim3_by_seed = ", ".join(f"{g('main', 'paper', 'sim3', s)['roll_amplitude']:.2f}" for s in r.seeds)
@@ -613,13 +636,21 @@ def _causes(r: Results, tables: dict) -> str:
    {red(x0['sim1'], x0['sim2']):.0f} / {red(x0['sim1'], x0['sim3']):.0f} % (against the mean-wind sim 1:
    {red(x0['sim1_mean'], x0['sim2']):.0f} / {red(x0['sim1_mean'], x0['sim3']):.0f} %); the speed cost of
    the control is then {100 * (1 - x0['sim3']['mean_surge'] / x0['sim1']['mean_surge']):.0f} % (paper 15 %).
-2. **Sim 1's wind estimate.** λ100 from the true wind against λ100 from the mean wind (seed mean):
-   roll amplitude {m['sim1']['roll_amplitude']:.2f}° vs {m['sim1_mean']['roll_amplitude']:.2f}° (paper 4.38°),
-   max p {m['sim1']['max_roll_rate']:.2f} vs {m['sim1_mean']['max_roll_rate']:.2f} °/s (5.15). A sail trimmed to
-   the mean wind does not follow the gusts' direction and rolls more. Against the mean-wind sim 1
-   (the same wind knowledge as sim 2) the reductions are {red(m['sim1_mean'], m['sim2']):.0f} /
-   {red(m['sim1_mean'], m['sim3']):.0f} %, against the true-wind one {red(m['sim1'], m['sim2']):.0f} /
-   {red(m['sim1'], m['sim3']):.0f} %.
+2. **The wind estimate of sims 1 and 2.** Sim 2 "knows only the average wind speed": with the
+   apparent direction measured (ours) its roll amplitude is {m['sim2']['roll_amplitude']:.2f}° (seed mean;
+   paper 1.18°), max p {m['sim2']['max_roll_rate']:.2f} °/s (1.42); with the mean direction too
+   {m['sim2_mean']['roll_amplitude']:.2f}° and {m['sim2_mean']['max_roll_rate']:.2f} °/s. To hold 10° on this
+   reach the law eases the sail to between λ33 and λ0, a few degrees from luffing, where the
+   relative roll moment changes by {slope:.1f} kg (N m per (m/s)²) per degree of sail angle
+   (β_ws = 130°: λ33 {lam33:.1f}° gives {mom33:.1f} kg, λ0 {lam0:.1f}° gives {mom0:.1f} kg): a few degrees'
+   error in the apparent direction, which is what a gust's change of speed does to it, is most of
+   the moment the law asks for. λ100 from the true wind
+   against λ100 from the mean wind (sim 1, seed mean): roll amplitude {m['sim1']['roll_amplitude']:.2f}° vs
+   {m['sim1_mean']['roll_amplitude']:.2f}° (paper 4.38°), max p {m['sim1']['max_roll_rate']:.2f} vs
+   {m['sim1_mean']['max_roll_rate']:.2f} °/s (5.15): a sail trimmed to the mean wind does not follow the
+   gusts' direction and rolls more. Reductions with the same wind knowledge on both sides: true
+   direction {red(m['sim1'], m['sim2']):.0f} / {red(m['sim1'], m['sim3']):.0f} % (sims 2 / 3), mean wind
+   {red(m['sim1_mean'], m['sim2_mean']):.0f} / {red(m['sim1_mean'], m['sim3']):.0f} %.
 3. **The LQR gain.** The printed K = [9.0e4, 1.0e5] in place of ours [5.82e4, 1.0e5] (seed 1, where
    the law is on all the time): sim 2 amplitude {p1['sim2']['roll_amplitude']:.2f} → {k2['roll_amplitude']:.2f}°,
    sim 3 {p1['sim3']['roll_amplitude']:.2f} → {k3['roll_amplitude']:.2f}°, max p {p1['sim3']['max_roll_rate']:.2f} →

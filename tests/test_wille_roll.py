@@ -435,3 +435,16 @@ def test_bad_options():
         WilleRollSail(P, side_force="keel")
     with pytest.raises(ValueError, match="heel_off"):
         WilleRollSail(P, heel_on=5 * DEG, heel_off=8 * DEG)
+
+
+def test_mean_speed_estimate_takes_the_vane_direction_and_the_mean_speed(tables):
+    """Table 1's sim 2 ("only the average wind speed is known"): the estimate points where the
+    measured apparent wind at the CE points, with the length of the mean-wind estimate."""
+    mean = WilleRollSail(P, wind="mean", tables=tables)
+    vane = WilleRollSail(P, wind="mean_speed", tables=tables)
+    obs = _mean_obs(0.15, 0.2, 6.0, 0.3, 0.02, -0.01, -0.7, 30.0 * DEG)
+    measured = np.array([-9.0, 4.0])  # a gust: stronger and further aft than the mean wind
+    obs["true_state"]["apparent_wind_ce"] = measured
+    expected = measured / np.hypot(*measured) * np.hypot(*mean.wind_estimate(obs))
+    np.testing.assert_allclose(vane.wind_estimate(obs), expected, rtol=1e-12)
+    assert not np.allclose(vane.wind_estimate(obs), mean.wind_estimate(obs), atol=0.1)
