@@ -136,6 +136,32 @@ def _point_flow(fluid_body, v, w, point, extra, out):
 
 
 @kernel
+def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rho, nu, current_b, v, w,
+                    alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force):
+    """Lift and drag of a keel or rudder (Wille eqs. 30-36): (alpha, speed); the force into ``force``.
+
+    The foil stands at (x, 0, z) in the body frame, turned by ``angle`` [rad] about -z (the
+    rudder's sigma; 0 for the keel): chord (cos, -sin, 0), normal (sin, cos, 0). The flow is the
+    water's velocity relative to that point (current less the hull's motion, the foil's own turn
+    rate neglected); C_L, C_D from the section table at the chord Reynolds number, corrected
+    for the aspect ratio (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`). ``point``,
+    ``flow``, ``chord``, ``normal`` are work arrays (3,), left holding this foil's values;
+    ``zero3`` is a zero vector (no point velocity beyond the hull's).
+    """
+    point[0], point[1], point[2] = x, 0.0, z
+    _point_flow(current_b, v, w, point, zero3, flow)
+    c, s = math.cos(angle), math.sin(angle)
+    chord[0], chord[1], chord[2] = c, -s, 0.0
+    normal[0], normal[1], normal[2] = s, c, 0.0
+    wc, wn, speed, alpha = section_flow(flow, chord, normal)
+    c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness, alpha_grid,
+                                      log_re_grid, cl_table, cd_table)
+    fc, fn = lift_drag_components(wc, wn, speed, 0.5 * rho * speed * speed * area, c_l, c_d)
+    foil_world_force(fc, fn, chord, normal, force)
+    return alpha, speed
+
+
+@kernel
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, external,
                 terms, diag, qfrc, madd, mass_csr, csr_addr, work, add_mass):
@@ -181,34 +207,19 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
 
     # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
     if P[P_ON_KEEL] > 0.0:
-        point[0], point[1], point[2] = P[P_KEEL_X], 0.0, P[P_KEEL_Z]
-        _point_flow(current_b, v, w, point, zero3, flow)
-        chord[0], chord[1], chord[2] = 1.0, 0.0, 0.0
-        normal[0], normal[1], normal[2] = 0.0, 1.0, 0.0
-        wc, wn, speed, alpha = section_flow(flow, chord, normal)
-        re = speed * P[P_KEEL_CHORD] / P[P_NU_W]
-        c_l, c_d = hydrofoil_coefficients(alpha, re, P[P_KEEL_AR], P[P_KEEL_TC], alpha_grid,
-                                          log_re_grid, cl_table, cd_table)
-        q_area = 0.5 * P[P_RHO_W] * speed * speed * P[P_KEEL_AREA]
-        fc, fn = lift_drag_components(wc, wn, speed, q_area, c_l, c_d)
-        foil_world_force(fc, fn, chord, normal, force)
+        alpha, speed = hull_foil_force(0.0, P[P_KEEL_X], P[P_KEEL_Z], P[P_KEEL_CHORD], P[P_KEEL_AR],
+                                       P[P_KEEL_TC], P[P_KEEL_AREA], P[P_RHO_W], P[P_NU_W], current_b, v, w,
+                                       alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow,
+                                       chord, normal, force)
         _accumulate(terms, T_KEEL, force, point)
         diag[D_ALPHA_KEEL], diag[D_SPEED_KEEL] = alpha, speed
 
     # ---- rudder: turns by sigma about -z through its CP (Wille eqs. 34-36) ----
     if P[P_ON_RUDDER] > 0.0:
-        sigma = qpos[idx[0]]
-        point[0], point[1], point[2] = P[P_RUD_X], 0.0, P[P_RUD_Z]
-        _point_flow(current_b, v, w, point, zero3, flow)
-        chord[0], chord[1], chord[2] = math.cos(sigma), -math.sin(sigma), 0.0
-        normal[0], normal[1], normal[2] = math.sin(sigma), math.cos(sigma), 0.0
-        wc, wn, speed, alpha = section_flow(flow, chord, normal)
-        re = speed * P[P_RUD_CHORD] / P[P_NU_W]
-        c_l, c_d = hydrofoil_coefficients(alpha, re, P[P_RUD_AR], P[P_RUD_TC], alpha_grid,
-                                          log_re_grid, cl_table, cd_table)
-        q_area = 0.5 * P[P_RHO_W] * speed * speed * P[P_RUD_AREA]
-        fc, fn = lift_drag_components(wc, wn, speed, q_area, c_l, c_d)
-        foil_world_force(fc, fn, chord, normal, force)
+        alpha, speed = hull_foil_force(qpos[idx[0]], P[P_RUD_X], P[P_RUD_Z], P[P_RUD_CHORD], P[P_RUD_AR],
+                                       P[P_RUD_TC], P[P_RUD_AREA], P[P_RHO_W], P[P_NU_W], current_b, v, w,
+                                       alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow,
+                                       chord, normal, force)
         _accumulate(terms, T_RUDDER, force, point)
         diag[D_ALPHA_RUDDER], diag[D_SPEED_RUDDER] = alpha, speed
 
