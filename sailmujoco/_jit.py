@@ -40,6 +40,15 @@ def _clear_stale_cache() -> None:
 _clear_stale_cache()
 
 
-def kernel(fn):
-    """Compile ``fn`` with numba (cached on disk), or return it unchanged when JIT is disabled."""
-    return numba.njit(cache=True, nogil=True, error_model="numpy")(fn)
+def kernel(fn=None, *, inline: bool = False):
+    """Compile ``fn`` with numba (cached on disk), or return it unchanged when JIT is disabled.
+
+    ``@kernel(inline=True)`` inlines the function into its compiled callers (numba IR level):
+    for a helper with many array arguments called in the per-step kernel, where the call itself
+    would cost measurable time.
+    """
+    def build(f):
+        return numba.njit(cache=True, nogil=True, error_model="numpy",
+                          inline="always" if inline else "never")(f)
+
+    return build if fn is None else build(fn)

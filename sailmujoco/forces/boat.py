@@ -135,7 +135,7 @@ def _point_flow(fluid_body, v, w, point, extra, out):
     out[2] = fluid_body[2] - (v[2] + w[0] * point[1] - w[1] * point[0] + extra[2])
 
 
-@kernel
+@kernel(inline=True)  # called twice per step: inlined, it costs what the two blocks did
 def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rho, nu, current_b, v, w,
                     alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force):
     """Lift and drag of a keel or rudder (Wille eqs. 30-36): (alpha, speed); the force into ``force``.
