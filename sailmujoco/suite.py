@@ -86,9 +86,7 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     elif task == "position_keeping":
         from .reference.viel import VielWorld
 
-        # the world integrates adaptively inside a step; the step only has to divide the control period
-        sub_step = control_timestep / math.ceil(control_timestep / 0.05)
-        physics = VielPhysics(VielWorld(wind=wind), timestep=sub_step)
+        physics = VielPhysics.for_control(VielWorld(wind=wind), control_timestep)
     else:
         from .reference.wille import Wille4DOF
 

@@ -99,8 +99,9 @@ def simulate(spec: dict) -> dict:
 
     ``spec``: ``kind`` ("position" or "heading_hold"), ``variant``, ``world`` ("paper" or a
     boat), ``case``, ``seed``, ``dt`` [s], ``p1`` [kg/m], ``rudder_law`` (the paper world's
-    :class:`~sailmujoco.reference.viel.VielParams` reading of eqs. 7-8), ``start`` (m), ``heading_deg``, ``surge`` [m/s], ``scale`` (target radii ×),
-    ``duration`` [s]; for heading_hold: ``wind_speed`` [m/s], ``desired_heading_deg``.
+    :class:`~sailmujoco.reference.viel.VielParams` reading of eqs. 7-8), ``start`` (m),
+    ``heading_deg``, ``surge`` [m/s], ``scale`` (target radii ×), ``duration`` [s]; for
+    heading_hold: ``wind_speed`` [m/s], ``desired_heading_deg``.
     """
     clock = timer()
     s = {"kind": "position", "seed": 0, "dt": DT, "p1": VielParams().p1, "rudder_law": VielParams().rudder_law,
@@ -122,9 +123,8 @@ def simulate(spec: dict) -> dict:
     task = StartedPositionKeeping(seed=s["seed"], case=s["case"], start=tuple(s["start"]), d_target=d_t,
                                   d_prearrival=d_m, heading_deg=s["heading_deg"], surge=s["surge"])
     if s["world"] == "paper":
-        physics = VielPhysics(VielWorld(params=VielParams(p1=s["p1"], rudder_law=s["rudder_law"]),
-                                        wind=task.wind()),
-                              timestep=min(s["dt"], 0.05))
+        world = VielWorld(params=VielParams(p1=s["p1"], rudder_law=s["rudder_law"]), wind=task.wind())
+        physics = VielPhysics.for_control(world, s["dt"])
     else:  # as sailmujoco.suite.load builds the MuJoCo world
         physics = BoatPhysics.load(params=get_boat(s["world"]), sail_mode="actuated", wind=task.wind(),
                                    forces=ForceSwitches(hydrostatics="geometric"), dofs=6)

@@ -12,6 +12,7 @@ import pytest
 from sailmujoco.controllers import viel as cv
 from scipy.optimize import brentq
 
+from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig, WindField
 from sailmujoco.frames import apparent_wind_angle, heading_from_yaw, wind_velocity
 from sailmujoco.reference.viel import (
@@ -26,6 +27,7 @@ from sailmujoco.reference.viel import (
     rudder_forces,
     viel_from_action,
 )
+from sailmujoco.tasks.position import VielPhysics
 
 P = VielParams()
 FROM_SOUTH = math.pi  # compass bearing the wind comes from: Viel's psi_tw = pi/2 (blows north)
@@ -447,3 +449,16 @@ def test_closed_loop_keeps_position(runs, case):
     assert d[entered[0]:].max() < 7.0
     assert d[-1000:].max() < 6.4  # the last 100 s at dt = 0.1 s
     assert {cv.TACK, cv.UPWIND_STOP, cv.UPWIND_DRIVE} <= modes
+
+
+@pytest.mark.parametrize("control, sub_step", [(0.1, 0.05), (0.01, 0.01), (0.07, 0.035)])
+def test_physics_sub_step_divides_the_control_period(control, sub_step):
+    """VielPhysics.for_control: the largest sub-step <= 0.05 s that divides the control period;
+    suite.load builds the paper world with it, so Viel's dt = 0.01 s runs one sub-step a step."""
+    assert VielPhysics.for_control(VielWorld(), control).timestep() == pytest.approx(sub_step)
+    env = suite.load("wille_yacht", "position_keeping", "paper", control_timestep=control)
+    env.reset()
+    env.step([0.0, 0.0])
+    assert env.physics.time() == pytest.approx(control)
+    with pytest.raises(ValueError, match="control_timestep"):
+        suite.load("wille_yacht", "position_keeping", "paper", control_timestep=0.0)

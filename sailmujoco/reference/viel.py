@@ -97,7 +97,6 @@ class VielParams:
     sail_max: float = math.pi / 2.0  # rad, Viel §2.1 delta_s,max
     rudder_law: str = "linear"  # Viel eqs. 7-8: "linear" (Table 1's kg/s, Jaulin) or "printed" (v^2)
 
-
     def __post_init__(self):
         if self.rudder_law not in RUDDER_LAWS:
             raise ValueError(f"VielParams.rudder_law must be one of {RUDDER_LAWS}, got {self.rudder_law!r}")

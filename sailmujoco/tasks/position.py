@@ -109,6 +109,13 @@ class VielPhysics:
         self._control = np.zeros(2)
         self.stop_reason = None
 
+    @classmethod
+    def for_control(cls, world, control_timestep: float, longest: float = 0.05) -> VielPhysics:
+        """The world stepped at the largest sub-step <= ``longest`` [s] that divides the control
+        period (dm_control needs a whole number of sub-steps; the world integrates adaptively
+        inside each, so the sub-step only sets where the action may change)."""
+        return cls(world, timestep=control_timestep / math.ceil(control_timestep / longest))
+
     # dm_control Physics
     def step(self, n_sub_steps=1):
         if self.stop_reason:
