@@ -51,21 +51,27 @@ SAIL_FACTOR = 1.5  # the sail-force switch (see wille_roll_table1: our sim-1 sur
 
 
 # ----------------------------------------------------------------------------- shared helpers
-def scaled_sail(params, factor: float):
+def scaled_sail(params, factor: float, time_constant: float | None = None):
     """``params`` with the sail area (so every sail force, in the physics and in the lambda
-    tables alike) multiplied by ``factor``; the CE position is kept."""
-    if factor == 1.0:
-        return params
-    return dataclasses.replace(params, sail=dataclasses.replace(params.sail, area=params.sail.area * factor))
+    tables alike) multiplied by ``factor``; the CE position is kept. ``time_constant``, when
+    given, replaces the sail actuator's lag T_lambda (s)."""
+    sail = params.sail
+    if factor != 1.0:
+        sail = dataclasses.replace(sail, area=sail.area * factor)
+    if time_constant is not None:
+        sail = dataclasses.replace(sail, time_constant=time_constant)
+    return params if sail is params.sail else dataclasses.replace(params, sail=sail)
 
 
 def make_env(task: str, world: str, *, seed: int = 0, sail_factor: float = 1.0,
-             paper_model: str = "paper", control_timestep: float = 0.1, dofs: int = 6,
-             time_limit: float | None = None, **task_options):
+             sail_time_constant: float | None = None, paper_model: str = "paper",
+             control_timestep: float = 0.1, dofs: int = 6, time_limit: float | None = None,
+             **task_options):
     """The Wille yacht on ``task`` in ``world`` (:func:`sailmujoco.suite.load`), its sail
-    force scaled by ``sail_factor`` for the sail switch. ``dofs``: 6, or 4 with heave and pitch
+    force scaled by ``sail_factor`` for the sail switch and its actuator lag T_lambda replaced by
+    ``sail_time_constant`` (s) for the lag switch. ``dofs``: 6, or 4 with heave and pitch
     held (MuJoCo world)."""
-    params = scaled_sail(get_boat(BOAT), sail_factor)
+    params = scaled_sail(get_boat(BOAT), sail_factor, sail_time_constant)
     return suite.load(BOAT, task, world, seed=seed, control_timestep=control_timestep,
                       time_limit=time_limit, paper_model=paper_model, dofs=dofs, params=params,
                       **task_options)

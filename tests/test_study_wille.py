@@ -104,3 +104,19 @@ def test_roll_study_fig8_grid(roll):
             assert h[f"{world}_fig8_optimum_deg_{wind}"] in (10.0, 30.0)  # a grid point in smoke mode
     assert h["wall_time_s"] < 60.0
     assert math.isfinite(h["simulation_wall_time_s"])
+
+
+def test_roll_sim3_residual_is_the_sail_actuators_lag():
+    """Wille (2016b) §5: with perfect wind "the remaining error is likely caused by the delay in
+    the sail actuator". Where the law is on all the time (U10 = 13 m/s, the boat would heel far
+    past 10 deg), halving T_lambda (0.5 s, Appendix A) halves sim 3's roll amplitude, and the
+    mean heel stays at phi_d."""
+    runs = {}
+    for lag in (0.5, 0.25):
+        job = dict(world="paper", sim="sim3", seed=0, duration=100.0, wind_speed=13.0, sail_time_constant=lag)
+        runs[lag] = wille_roll_table1.numbers(wille_roll_table1.simulate(job))
+    for n in runs.values():
+        assert n["on"] == 1.0
+        assert abs(n["mean_heel"] - 10.0) < 0.3
+    assert 0.5 < runs[0.5]["roll_amplitude"] < 1.0  # measured 0.71 deg
+    assert 0.4 < runs[0.25]["roll_amplitude"] / runs[0.5]["roll_amplitude"] < 0.65  # measured 0.54
