@@ -135,6 +135,7 @@ class SailTask(control.Task):
         self.heading_jitter = math.radians(heading_jitter_deg)
         self.stopped = None
         self.last_observation = None
+        self._reward_observation = None  # (time, observation) measured for the reward, see get_reward
         self._records: list[dict] = []
 
     # ---- hooks for subclasses
@@ -167,8 +168,10 @@ class SailTask(control.Task):
         self.stopped = None
         self._records = []
         self.last_observation = None
+        self._reward_observation = None
 
     def before_step(self, action, physics):
+        self._reward_observation = None
         action = np.asarray(action, dtype=float)
         if action.shape != (2,) or not np.all(np.isfinite(action)):
             raise ValueError(f"{self.name}: action must be 2 finite numbers [rudder, sail], got {action}")
@@ -190,6 +193,9 @@ class SailTask(control.Task):
         return specs.BoundedArray((2,), np.float64, low, high, name="rudder_sail")
 
     def get_observation(self, physics):
+        cached, self._reward_observation = self._reward_observation, None
+        if cached is not None and cached[0] == physics.time():
+            return cached[1]  # the state get_reward just measured (nothing moved since)
         obs = physics.observation() if hasattr(physics, "observation") else measure(physics)
         for key, value in self.references(physics).items():
             obs[key] = np.asarray(value, dtype=np.float64)
@@ -200,8 +206,11 @@ class SailTask(control.Task):
         return _spec_of(self.get_observation(physics))
 
     def get_reward(self, physics):
-        # dm_control asks for the reward before the observation: measure the current state
-        return float(sum(self.reward_terms(physics, self.get_observation(physics)).values()))
+        # dm_control asks for the reward before the observation: measure the current state once
+        # and hand the same observation to the get_observation call that follows in this step
+        observation = self.get_observation(physics)
+        self._reward_observation = (physics.time(), observation)
+        return float(sum(self.reward_terms(physics, observation).values()))
 
     def get_termination(self, physics):
         if getattr(physics, "stop_reason", None):
