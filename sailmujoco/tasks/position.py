@@ -112,8 +112,8 @@ class VielPhysics:
     @classmethod
     def for_control(cls, world, control_timestep: float, longest: float = 0.05) -> VielPhysics:
         """The world stepped at the largest sub-step <= ``longest`` [s] that divides the control
-        period (dm_control needs a whole number of sub-steps; the world integrates adaptively
-        inside each, so the sub-step only sets where the action may change)."""
+        period (dm_control needs a whole number of sub-steps; the world integrates in steps of
+        at most 0.01 s inside each, so the sub-step only sets where the action may change)."""
         return cls(world, timestep=control_timestep / math.ceil(control_timestep / longest))
 
     # dm_control Physics
