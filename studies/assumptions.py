@@ -28,7 +28,7 @@ from sailmujoco.controllers.base import Composite
 from sailmujoco import frames, stability, sweep
 from sailmujoco.params import get_boat
 
-from .common import Progress, Report, run_episode, setup_matplotlib
+from .common import Progress, Report, run_episode, save_figure, setup_matplotlib
 
 NAME = "assumptions"
 TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
@@ -399,9 +399,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     heatmap(plt, np.degrees(_pivot(data, "wille_yacht", "baseline", "keel_aoa")), axes[1, 2],
             "yacht: keel |α| (✓ < 10°, linear lift)", "deg", lambda v: v < 10)
     fig.suptitle("Where the assumptions hold over the wind plane (× = capsized / no data)")
-    fig.tight_layout()
-    fig.savefig(out / "wind_plane.png")
-    plt.close(fig)
+    save_figure(fig, out / "wind_plane.png")
 
     fig, ax = plt.subplots(figsize=(5, 4))
     for l_phi, group in steady.groupby("l_phi"):
@@ -412,9 +410,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     ax.set_ylabel("6-DOF steady heel [deg]")
     ax.set_title("Static optimum vs heel reached (robot)")
     ax.legend()
-    fig.tight_layout()
-    fig.savefig(out / "phi_star_vs_heel.png")
-    plt.close(fig)
+    save_figure(fig, out / "phi_star_vs_heel.png")
 
     report = Report(TITLE)
     report.paragraph(__doc__.split("\n\n", 1)[1])

@@ -152,6 +152,16 @@ def setup_matplotlib():
     return plt
 
 
+def save_figure(fig, path: Path) -> Path:
+    """Lay out, write and close a study figure; returns its path."""
+    import matplotlib.pyplot as plt
+
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+    return path
+
+
 def timer():
     start = time.perf_counter()
     return lambda: time.perf_counter() - start

@@ -19,7 +19,7 @@ import numpy as np
 import pandas as pd
 from sailmujoco.controllers.saoud import SaoudParams, optimal_sail
 
-from .common import Report, setup_matplotlib
+from .common import Report, save_figure, setup_matplotlib
 
 NAME = "saoud_fig3_fig4"
 TITLE = "Saoud (2015) Figs. 3-4: optimal sail, roll and attack angles vs apparent wind angle"
@@ -68,9 +68,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
         ax.set_xlim(-180, 180)
     axes[0].legend()
     fig.suptitle("Saoud Fig. 3 (reproduced): problem (5), no roll limit")
-    fig.tight_layout()
-    fig.savefig(out / "fig3.png")
-    plt.close(fig)
+    save_figure(fig, out / "fig3.png")
 
     fig4 = data[data["figure"] == 4]
     fig, axes = plt.subplots(1, 2, figsize=(10, 4))
@@ -84,9 +82,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
         ax.set_xlim(-180, 180)
     axes[0].legend(title="|V| = 5 m/s, l_φ = 0.1 m")
     fig.suptitle("Saoud Fig. 4 (reproduced): problem (14), roll limited")
-    fig.tight_layout()
-    fig.savefig(out / "fig4.png")
-    plt.close(fig)
+    save_figure(fig, out / "fig4.png")
 
     # the properties the paper states, measured
     max_phi = float(fig3["phi"].abs().max())

@@ -30,7 +30,7 @@ from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import get_boat
 from sailmujoco.tasks.sailing import SpeedTrial
 
-from .common import Progress, Report, run_episode, setup_matplotlib, timer
+from .common import Progress, Report, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "saoud_fig6"
 TITLE = "Saoud (2015) Fig. 6: speed and roll over time, optimal sail S vs Briere's Bm"
@@ -247,9 +247,7 @@ def plot(series: pd.DataFrame, stats: dict, l_phi: float, path: Path) -> None:
     axes[0, 0].legend(loc="lower right", bbox_to_anchor=(1.0, 0.1))
     fig.suptitle(f"Saoud Fig. 6 (reproduced): true wind {TRUE_WIND:g} m/s at the sail, heading 0 held "
                  f"by a PID, $l_\\phi$ = {l_phi:g} m")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 # ----------------------------------------------------------------------------- report

@@ -30,7 +30,7 @@ import pandas as pd
 
 from sailmujoco import polar, sweep
 
-from .common import Report, parallel_map, run_episode, setup_matplotlib, timer
+from .common import Report, parallel_map, run_episode, save_figure, setup_matplotlib, timer
 from .saoud_fig6 import (
     BOAT,
     L_PHI,
@@ -284,9 +284,7 @@ def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
             if col == 0:
                 ax.set_ylabel("maximum velocity [m/s]")
     fig.suptitle(f"Saoud Fig. 7 (reproduced): steady speed at |v_w| = {TRUE_WIND:g} m/s (at the sail)")
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
+    save_figure(fig, path)
 
 
 # ----------------------------------------------------------------------------- report

@@ -39,7 +39,7 @@ from sailmujoco.tasks.base import SailEnvironment
 from sailmujoco.tasks.position import CASES as WIND_CASES
 from sailmujoco.tasks.position import PositionKeeping, VielPhysics
 
-from .common import Progress, Report, relative_difference, run_episode, setup_matplotlib, timer
+from .common import Progress, Report, relative_difference, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "viel_fig3"
 TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, three worlds"
@@ -377,11 +377,7 @@ def figure_world(out: Path, key: str, runs: dict, start) -> Path:
                                                  f"{np.hypot(*start):.0f} m)" if top > limit else ""))
     ax.legend(fontsize=7, loc="upper center", ncol=4, framealpha=0.9)
     fig.suptitle(f"Viel Fig. 3 reproduced, {LABELS[key]}: start {start} m, seed 0, dt {DT:g} s, paper's gains")
-    fig.tight_layout()
-    path = out / f"fig3_{key}.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / f"fig3_{key}.png")
 
 
 def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: pd.DataFrame) -> Path:
@@ -430,11 +426,7 @@ def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: 
         ax.set_ylabel("max distance after the stop [m]")
         ax.set_ylim(0, 25)
         ax.legend(fontsize=7, loc="upper left")
-    fig.tight_layout()
-    path = out / "max_distance.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "max_distance.png")
 
 
 def figure_six_dof(out: Path, runs: dict) -> Path:
@@ -448,11 +440,7 @@ def figure_six_dof(out: Path, runs: dict) -> Path:
         _trajectory_panel(ax, run, int(run["case"]), DEFAULT_START,
                           title=f"{boat}, case {int(run['case'])}\n{VARIANT_LABELS[variant]}\n{note}")
     axes[0][0].legend(loc="lower left", fontsize=6)
-    fig.tight_layout()
-    path = out / "six_dof_switches.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "six_dof_switches.png")
 
 
 # --------------------------------------------------------------------------- the study

@@ -30,7 +30,7 @@ from sailmujoco.controllers.wille_roll import WilleRollSail
 from sailmujoco import suite, sweep
 from sailmujoco.params import get_boat
 
-from .common import Report, parallel_map, relative_difference, setup_matplotlib, timer
+from .common import Report, parallel_map, relative_difference, save_figure, setup_matplotlib, timer
 
 NAME = "wille_course_table2"
 TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
@@ -187,11 +187,7 @@ def figure_positions(results: dict, out: Path, plt) -> Path:
     axes[0].legend(loc="lower left")
     fig.suptitle("Fig. 4 (reproduced): position, heading and course controller "
                  "(U10 = 5 m/s, β_w = 130°, 200 s)")
-    fig.tight_layout()
-    path = out / "fig4_position.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "fig4_position.png")
 
 
 def figure_course(results: dict, out: Path, plt) -> Path:
@@ -214,11 +210,7 @@ def figure_course(results: dict, out: Path, plt) -> Path:
     axes[-1].set_xlabel("time [s]")
     axes[0].legend(loc="lower right", ncol=2)
     fig.suptitle("Fig. 5 (reproduced): course, heading and course controller")
-    fig.tight_layout()
-    path = out / "fig5_course.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "fig5_course.png")
 
 
 # ----------------------------------------------------------------------------- the study

@@ -45,7 +45,7 @@ from sailmujoco.controllers.wille_roll import PHI_D, build_sail_tables
 from sailmujoco import sweep
 from sailmujoco.params import get_boat
 
-from .common import Report, setup_matplotlib, timer
+from .common import Report, save_figure, setup_matplotlib, timer
 from .wille_course_table2 import BOAT, make_env, run_jobs
 
 NAME = "wille_roll_table1"
@@ -332,11 +332,7 @@ def figure_series(r: Results, out, plt, column, sims, number, title, ylabel) -> 
     axes[-1].set_xlabel("time [s]")
     fig.suptitle(f"Fig. {number} (reproduced): {title}\nbeam reach, U10 = {WIND:g} m/s, last {WINDOW:g} s "
                  "of 300 s", fontsize=11)
-    fig.tight_layout()
-    path = out / f"fig{number}_{column.split('_')[0]}.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / f"fig{number}_{column.split('_')[0]}.png")
 
 
 def figure_seeds(r: Results, out, plt) -> Path:
@@ -358,11 +354,7 @@ def figure_seeds(r: Results, out, plt) -> Path:
     axes[0].legend(loc="upper left", ncol=3, fontsize=7)
     axes[-1].set_xlabel("time [s]")
     fig.suptitle("Roll angle by gust realisation, paper world (last 50 s)", fontsize=11)
-    fig.tight_layout()
-    path = out / "fig5_seeds.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "fig5_seeds.png")
 
 
 def figure_realisations(r: Results, out, plt) -> Path:
@@ -401,11 +393,7 @@ def figure_realisations(r: Results, out, plt) -> Path:
     bx.set_title("sim 3's residual against the sail actuator's lag", fontsize=10)
     bx.legend(fontsize=7, loc="upper left")
     fig.suptitle("Table 1, sim 3: what sets the remaining roll with perfect wind", fontsize=11)
-    fig.tight_layout()
-    path = out / "sim3_realisations.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "sim3_realisations.png")
 
 
 def figure_moments(r: Results, out, plt) -> Path:
@@ -421,11 +409,7 @@ def figure_moments(r: Results, out, plt) -> Path:
     axes[0].legend(ncol=3, fontsize=7)
     fig.suptitle(f"Fig. 3 (reproduced): moments in roll while beam reaching, U10 = {SHARES_WIND:g} m/s, "
                  "roll control off")
-    fig.tight_layout()
-    path = out / "fig3_moments.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "fig3_moments.png")
 
 
 def figure_fig8(tables, switch, out, plt) -> Path:
@@ -452,11 +436,7 @@ def figure_fig8(tables, switch, out, plt) -> Path:
     ax.set_ylabel("top speed in surge u [m/s] (mean of the last 50 s)")
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))
     ax.set_title("Fig. 8 (reproduced): top surge speed against φ_d, beam reach")
-    fig.tight_layout()
-    path = out / "fig8_speed_vs_heel.png"
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return save_figure(fig, out / "fig8_speed_vs_heel.png")
 
 
 # ----------------------------------------------------------------------------- the study
