@@ -93,7 +93,7 @@ import scipy.linalg
 
 from sailmujoco import frames
 from sailmujoco.constants import GRAVITY
-from sailmujoco.forces.foil import foil_world_force, sail_coefficients, section_flow
+from sailmujoco.forces.foil import sail_forces
 from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import BoatParams, wille_yacht
 
@@ -192,19 +192,10 @@ def relative_sail_force(beta_ws: float, sail_angle, params: BoatParams | None = 
     p = wille_yacht() if params is None else params
     s = p.sail
     lam = np.asarray(sail_angle, dtype=float)
-    flow = flow_from_beta_ws(beta_ws)
-    chord, normal, out = np.zeros(3), np.zeros(3), np.empty(3)
-    result = np.empty(lam.shape + (3,))
-    for index, angle in np.ndenumerate(lam):
-        chord[0], chord[1] = math.cos(angle), -math.sin(angle)
-        normal[0], normal[1] = math.sin(angle), math.cos(angle)
-        _, _, speed, alpha = section_flow(flow, chord, normal)
-        c_n, c_t = sail_coefficients(alpha, tangential, s.suction_efficiency, s.suction_stall,
-                                     s.friction_coefficient)
-        q_area = 0.5 * p.rho_air * speed * speed * s.area
-        foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, out)
-        result[index] = out
-    return result
+    result = np.empty((lam.size, 3))
+    sail_forces(flow_from_beta_ws(beta_ws), lam.ravel(), tangential, s.suction_efficiency, s.suction_stall,
+                s.friction_coefficient, 0.5 * p.rho_air * s.area, result)
+    return result.reshape(lam.shape + (3,))
 
 
 def relative_surge_and_moment(beta_ws: float, sail_angle, params: BoatParams | None = None, *,

@@ -199,3 +199,26 @@ def foil_world_force(fc, fn, chord_axis, normal_axis, out):
     """out = F_c c + F_n n (world frame)."""
     for k in range(3):
         out[k] = fc * chord_axis[k] + fn * normal_axis[k]
+
+
+@kernel
+def sail_forces(flow, sail_angles, tangential, suction_efficiency, suction_stall, friction, q_area_per_speed2,
+                out):
+    """The flat sail's body-FLU force for each angle of ``sail_angles`` (n,) into ``out`` (n, 3).
+
+    ``flow`` (3,) is the air velocity at the CE, ``q_area_per_speed2`` = rho_a A / 2. The chord
+    and normal axes of a sail at angle l are (cos l, -sin l, 0) and (sin l, cos l, 0), as in the
+    physics kernel; the force is q A (C_T c - C_N n). One compiled loop: the sail tables of the
+    roll controller evaluate it at some 300 000 angles.
+    """
+    chord, normal, force = np.zeros(3), np.zeros(3), np.zeros(3)
+    for i in range(sail_angles.shape[0]):
+        angle = sail_angles[i]
+        chord[0], chord[1] = math.cos(angle), -math.sin(angle)
+        normal[0], normal[1] = math.sin(angle), math.cos(angle)
+        _, _, speed, alpha = section_flow(flow, chord, normal)
+        c_n, c_t = sail_coefficients(alpha, tangential, suction_efficiency, suction_stall, friction)
+        q_area = q_area_per_speed2 * speed * speed
+        foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, force)
+        for k in range(3):
+            out[i, k] = force[k]
