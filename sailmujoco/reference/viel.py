@@ -58,6 +58,7 @@ from scipy.integrate import solve_ivp
 
 from ..forces.wind import WindConfig, WindField
 from ..frames import heading_from_yaw, wrap_angle
+from .integrators import rk4, steps_for
 
 STATE_NAMES = ("x", "y", "theta", "v", "u", "omega")
 INTEGRATORS = ("rk4", "rk45")  # VielWorld(integrator=...): fixed-step RK4, or solve_ivp's RK45
@@ -340,7 +341,7 @@ class VielWorld:
 
         if self.integrator == "rk4":
             try:
-                new = rk4(rhs, self._time, self._state, dt, math.ceil(dt / RK4_MAX_STEP - 1e-9))
+                new = rk4(rhs, self._time, self._state, dt, steps_for(dt, RK4_MAX_STEP))
                 message, success = "", True
             except (ValueError, OverflowError) as err:  # math.cos(inf) of a state that ran away
                 new, message, success = self._state, f"the state ran away: {err}", False
@@ -430,20 +431,6 @@ class VielWorld:
         hull = f["hull_wind"] * np.array([math.cos(psi_tw - theta), math.sin(psi_tw - theta), 0, 0, 0, 0])
         return dict(sail_wrench=sail, keel_wrench=zero.copy(), rudder_wrench=rudder, damping_wrench=damping,
                     added_mass_wrench=zero.copy(), restoring_wrench=zero.copy(), hull_wind_wrench=hull)
-
-
-def rk4(rhs, t0: float, y0, dt: float, n: int) -> np.ndarray:
-    """``n`` classical Runge-Kutta steps of ``dt / n`` of y' = rhs(t, y) from (t0, y0)."""
-    h = dt / n
-    y = np.asarray(y0, dtype=float)
-    for i in range(n):
-        t = t0 + i * h
-        k1 = rhs(t, y)
-        k2 = rhs(t + 0.5 * h, y + 0.5 * h * k1)
-        k3 = rhs(t + 0.5 * h, y + 0.5 * h * k2)
-        k4 = rhs(t + h, y + h * k3)
-        y = y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
-    return y
 
 
 def observation_from_world(world: VielWorld, target=None) -> dict:
