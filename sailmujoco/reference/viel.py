@@ -201,7 +201,7 @@ def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw
     ``yaw`` (= p10 domega/dt, eq. 6).
     """
     p = params
-    _, _, theta, v, u, omega = (float(s) for s in state)
+    _, _, theta, v, u, omega = np.asarray(state, dtype=float).tolist()
     a_aw, psi_aw = apparent_wind(a_tw, psi_tw, theta, v)
     g_rv, g_ru = rudder_forces(p, v, u, delta_r)  # Viel eqs. 7-8 (reading: see rudder_forces)
     g_s = p.p4 * a_aw * math.sin(delta_s - psi_aw)  # Viel eq. 9
@@ -219,7 +219,7 @@ def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw
 def model_rates(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
                 psi_tw: float) -> np.ndarray:
     """d/dt (x, y, theta, v, u, omega), Viel eqs. 1-6 (Viel signs for delta_r, delta_s)."""
-    _, _, theta, v, u, omega = (float(s) for s in state)
+    _, _, theta, v, u, omega = np.asarray(state, dtype=float).tolist()
     f = model_forces(params, state, delta_r, delta_s, a_tw, psi_tw)
     c, s = math.cos(theta), math.sin(theta)
     return np.array([
@@ -399,8 +399,10 @@ class VielWorld:
         return float(self._state[5])
 
     def velocity(self) -> np.ndarray:
-        """Ground velocity (east, north) [m/s], eqs. 1-2."""
-        return self.rates()[:2]
+        """Ground velocity (east, north) [m/s], eqs. 1-2 (kinematics only: no forces needed)."""
+        _, _, theta, v, u, _ = self._state
+        c, s = math.cos(theta), math.sin(theta)
+        return np.array([v * c - u * s, v * s + u * c])
 
     def apparent_wind(self) -> tuple[float, float]:
         """(a_aw [m/s], psi_aw [rad], Viel's body blows-towards angle), §2.3."""
