@@ -194,7 +194,7 @@ def relative_sail_force(beta_ws: float, sail_angle, params: BoatParams | None = 
     lam = np.asarray(sail_angle, dtype=float)
     result = np.empty((lam.size, 3))
     sail_forces(flow_from_beta_ws(beta_ws), lam.ravel(), tangential, s.suction_efficiency, s.suction_stall,
-                s.friction_coefficient, 0.5 * p.rho_air * s.area, result)
+                s.friction_coefficient, p.rho_air, s.area, result)
     return result.reshape(lam.shape + (3,))
 
 

@@ -23,10 +23,10 @@ from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
 from .damping import hull_damping
 from .foil import (
+    flat_sail_force,
     foil_world_force,
     hydrofoil_coefficients,
     lift_drag_components,
-    sail_coefficients,
     section_flow,
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
@@ -240,13 +240,9 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         _point_flow(wind_b, v, w, point, extra, flow)
         diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
-        chord[0], chord[1], chord[2] = cl_, -sl_, 0.0
-        normal[0], normal[1], normal[2] = sl_, cl_, 0.0
-        wc, wn, speed, alpha = section_flow(flow, chord, normal)
-        c_n, c_t = sail_coefficients(alpha, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
-                                     P[P_CF_SAIL])
-        q_area = 0.5 * P[P_RHO_A] * speed * speed * P[P_SAIL_AREA]
-        foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, force)  # F = qA(C_T c - C_N n)
+        speed, alpha, c_n, c_t = flat_sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION],
+                                                 P[P_STALL], P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA],
+                                                 chord, normal, force)
         _accumulate(terms, T_SAIL, force, point)
         # moment about the hinge axis (-z): -(arm x F)_z
         sail_hinge = -(arm_x * force[1] - arm_y * force[0])

@@ -201,24 +201,35 @@ def foil_world_force(fc, fn, chord_axis, normal_axis, out):
         out[k] = fc * chord_axis[k] + fn * normal_axis[k]
 
 
-@kernel
-def sail_forces(flow, sail_angles, tangential, suction_efficiency, suction_stall, friction, q_area_per_speed2,
-                out):
-    """The flat sail's body-FLU force for each angle of ``sail_angles`` (n,) into ``out`` (n, 3).
 
-    ``flow`` (3,) is the air velocity at the CE, ``q_area_per_speed2`` = rho_a A / 2. The chord
-    and normal axes of a sail at angle l are (cos l, -sin l, 0) and (sin l, cos l, 0), as in the
-    physics kernel; the force is q A (C_T c - C_N n). One compiled loop: the sail tables of the
-    roll controller evaluate it at some 300 000 angles.
+@kernel(inline=True)  # in the per-step physics kernel: inlined, it costs what the open block did
+def flat_sail_force(flow, angle, tangential, suction_efficiency, suction_stall, friction, rho_air, area,
+                    chord, normal, out):
+    """The flat sail's force at sail angle ``angle`` [rad] in ``flow`` (air velocity at the CE).
+
+    Chord (cos l, -sin l, 0) and normal (sin l, cos l, 0) go into the work arrays ``chord`` and
+    ``normal``; F = q A (C_T c - C_N n) into ``out``, in the frame of ``flow``. Returns
+    (speed, alpha, C_N, C_T). The one place the sail's force is built: the physics kernel, the
+    Wille 4-DOF world and the roll controller's sail tables all call it.
     """
+    c, s = math.cos(angle), math.sin(angle)
+    chord[0], chord[1], chord[2] = c, -s, 0.0
+    normal[0], normal[1], normal[2] = s, c, 0.0
+    _, _, speed, alpha = section_flow(flow, chord, normal)
+    c_n, c_t = sail_coefficients(alpha, tangential, suction_efficiency, suction_stall, friction)
+    q_area = 0.5 * rho_air * speed * speed * area
+    foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, out)
+    return speed, alpha, c_n, c_t
+
+
+@kernel
+def sail_forces(flow, sail_angles, tangential, suction_efficiency, suction_stall, friction, rho_air, area,
+                out):
+    """:func:`flat_sail_force` for each angle of ``sail_angles`` (n,) into ``out`` (n, 3): one
+    compiled loop, for the roll controller's sail tables (some 300 000 angles)."""
     chord, normal, force = np.zeros(3), np.zeros(3), np.zeros(3)
     for i in range(sail_angles.shape[0]):
-        angle = sail_angles[i]
-        chord[0], chord[1] = math.cos(angle), -math.sin(angle)
-        normal[0], normal[1] = math.sin(angle), math.cos(angle)
-        _, _, speed, alpha = section_flow(flow, chord, normal)
-        c_n, c_t = sail_coefficients(alpha, tangential, suction_efficiency, suction_stall, friction)
-        q_area = q_area_per_speed2 * speed * speed
-        foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, force)
+        flat_sail_force(flow, sail_angles[i], tangential, suction_efficiency, suction_stall, friction,
+                        rho_air, area, chord, normal, force)
         for k in range(3):
             out[i, k] = force[k]

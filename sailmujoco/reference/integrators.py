@@ -11,6 +11,9 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from scipy.integrate import solve_ivp
+
+INTEGRATORS = ("rk4", "rk45")  # a paper world's integrator=...: fixed-step RK4, or solve_ivp's RK45
 
 
 def steps_for(dt: float, max_step: float) -> int:
@@ -30,3 +33,24 @@ def rk4(rhs, t0: float, y0, dt: float, n: int) -> np.ndarray:
         k4 = rhs(t + h, y + h * k3)
         y = y + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4)
     return y
+
+
+def integrate(rhs, t0: float, y0, dt: float, integrator: str, max_step: float, rtol: float,
+              atol: float) -> tuple[np.ndarray, str]:
+    """y(t0 + dt) of y' = rhs(t, y), and "" or why the integration failed.
+
+    ``integrator`` "rk4": :func:`rk4` in equal steps of at most ``max_step``; "rk45": scipy's
+    ``solve_ivp`` with ``rtol``/``atol``. A failure (RK45's message, a state that ran away, a
+    non-finite result) is reported, not raised: each world raises its own error with its state.
+    """
+    if integrator == "rk4":
+        try:
+            y = rk4(rhs, t0, y0, dt, steps_for(dt, max_step))
+        except (ValueError, OverflowError) as err:  # math.cos(inf) of a state that ran away
+            return np.asarray(y0, dtype=float), f"the state ran away: {err}"
+    else:
+        sol = solve_ivp(rhs, (t0, t0 + dt), y0, method="RK45", rtol=rtol, atol=atol)
+        y = sol.y[:, -1]
+        if not sol.success:
+            return y, sol.message
+    return y, "" if np.all(np.isfinite(y)) else "non-finite state"

@@ -54,14 +54,12 @@ import math
 from dataclasses import dataclass, fields
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from ..forces.wind import WindConfig, WindField
 from ..frames import heading_from_yaw, wrap_angle
-from .integrators import rk4, steps_for
+from .integrators import INTEGRATORS, integrate
 
 STATE_NAMES = ("x", "y", "theta", "v", "u", "omega")
-INTEGRATORS = ("rk4", "rk45")  # VielWorld(integrator=...): fixed-step RK4, or solve_ivp's RK45
 RK4_MAX_STEP = 0.01  # s, the longest RK4 step (Viel §5.1's dt)
 RUDDER_LAWS = ("linear", "printed")  # Viel eqs. 7-8: read linear in the speed, or as printed
 
@@ -339,19 +337,11 @@ class VielWorld:
             w = wind.velocity(t, z)
             return model_rates(params, y, delta_r, delta_s, math.hypot(w[0], w[1]), math.atan2(w[1], w[0]))
 
-        if self.integrator == "rk4":
-            try:
-                new = rk4(rhs, self._time, self._state, dt, steps_for(dt, RK4_MAX_STEP))
-                message, success = "", True
-            except (ValueError, OverflowError) as err:  # math.cos(inf) of a state that ran away
-                new, message, success = self._state, f"the state ran away: {err}", False
-        else:
-            sol = solve_ivp(rhs, (self._time, self._time + dt), self._state, method="RK45",
-                            rtol=self.rtol, atol=self.atol)
-            new, message, success = sol.y[:, -1], sol.message, sol.success
-        if not success or not np.all(np.isfinite(new)):
+        new, message = integrate(rhs, self._time, self._state, dt, self.integrator, RK4_MAX_STEP, self.rtol,
+                                 self.atol)
+        if message:
             raise FloatingPointError(
-                f"VielWorld: integration failed at t={self._time:.3f} s ({message or 'non-finite'}); "
+                f"VielWorld: integration failed at t={self._time:.3f} s ({message}); "
                 f"state {dict(zip(STATE_NAMES, new, strict=True))}, action {applied}")
         new = new.copy()
         new[2] = float(wrap_angle(new[2]))

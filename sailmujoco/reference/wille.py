@@ -42,18 +42,17 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.integrate import solve_ivp
 
 from .. import frames
 from ..constants import GRAVITY
 from ..forces.added_mass import kirchhoff_terms
 from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
 from ..forces.foil import (
+    flat_sail_force,
     foil_world_force,
     hydrofoil_coefficients,
     lift_drag_components,
     naca0015,
-    sail_coefficients,
     section_flow,
 )
 from ..forces.hydrostatics import paper_righting_moment
@@ -61,10 +60,9 @@ from ..forces.wind import WindConfig, WindField
 from ..hull import strip_quadrature
 from ..params import BoatParams, get_boat
 from ..physics import ForceSwitches, SimulationStopped  # the same switches and stop as in 6-DOF
-from .integrators import rk4, steps_for
+from .integrators import INTEGRATORS, integrate
 
 STATE = ("x", "y", "phi", "psi", "u", "v", "p", "r", "sigma", "lam")
-INTEGRATORS = ("rk4", "rk45")  # Wille4DOF(integrator=...): fixed-step RK4, or solve_ivp's RK45
 RK4_MAX_STEP = 0.05  # s, the longest RK4 step: a quarter of the fastest lag (the rudder's T_sigma 0.2 s)
 TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")
 
@@ -165,17 +163,10 @@ class Wille4DOF:
             raise SimulationStopped(self.stop_reason, self._time)
         t0, t1 = self._time, self._time + nstep * self._dt
         self.wind.ensure(t1 + 1.0)
-        if self.integrator == "rk4":
-            try:
-                new, message = rk4(self._rhs, t0, self.state, t1 - t0, steps_for(t1 - t0, RK4_MAX_STEP)), ""
-            except (ValueError, OverflowError) as err:  # math.cos(inf) of a state that ran away
-                new, message = self.state, f"the state ran away: {err}"
-        else:
-            sol = solve_ivp(self._rhs, (t0, t1), self.state, method="RK45", rtol=self._rtol,
-                            atol=self._atol)
-            new, message = sol.y[:, -1], "" if sol.success else sol.message
-        if message or not np.all(np.isfinite(new)):
-            self.stop_reason = f"integration failed: {message or 'non-finite state'}"
+        new, message = integrate(self._rhs, t0, self.state, t1 - t0, self.integrator, RK4_MAX_STEP,
+                                 self._rtol, self._atol)
+        if message:
+            self.stop_reason = f"integration failed: {message}"
             raise SimulationStopped(self.stop_reason, self._time)
         self.state = np.array(new, dtype=float)
         self._time = t1
@@ -211,13 +202,9 @@ class Wille4DOF:
             vws_u, vws_v = self._sail_flow(t, state)
             cl, sl = math.cos(lam), math.sin(lam)
             flow = np.array([vws_u, -vws_v, 0.0])  # FRD -> FLU
-            chord = np.array([cl, -sl, 0.0])
-            normal = np.array([sl, cl, 0.0])
-            wc, wn, speed, alpha = section_flow(flow, chord, normal)
-            c_n, c_t = sail_coefficients(alpha, sw.sail_tangential, p.sail.suction_efficiency,
-                                         p.sail.suction_stall, p.sail.friction_coefficient)
-            qa = 0.5 * p.rho_air * speed * speed * p.sail.area
-            foil_world_force(qa * c_t, -qa * c_n, chord, normal, force)
+            flat_sail_force(flow, lam, sw.sail_tangential, p.sail.suction_efficiency, p.sail.suction_stall,
+                            p.sail.friction_coefficient, p.rho_air, p.sail.area, np.empty(3), np.empty(3),
+                            force)
             sx, sy = force[0], -force[1]  # FLU -> FRD
             out["sail"][:] = (sx, sy, h1 * sy, sx * l2 * sl - sy * (l1 + l2 * cl),  # eq. 29
                               -h1 * sx)
