@@ -62,6 +62,11 @@ def waterplane_area(h: HullShape) -> float:
     return 4.0 / 3.0 * h.half_beam * h.length
 
 
+def centre_of_flotation_x(h: HullShape) -> float:
+    """Centroid of the upright waterplane forward of CO, m: 0, the planform is fore-aft symmetric."""
+    return 0.0
+
+
 def bm_transverse(h: HullShape) -> float:
     """Transverse metacentric radius BM = I_T / V, m."""
     return 32.0 / 105.0 * h.half_beam**3 * h.length / volume(h)

@@ -17,6 +17,7 @@ not depend on how many sub-steps a control step has.
 
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import dataclass
 
@@ -25,13 +26,19 @@ import numpy as np
 from dm_control.mujoco import engine
 from dm_control.mujoco.wrapper import core
 
-from . import frames
+from . import frames, stability
 from .forces import boat as kernels
 from .forces.foil import naca0015
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .hull import column_quadrature, strip_quadrature
 from .mjcf import compile_model
 from .params import BoatParams, get_boat
+
+
+@functools.lru_cache(maxsize=8)
+def _floating_table(params: BoatParams) -> stability.FloatingTable:
+    """The floating table of a boat, built once per process (about 0.25 s)."""
+    return stability.floating_table(params)
 
 
 def _csr(m, i: int, j: int) -> int:
@@ -52,7 +59,16 @@ class SimulationStopped(RuntimeError):
 
 @dataclass(frozen=True)
 class ForceSwitches:
-    """Which force models act. ``hydrostatics``: 'geometric', 'paper' or 'off'."""
+    """Which force models act, and in which form.
+
+    ``hydrostatics``: 'geometric', 'paper' or 'off'. The three forms below are the modelling
+    choices of issue 15; the second value of each keeps the form used up to 0bcfa2b so that its
+    effect can be measured (the force modules' docstrings give the reasons and sources):
+    ``added_mass_coupling`` 'manoeuvring' (no forward-speed added-mass terms in heave and pitch)
+    or 'kirchhoff' (the unbounded-fluid terms); ``vertical_damping`` 'world' (heave and pitch
+    damping on the vertical motion) or 'body' (on body w and q); ``restoring_axes``
+    'horizontal' (paper restoring moments about level axes) or 'body'.
+    """
 
     hydrostatics: str = "geometric"
     sail: bool = True
@@ -61,6 +77,9 @@ class ForceSwitches:
     damping: bool = True
     added_mass: bool = True
     sail_tangential: bool = True
+    added_mass_coupling: str = "manoeuvring"
+    vertical_damping: str = "world"
+    restoring_axes: str = "horizontal"
 
 
 def _entry_point(dispatcher):
@@ -124,7 +143,9 @@ class BoatPhysics(engine.Physics):
         self._P = kernels.pack_parameters(
             params, hydrostatics=forces.hydrostatics, sail=forces.sail, keel=forces.keel,
             rudder=forces.rudder, damping=forces.damping, added_mass=forces.added_mass,
-            sail_tangential=forces.sail_tangential, wind=wind, wander_dt=WANDER_DT)
+            sail_tangential=forces.sail_tangential, wind=wind, wander_dt=WANDER_DT,
+            added_mass_coupling=forces.added_mass_coupling,
+            vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes)
         cols = column_quadrature(params.hull)
         self._columns = np.ascontiguousarray(
             np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))
@@ -159,6 +180,13 @@ class BoatPhysics(engine.Physics):
             self._qfrc8 = np.zeros(8)
             self._kidx = np.array([7, 6, 8, 7], dtype=np.int64)
             self._a_diag = params.added_mass_diagonal if forces.added_mass else np.zeros(6)
+            self._floating = None
+            if forces.hydrostatics == "geometric":
+                # the held pose (heave 0, trim 0) over-displaces the heeled hull; the 4-DOF
+                # boat floats at every heel: its hydrostatics come from the freely floating
+                # hull at the current heel (stability.FloatingTable), added in _forces_4dof
+                self._floating = _floating_table(params)
+                self._P[kernels.P_HYDRO_MODE] = kernels.HYDROSTATIC_MODES.index("off")
         self._kernel = _entry_point(kernels.boat_forces)
         self._bound = None
         self._status = kernels.STATUS_OK
@@ -251,16 +279,49 @@ class BoatPhysics(engine.Physics):
         v6[6], v6[7] = d.qvel[4], d.qvel[5]
         return rot
 
+    def _floating_hydrostatics(self, rot) -> None:
+        """4-DOF geometric mode: the hydrostatic wrench of the hull floating freely at this heel.
+
+        Buoyancy equal to the weight, vertical through the CG, plus the righting moment of the
+        hull at the heave and trim that float it (quasi-static), about the horizontal heading
+        axis, which in 4 DOF is body x. Added to the term and to the pseudo free-joint forces.
+        """
+        table, p = self._floating, self.params
+        heel = float(self.data.ptr.qpos[3])
+        righting = float(np.interp(heel, table.heel, table.righting))
+        weight = p.mass * self._P[kernels.P_G]
+        force_b = weight * rot[2, :]  # world vertical in body axes
+        cg = np.array([p.cg_x, 0.0, p.cg_z])
+        wrench = np.concatenate([force_b, np.cross(cg, force_b)])
+        wrench[3] -= righting
+        self._terms[kernels.T_HYDRO] = wrench
+        self._diag[kernels.D_SUBMERGED] = float(np.interp(heel, table.heel, table.volume))
+        self._qfrc8[0:3] += rot @ force_b
+        self._qfrc8[3:6] += wrench[3:]
+
     def _forces_4dof(self, add_mass: bool) -> int:
         """Forces (and added mass) of the heave-and-pitch-held model on its x, y, yaw, roll joints."""
         d = self.data.ptr
         rot = self._fill_pseudo()
         status = self._kernel(d.time, *self._args, False)
+        if status != kernels.STATUS_OK:
+            return status
+        if self._floating is not None:
+            self._floating_hydrostatics(rot)
         f = self._qfrc8
         torque_world = rot @ f[3:6]
         qfrc = d.qfrc_applied
         qfrc[0], qfrc[1], qfrc[2], qfrc[3] = f[0], f[1], torque_world[2], f[3]
         qfrc[4], qfrc[5] = f[6], f[7]
+        a = self._a_diag
+        if a[4] != a[5]:
+            # the rotational added-mass rate term the pseudo free-joint kernel cannot see: with
+            # omega_b = (roll_dot, sin(phi) yaw_dot, cos(phi) yaw_dot), d(omega_b)/dt has the
+            # part (0, cos(phi), -sin(phi)) roll_dot yaw_dot beyond J q_ddot; -A2 times it, on
+            # the yaw joint: (a66 - a55) sin(phi) cos(phi) roll_dot yaw_dot (Lagrange's equation
+            # of T = 1/2 omega^T A2 omega gives the same; nothing on the roll joint).
+            heel = d.qpos[3]
+            qfrc[2] += (a[5] - a[4]) * math.sin(heel) * math.cos(heel) * d.qvel[3] * d.qvel[2]
         if add_mass:
             # J maps (xd, yd, yawd, rolld) to the body velocity (u, v, w, p, q, r) at CO
             jac = np.zeros((6, 4))
@@ -457,6 +518,16 @@ class BoatPhysics(engine.Physics):
     def force_terms(self) -> dict[str, np.ndarray]:
         self._ensure_fresh()
         return {name: self._terms[i].copy() for i, name in enumerate(kernels.TERMS)}
+
+    def floating_pose(self) -> tuple[float, float]:
+        """(height of CO in m, trim in rad) at which the hydrostatics are evaluated: the hull's
+        own in 6 DOF; in 4 DOF with geometric hydrostatics, the heave and trim that float the
+        hull at the current heel (the held joints stay at 0)."""
+        if self.dofs == 4 and self._floating is not None:
+            heel, table = float(self.data.ptr.qpos[3]), self._floating
+            return (float(np.interp(heel, table.heel, table.heave)),
+                    float(np.interp(heel, table.heel, table.trim)))
+        return float(self.position()[2]), self.pitch()
 
     def submerged_volume(self) -> float:
         """Submerged volume (geometric hydrostatics only), m^3."""

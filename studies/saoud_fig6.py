@@ -452,16 +452,47 @@ saturated at 35°, exactly as the 6-DOF robot does (rows 3-4 and 13-14).
 0.36 m, freeboard 0.12 m) gives Saoud's m g l_φ sin φ only up to ≈ 15° of heel, 38 % less at
 30°; it peaks at 4.8 N m near 40° and vanishes near 75° (`sailmujoco.stability.righting_curve`),
 so the 6-DOF robot heels further (up to {heel_geo:.0f}° in the segment means) and the helm
-outgrows the rudder. With eq. 4 switched into the 6-DOF world (rows 15-16) it sails the whole
-trial on heading; S is faster than Bm in {", ".join(f"{a:g}°" for a in faster) or "no"} segment(s)
-{f"and slower at {', '.join(f'{a:g}°' for a in slower)}, where Bm's run settles on another yaw "
- f"balance (heading {eq4('Bm', 'heading', slower[0]):.0f}° against S's "
- f"{eq4('S', 'heading', slower[0]):.0f}°, "
- f"{eq4('Bm', 'rudder', slower[0]):.0f}° of rudder against {eq4('S', 'rudder', slower[0]):.0f}°): the "
- "rudder's drag, which" if slower else "; the rudder's drag, which"}
-S's cost (the sail's thrust alone) does not see, weighs on the comparison.
+outgrows the rudder. {_eq4_sentence(eq4, faster, slower)}
 
-So the 6-DOF miss at l_φ = 0.1 m is the heel → yaw coupling together with the hull's smaller
-righting moment at large heel, not the sail laws. At l_φ = 1 m neither bites (heel below 5°) and
+{_eq4_conclusion(eq4)} At l_φ = 1 m neither bites (heel below 5°) and
 both worlds agree with the paper's sentence.
 """
+
+
+def _eq4_held(eq4) -> bool:
+    return all(eq4(law, "held", a) for law in LAWS for a in ANGLES_DEG)
+
+
+def _eq4_sentence(eq4, faster, slower) -> str:
+    """What rows 15-16 (Saoud eq. 4 as the 6-DOF restoring) show, from their numbers."""
+    if not _eq4_held(eq4):
+        lost = sorted({a for law in LAWS for a in ANGLES_DEG if not eq4(law, "held", a)})
+        rudder = max(abs(eq4(law, "rudder", a)) for law in LAWS for a in lost)
+        return ("With eq. 4 switched into the 6-DOF world (rows 15-16) the robot still does not "
+                f"hold heading 0 in the {', '.join(f'{a:g}°' for a in lost)} segment(s) (rudder up "
+                f"to {rudder:.0f}°): a righting moment as large as Saoud's does not stop it. (Up to "
+                "0bcfa2b eq. 4 was applied about the heeled body axes; heeled and trimmed, that "
+                "moment had a yaw part, 24 % of the rudder's as measured on 0bcfa2b, which held the boat "
+                "on heading. "
+                "Restoring is a couple of vertical forces and has no yaw part.)")
+    text = "With eq. 4 switched into the 6-DOF world (rows 15-16) it sails the whole trial on heading; "
+    text += f"S is faster than Bm in {', '.join(f'{a:g}°' for a in faster) or 'no'} segment(s)"
+    if slower:
+        a = slower[0]
+        text += (f" and slower at {', '.join(f'{b:g}°' for b in slower)}, where Bm's run settles on "
+                 f"another yaw balance (heading {eq4('Bm', 'heading', a):.0f}° against S's "
+                 f"{eq4('S', 'heading', a):.0f}°, {eq4('Bm', 'rudder', a):.0f}° of rudder against "
+                 f"{eq4('S', 'rudder', a):.0f}°): the rudder's drag, which")
+    else:
+        text += "; the rudder's drag, which"
+    return text + " S's cost (the sail's thrust alone) does not see, weighs on the comparison."
+
+
+def _eq4_conclusion(eq4) -> str:
+    if _eq4_held(eq4):
+        return ("So the 6-DOF miss at l_φ = 0.1 m is the heel → yaw coupling together with the "
+                "hull's smaller righting moment at large heel, not the sail laws.")
+    return ("So the 6-DOF miss at l_φ = 0.1 m is the heel → yaw coupling of the heeled sail's "
+            "drive, which the 4-DOF equations drop (the rigid switch makes the paper world miss "
+            "the same way); the geometric hull's smaller righting moment adds heel but does not "
+            "decide it. It is not the sail laws.")

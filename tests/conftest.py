@@ -12,9 +12,10 @@ BOATS = ("wille_yacht", "saoud_robot")
 CALM = WindConfig(speed=0.0, gusts=False, wander=False)
 
 
-def load(boat="wille_yacht", *, wind=CALM, sail_mode="actuated", **switches):
+def load(boat="wille_yacht", *, wind=CALM, sail_mode="actuated", dofs=6, **switches):
     """A BoatPhysics with the given force switches (ForceSwitches field names)."""
-    return BoatPhysics.load(boat, wind=wind, sail_mode=sail_mode, forces=ForceSwitches(**switches))
+    return BoatPhysics.load(boat, wind=wind, sail_mode=sail_mode, forces=ForceSwitches(**switches),
+                            dofs=dofs)
 
 
 def only_hull(boat="wille_yacht", hydrostatics="off", **extra):

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from conftest import only_hull
 
-from sailmujoco.forces.added_mass import added_mass_velocity_terms
+from sailmujoco.forces.added_mass import added_mass_velocity_terms, kirchhoff_terms
 
 
 def _accelerate(physics, wrench, seconds=1.0):
@@ -79,9 +79,42 @@ def test_munk_moment_sign_and_size():
     a = np.array([160.0, 1200.0, 9000.0, 1000.0, 20000.0, 2400.0])
     out = np.zeros(6)
     u, v = 3.0, 0.4
-    added_mass_velocity_terms(np.array([u, v, 0, 0, 0, 0.0]), a, out)
+    added_mass_velocity_terms(np.array([u, v, 0, 0, 0, 0.0]), a, False, out)
     assert out[5] == pytest.approx((a[0] - a[1]) * u * v)
     assert out[:5] == pytest.approx(np.zeros(5))
     # pure rotation about z: omega x (A2 omega) vanishes, the force is A1 (w x v) - w x (A1 v)
-    added_mass_velocity_terms(np.array([u, 0, 0, 0, 0, 0.2]), a, out)
+    added_mass_velocity_terms(np.array([u, 0, 0, 0, 0, 0.2]), a, False, out)
     assert out[1] == pytest.approx(a[1] * 0.2 * u - a[0] * 0.2 * u)
+
+
+@pytest.mark.parametrize("full", [False, True])
+def test_velocity_terms_do_no_work(full, rng):
+    """An ideal fluid's added-mass Coriolis terms are gyroscopic: F.v + M.omega = 0, with and
+    without the heave/pitch couplings (each left-out triple is energy-neutral on its own)."""
+    a = np.array([160.0, 1200.0, 9600.0, 1000.0, 26000.0, 2400.0])
+    out = np.zeros(6)
+    for _ in range(20):
+        nu = rng.normal(size=6) * np.array([3.0, 0.5, 0.3, 0.2, 0.1, 0.2])
+        kirchhoff_terms(nu, a, full, out)
+        assert abs(out @ nu) < 1e-9 * np.abs(out).sum() * np.abs(nu).sum()
+
+
+def test_no_forward_speed_added_mass_terms_in_heave_and_pitch():
+    """Manoeuvring form: a trimmed hull at speed (u = 8, w = U sin(trim)) gets no pitch moment
+    or heave force from the velocity terms; the Kirchhoff form's pitch row is the destabilising
+    Munk moment (a33 - a11) u w (Fossen 2011 eq. 6.54), which the switch keeps."""
+    a = np.array([160.0, 1200.0, 9600.0, 1000.0, 26000.0, 2400.0])
+    u, w = 8.0, -8.0 * math.sin(math.radians(1.0))
+    nu = np.array([u, 0.0, w, 0.0, 0.0, 0.0])
+    out = np.zeros(6)
+    kirchhoff_terms(nu, a, False, out)
+    assert np.all(out == 0.0)
+    kirchhoff_terms(nu, a, True, out)
+    assert out[4] == pytest.approx((a[2] - a[0]) * u * w)
+    # as a stiffness: -(a33 - a11) U^2 per radian of trim, 9 440 U^2 N m/rad here
+    assert out[4] / math.radians(1.0) == pytest.approx(-(a[2] - a[0]) * u * u, rel=1e-4)
+    # the horizontal-plane Munk moment of Wille eq. 10 stays in both forms
+    v = 0.4
+    for full in (False, True):
+        kirchhoff_terms(np.array([u, v, 0.0, 0.0, 0.0, 0.0]), a, full, out)
+        assert out[5] == pytest.approx((a[0] - a[1]) * u * v)

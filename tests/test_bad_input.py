@@ -58,8 +58,11 @@ def test_capsize_stops_the_simulation():
 
 
 def test_unknown_modes():
-    with pytest.raises(ValueError, match="unknown hydrostatics mode 'wavy'"):
+    with pytest.raises(ValueError, match="unknown hydrostatics 'wavy'"):
         load("wille_yacht", hydrostatics="wavy")
+    for option in ("added_mass_coupling", "vertical_damping", "restoring_axes"):
+        with pytest.raises(ValueError, match=f"unknown {option} 'x'; choose one of"):
+            load("wille_yacht", **{option: "x"})
     with pytest.raises(ValueError, match="unknown sail mode 'wing'"):
         load("wille_yacht", sail_mode="wing")
     physics = load("wille_yacht")

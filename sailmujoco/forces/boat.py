@@ -35,6 +35,11 @@ from .wind import wind_velocity
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT = range(len(TERMS))
 HYDROSTATIC_MODES = ("off", "paper", "geometric")
+# Each modelling choice of issue 15 keeps the form it replaced, so its effect can be measured
+# (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
+ADDED_MASS_COUPLINGS = ("manoeuvring", "kirchhoff")  # heave/pitch forward-speed terms out / in
+VERTICAL_DAMPING_FORMS = ("world", "body")  # heave/pitch damping on vertical motion / body w, q
+RESTORING_AXES = ("horizontal", "body")  # paper restoring moments about level axes / body axes
 
 # ---- layout of the packed parameter array P -------------------------------------------
 (P_RHO_W, P_RHO_A, P_NU_W, P_G, P_MASS, P_CG_X, P_CG_Z,
@@ -47,7 +52,8 @@ HYDROSTATIC_MODES = ("off", "paper", "geometric")
  P_SAIL_AREA, P_MAST_X, P_BOOM_Z, P_CE_AFT, P_CE_HEIGHT, P_SUCTION, P_STALL, P_CF_SAIL,
  P_ON_SAIL, P_ON_KEEL, P_ON_RUDDER, P_HYDRO_MODE, P_ON_DAMPING, P_ON_ADDED, P_TANGENTIAL,
  P_WIND_SPEED, P_WIND_FROM, P_CURRENT_E, P_CURRENT_N, P_WANDER_DT,
- P_SIZE) = range(62)
+ P_FLOTATION_X, P_FULL_KIRCHHOFF, P_BODY_DAMPING, P_BODY_RESTORING,
+ P_SIZE) = range(66)
 
 # ---- diagnostics (``diag`` output) ------------------------------------------------------
 (D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
@@ -61,11 +67,16 @@ WORK_SIZE = 64  # scratch floats handed to boat_forces
 def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
                     keel: bool = True, rudder: bool = True, damping: bool = True,
                     added_mass: bool = True, sail_tangential: bool = True, wind=None,
-                    wander_dt: float = 0.1) -> np.ndarray:
+                    wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
+                    vertical_damping: str = "world", restoring_axes: str = "horizontal",
+                    ) -> np.ndarray:
     """Flatten boat parameters and switches into the array the kernel reads."""
-    if hydrostatics not in HYDROSTATIC_MODES:
-        raise ValueError(f"unknown hydrostatics mode {hydrostatics!r}; "
-                         f"choose one of {HYDROSTATIC_MODES}")
+    for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
+                                 ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
+                                 ("vertical_damping", vertical_damping, VERTICAL_DAMPING_FORMS),
+                                 ("restoring_axes", restoring_axes, RESTORING_AXES)):
+        if value not in choices:
+            raise ValueError(f"unknown {name} {value!r}; choose one of {choices}")
     h = p.hull
     volume = p.displaced_volume
     P = np.zeros(P_SIZE)
@@ -96,6 +107,10 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
         P[P_WIND_SPEED], P[P_WIND_FROM] = wind.speed, wind.direction_from
         P[P_CURRENT_E], P[P_CURRENT_N] = wind.current_east, wind.current_north
     P[P_WANDER_DT] = wander_dt
+    P[P_FLOTATION_X] = hull_geometry.centre_of_flotation_x(h)
+    P[P_FULL_KIRCHHOFF] = float(added_mass_coupling == "kirchhoff")
+    P[P_BODY_DAMPING] = float(vertical_damping == "body")
+    P[P_BODY_RESTORING] = float(restoring_axes == "body")
     return P
 
 
@@ -258,14 +273,15 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         terms[T_HYDRO, :] = wrench
     elif mode == 1.0:
         paper_restoring(qpos[2], R, P[P_MASS] * P[P_G], P[P_RIGHTING_K], P[P_RIGHTING_SIN] > 0.0,
-                        P[P_K_HEAVE], P[P_K_PITCH], P[P_CG_X], P[P_CG_Z], wrench)
+                        P[P_K_HEAVE], P[P_K_PITCH], P[P_CG_X], P[P_CG_Z], P[P_BODY_RESTORING] > 0.0,
+                        wrench)
         terms[T_HYDRO, :] = wrench
 
     # ---- hull damping, eqs. 12-19 ----
     if P[P_ON_DAMPING] > 0.0:
-        hull_damping(nu_r, P[P_RHO_W], P[P_D11:P_D66 + 1], P[P_WETTED], P[P_FORM_K], P[P_LENGTH],
+        hull_damping(R, nu_r, P[P_RHO_W], P[P_D11:P_D66 + 1], P[P_WETTED], P[P_FORM_K], P[P_LENGTH],
                      P[P_NU_W], P[P_CROSSFLOW_CD], strips[0], strips[1], strips[2], P[P_BF0],
-                     P[P_BL], P[P_OMEGA_ROLL], wrench)
+                     P[P_BL], P[P_OMEGA_ROLL], P[P_FLOTATION_X], P[P_BODY_DAMPING] > 0.0, wrench)
         terms[T_DAMP, :] = wrench
 
     # ---- added mass: velocity terms here, inertia via madd in the mass matrix ----
@@ -273,7 +289,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         for j in range(3):
             madd[i, j] = 0.0
     if P[P_ON_ADDED] > 0.0:
-        added_mass_velocity_terms(nu_r, P[P_A1:P_A6 + 1], wrench)
+        added_mass_velocity_terms(nu_r, P[P_A1:P_A6 + 1], P[P_FULL_KIRCHHOFF] > 0.0, wrench)
         terms[T_ADDED, :] = wrench
         for i in range(3):
             for j in range(3):

@@ -1,7 +1,21 @@
-"""Hull damping, Wille (2016a) eqs. 12-19, written in the FLU body frame.
+"""Hull damping, Wille (2016a) eqs. 12-19, written in the FLU body frame, plus heave and pitch.
 
 D(nu_r) stands on the left of eq. 3, so the force on the hull is -D(nu_r). Every term is odd
 in the velocity it damps, so the FRD formulas hold unchanged in FLU.
+
+Heave and pitch damping (d33, d55) are ours: the papers hold heave and pitch. They stand for
+wave-radiation damping, which is a reaction to the hull's *vertical* motion. So they act on the
+motion that exists, not on body-frame w and q: a heeled and trimmed boat sailing straight has
+body w = U sin(trim) ... and body q = r sin(heel) in a turn while nothing moves vertically, and
+damping on those (the form used up to 0bcfa2b) pushed the boats 2-3 % deep in steady sailing.
+Here (``vertical_damping``):
+
+    F = -d33 dz_F/dt e_z      at the centre of flotation F (world vertical, through F)
+    M = -d55 dtheta/dt (-y1)  about y1 = e_z x (horizontal heading direction)
+
+with z_F the world height of the upright waterplane's centroid and theta the pitch angle
+(bow up). Both rates are exactly zero in steady sailing, straight or turning, at any heel and
+trim; the power is -d33 zF_dot^2 - d55 theta_dot^2 <= 0.
 """
 
 from __future__ import annotations
@@ -59,18 +73,62 @@ def roll_damping(p, u_r, roll_friction, roll_lift, roll_frequency, length):
 
 
 @kernel
-def hull_damping(nu_r, rho, linear, wetted_surface, form_factor, length, nu, crossflow_cd,
-                 strip_x, strip_w, strip_draft, roll_friction, roll_lift, roll_frequency, out):
+def vertical_damping(rot, nu, flotation_x, d33, d55, out):
+    """Heave and pitch damping on the vertical motion (module docstring); adds to ``out`` (6,).
+
+    ``rot`` body->world, ``nu`` = (u, v, w, p, q, r) of the hull (body frame; the current is
+    horizontal, so relative and absolute vertical motion agree), ``flotation_x`` the centre of
+    flotation forward of CO (it lies on the waterline, z = 0). Body-frame wrench about CO.
+    """
+    u, v, w, q, r = nu[0], nu[1], nu[2], nu[4], nu[5]
+    r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
+    # velocity of F = (x_F, 0, 0) in the body frame: v + omega x r_F = (u, v + r x_F, w - q x_F)
+    zf_dot = r20 * u + r21 * (v + r * flotation_x) + r22 * (w - q * flotation_x)
+    fz = -d33 * zf_dot  # world vertical, at F
+    out[0] += fz * r20
+    out[1] += fz * r21
+    out[2] += fz * r22
+    # moment of that force about CO: r_F x F_body = (0, -x_F F_bz, x_F F_by)
+    out[4] += -flotation_x * fz * r22
+    out[5] += flotation_x * fz * r21
+    # pitch angle theta = asin(R20) (bow up): dR20/dt = R21 r - R22 q
+    cos_theta = math.sqrt(r21 * r21 + r22 * r22)
+    if cos_theta < 1e-9:
+        return
+    theta_dot = (r21 * r - r22 * q) / cos_theta
+    # y1 = e_z x (R00, R10, 0)/|.| (world, horizontal, to port); its body components R^T y1
+    hx, hy = rot[0, 0], rot[1, 0]
+    hn = math.sqrt(hx * hx + hy * hy)
+    if hn < 1e-12:  # bow straight up or down: cos_theta would have caught it
+        return
+    y1x, y1y = -hy / hn, hx / hn
+    m = d55 * theta_dot  # moment along +y1 (pushes the bow down when theta_dot > 0)
+    out[3] += m * (rot[0, 0] * y1x + rot[1, 0] * y1y)
+    out[4] += m * (rot[0, 1] * y1x + rot[1, 1] * y1y)
+    out[5] += m * (rot[0, 2] * y1x + rot[1, 2] * y1y)
+
+
+@kernel
+def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu, crossflow_cd,
+                 strip_x, strip_w, strip_draft, roll_friction, roll_lift, roll_frequency,
+                 flotation_x, body_frame_vertical, out):
     """Total hull damping wrench (body frame, about CO) into ``out`` (6,).
 
     ``nu_r`` = (u, v, w, p, q, r) relative to the water. ``linear`` = (d11, d22, d33, d55, d66):
-    eq. 13 gives d11, d22, d66; heave and pitch (d33, d55) are ours (the papers hold them).
+    eq. 13 gives d11, d22, d66; heave and pitch (d33, d55) are ours (the papers hold them),
+    acting on the vertical motion (:func:`vertical_damping`), or, with
+    ``body_frame_vertical``, on body w and q as up to 0bcfa2b (kept to measure the difference).
     """
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
     fy_cf, mz_cf = crossflow_drag(v, r, rho, crossflow_cd, strip_x, strip_w, strip_draft)
     out[0] = -linear[0] * u + surge_resistance(u, rho, wetted_surface, form_factor, length, nu)
     out[1] = -linear[1] * v + fy_cf
-    out[2] = -linear[2] * w
+    out[2] = 0.0
     out[3] = roll_damping(p, u, roll_friction, roll_lift, roll_frequency, length)
-    out[4] = -linear[3] * q
+    out[4] = 0.0
     out[5] = -linear[4] * r + mz_cf
+    if body_frame_vertical:
+        out[2] = -linear[2] * w
+        out[4] = -linear[3] * q
+    else:
+        vertical_damping(rot, nu_r, flotation_x, linear[2], linear[3], out)

@@ -91,16 +91,23 @@ def paper_righting_moment(heel, righting_stiffness, righting_sin_only):
 
 @kernel
 def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k_heave,
-                    k_pitch, cg_x, cg_z, out):
+                    k_pitch, cg_x, cg_z, body_axes, out):
     """Paper-mode restoring wrench (body frame, about CO) into ``out``.
 
-    ``righting_stiffness`` = rho g V GM_t (= m g l_phi). Roll moment about body x:
-    -K sin(phi) cos(phi), Wille eq. 20, or -K sin(phi), Saoud eq. 4 (``righting_sin_only``).
-    Heave: world-vertical force weight - k_heave (z_G - z_G0) through the CG, where z_G is the
-    CG's world height: the reduced models hold the CG's height (Saoud writes his equations at
-    G), so a spring on CO's height would couple roll into heave when the CG lies below CO.
-    Pitch: k_pitch sin(theta) about body y (theta > 0 bow up; a positive body-y moment pushes
-    the bow down).
+    ``righting_stiffness`` = rho g V GM_t (= m g l_phi). Roll moment -K sin(phi) cos(phi),
+    Wille eq. 20, or -K sin(phi), Saoud eq. 4 (``righting_sin_only``). Pitch: k_pitch sin(theta)
+    (theta > 0 bow up; the moment pushes the bow down). Heave: world-vertical force
+    weight - k_heave (z_G - z_G0) through the CG, where z_G is the CG's world height: the reduced
+    models hold the CG's height (Saoud writes his equations at G), so a spring on CO's height
+    would couple roll into heave when the CG lies below CO.
+
+    Restoring is a couple of vertical forces (buoyancy and weight), so its moment is horizontal
+    at any attitude: the roll moment acts about x1, the horizontal heading direction, and the
+    pitch moment about y1 = e_z x x1. In the papers' 4-DOF models the body x axis *is*
+    horizontal, so this is their eq. 20 / eq. 4. ``body_axes`` puts them about body x and y
+    instead, as up to 0bcfa2b: heeled and trimmed, that form has a world-vertical (yaw) part,
+    +725 N m on the yacht at heel -5 deg, pitch -1 deg, 44 % of the rudder's yaw moment under
+    sail; it is kept only to measure that difference.
     """
     heel = math.atan2(rot[2, 1], rot[2, 2])
     pitch = math.asin(max(-1.0, min(1.0, rot[2, 0])))
@@ -113,9 +120,23 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
     my = cg_z * fx - cg_x * fz_b
     mz = cg_x * fy
     roll = paper_righting_moment(heel, righting_stiffness, righting_sin_only)
+    pitch_moment = k_pitch * math.sin(pitch)
     out[0] = fx
     out[1] = fy
     out[2] = fz_b
-    out[3] = mx + roll
-    out[4] = my + k_pitch * math.sin(pitch)
-    out[5] = mz
+    if body_axes:
+        out[3] = mx + roll
+        out[4] = my + pitch_moment
+        out[5] = mz
+        return
+    # x1 = (R00, R10, 0) / |.|, y1 = (-R10, R00, 0) / |.| in the world; body = R^T (world)
+    hx, hy = rot[0, 0], rot[1, 0]
+    hn = math.sqrt(hx * hx + hy * hy)
+    if hn < 1e-12:  # bow straight up or down: no heading; any horizontal axis will do
+        hx, hy, hn = 1.0, 0.0, 1.0
+    x1x, x1y = hx / hn, hy / hn
+    mwx = roll * x1x - pitch_moment * x1y
+    mwy = roll * x1y + pitch_moment * x1x
+    out[3] = mx + rot[0, 0] * mwx + rot[1, 0] * mwy
+    out[4] = my + rot[0, 1] * mwx + rot[1, 1] * mwy
+    out[5] = mz + rot[0, 2] * mwx + rot[1, 2] * mwy

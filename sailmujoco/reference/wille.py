@@ -243,7 +243,7 @@ class Wille4DOF:
                 -d66 * r + mz)
         if sw.added_mass:  # -C_A(nu_r) nu_r, eqs. 10-11
             kirch = np.zeros(6)
-            kirchhoff_terms(np.array([u_r, v_r, 0.0, pr, 0.0, r]), self._a, kirch)
+            kirchhoff_terms(np.array([u_r, v_r, 0.0, pr, 0.0, r]), self._a, False, kirch)
             out["added_mass"][:4] = (kirch[0], kirch[1], kirch[3], kirch[5])
         out["coriolis"][:4] = (p.mass * r * v, -p.mass * r * u, 0.0, 0.0)  # -C_RB nu (eq. 9, above)
         out["external"][:4] = self.external
