@@ -198,7 +198,12 @@ def wille_yacht() -> BoatParams:
             -hull_geometry.heave_added_mass(hull, rho),  # Z_wdot, strip theory (hull.py)
             -1.0e3,  # K_pdot, Appendix A
             -hull_geometry.pitch_added_inertia(hull, rho),  # M_qdot, strip theory (hull.py)
-            -2.4e3,  # N_rdot, Appendix A. Y_rdot = -350 is off-diagonal: dropped (§2.1 does too)
+            -2.4e3,  # N_rdot, Appendix A. Y_rdot = -350 (Appendix A) is left out, as Wille's
+            # eq. 11 leaves it out, so both worlds share the horizontal-plane hydrodynamics and
+            # their difference is the degrees of freedom. What it would change (measured at
+            # 7 m/s on this boat): its C_A yaw term -Y_rdot u r = 2 450 N m s is 4.0 % of the yaw
+            # damping of keel, rudder and hull (60 700 N m s); its inertia coupling
+            # Y_rdot^2 / ((m - Y_vdot)(I_zz - N_rdot)) = 0.4 % of the sway and yaw accelerations.
         ),
         gm_t=gm_t,
         wetted_surface=9.8,  # m^2, S_H, Appendix A
