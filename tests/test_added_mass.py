@@ -7,6 +7,7 @@ import numpy as np
 import pytest
 from conftest import only_hull
 
+from sailmujoco import frames
 from sailmujoco.forces.added_mass import added_mass_velocity_terms, kirchhoff_terms
 
 
@@ -128,8 +129,7 @@ def _four_dof_kinetic_energy(physics):
     rigid = np.zeros((m.nv, m.nv))
     mujoco.mj_fullM(m, d, rigid)
     yaw, heel = d.qpos[2], d.qpos[3]
-    rot = np.array([[math.cos(yaw), -math.sin(yaw), 0], [math.sin(yaw), math.cos(yaw), 0], [0, 0, 1]])
-    rot = rot @ np.array([[1, 0, 0], [0, math.cos(heel), -math.sin(heel)], [0, math.sin(heel), math.cos(heel)]])
+    rot = frames.matrix_from_euler(heel, 0.0, yaw)
     jac = np.zeros((6, m.nv))
     jac[0:3, 0:2] = rot.T[:, 0:2]
     jac[3:6, 2] = rot.T[:, 2]
@@ -145,7 +145,7 @@ def test_four_dof_added_mass_conserves_kinetic_energy():
     0bcfa2b's 4-DOF mode, the energy changes by 5.4 % in these 5 s; with it 0.17 %)."""
     physics = only_hull("wille_yacht", dofs=4)
     physics.model.opt.gravity[:] = 0.0
-    m, d = physics.model.ptr, physics.data.ptr
+    d = physics.data.ptr
     d.qpos[3] = math.radians(-30.0)  # no restoring: in 5 s it rolls on to about -53 deg
     d.qvel[2], d.qvel[3] = 0.2, 0.05  # yaw rate, roll rate
     physics.forward()
