@@ -187,6 +187,13 @@ class BoatPhysics(engine.Physics):
                 # hull at the current heel (stability.FloatingTable), added in _forces_4dof
                 self._floating = _floating_table(params)
                 self._P[kernels.P_HYDRO_MODE] = kernels.HYDROSTATIC_MODES.index("off")
+            elif forces.hydrostatics == "paper":
+                # the joints hold CO's height, not the CG's: heeled, a CG off the waterline
+                # moves by z_G (cos(phi) - 1) and the heave spring, acting through the CG, would
+                # add a roll moment k_z z_G^2 (1 - cos(phi)) sin(phi) (+26 % of eq. 4 at 10 deg
+                # on the robot with l_phi = 1 m, 3.3x at 30 deg). The reduced models hold the
+                # CG's height: buoyancy = weight through the CG, eq. 20 / eq. 4 alone.
+                self._P[kernels.P_K_HEAVE] = 0.0
         self._kernel = _entry_point(kernels.boat_forces)
         self._bound = None
         self._status = kernels.STATUS_OK

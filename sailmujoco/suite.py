@@ -35,6 +35,8 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
          control_timestep: float = 0.1, time_limit: float | None = None,
          sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
          paper_model: str = "paper", sail_tangential: bool = True,
+         added_mass_coupling: str = "manoeuvring", vertical_damping: str = "world",
+         restoring_axes: str = "horizontal",
          forces: ForceSwitches | None = None, params=None,
          boat_options: dict | None = None, **task_options) -> SailEnvironment:
     """Build an environment.
@@ -55,6 +57,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         Wille 4-DOF variant (see :mod:`sailmujoco.reference.wille`).
     sail_tangential : bool
         Keep the sail's tangential force C_T (False: Saoud's Assumption 4 made true).
+    added_mass_coupling, vertical_damping, restoring_axes : str
+        Hydrodynamic modelling forms (:class:`sailmujoco.physics.ForceSwitches`); the defaults
+        are the models, the alternatives the forms they replaced, kept to measure the effect.
     boat_options : dict, optional
         Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
     params : BoatParams, optional
@@ -79,7 +84,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     except TypeError as err:
         raise ValueError(f"bad option for task {task!r}: {err}") from None
     wind = the_task.wind()
-    switches = forces or ForceSwitches(hydrostatics=hydrostatics, sail_tangential=sail_tangential)
+    switches = forces or ForceSwitches(hydrostatics=hydrostatics, sail_tangential=sail_tangential,
+                                       added_mass_coupling=added_mass_coupling,
+                                       vertical_damping=vertical_damping, restoring_axes=restoring_axes)
     if world == "mujoco":
         physics = BoatPhysics.load(params=params, sail_mode=sail_mode, wind=wind, forces=switches,
                                    dofs=dofs)

@@ -61,7 +61,7 @@ TOP_KEYS = {"name", "boat", "task", "world", "controller", "duration", "seeds", 
             "options", "grid", "zip", "trajectory_rate"}
 NAMESPACES = ("env", "task", "boat", "controller")
 ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_model",
-               "sail_tangential")
+               "sail_tangential", "added_mass_coupling", "vertical_damping", "restoring_axes")
 ENTRY_POINTS = "sailmujoco.controllers"
 
 

@@ -2,14 +2,16 @@
 
 import math
 
+import mujoco
 import numpy as np
 import pytest
-from conftest import BOATS, load, only_hull
+from conftest import BOATS, CALM, load, only_hull
 
 from sailmujoco import frames, hull, stability
 from sailmujoco.constants import GRAVITY
 from sailmujoco.forces.hydrostatics import paper_restoring
 from sailmujoco.params import get_boat
+from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 
 @pytest.mark.parametrize("boat", BOATS)
@@ -192,3 +194,21 @@ def test_four_dof_geometric_boat_floats_at_its_weight(boat, heel_deg):
     righting = -(rot @ (wrench[3:] - np.cross(cg, wrench[:3])))[0]
     assert righting == pytest.approx(stability.righting_moment(p, heel), rel=0.01)
     assert (rot @ wrench[:3])[2] == pytest.approx(p.mass * GRAVITY, rel=1e-9)
+
+
+@pytest.mark.parametrize("heel_deg", [10.0, 20.0, 30.0])
+def test_four_dof_paper_restoring_is_saouds_eq4_with_a_low_cg(heel_deg):
+    """Heave and pitch held, CG 0.84 m below CO (robot, l_phi = 1 m): hydrostatics and gravity
+    together give m g l_phi sin(phi) about the roll joint (Saoud eq. 4), nothing more."""
+    physics = BoatPhysics.load("saoud_robot", wind=CALM, dofs=4, l_phi=1.0,
+                               forces=ForceSwitches(hydrostatics="paper", sail=False, keel=False,
+                                                    rudder=False, damping=False, added_mass=False))
+    p = physics.params
+    heel = math.radians(heel_deg)
+    m, d = physics.model.ptr, physics.data.ptr
+    d.qpos[3] = heel
+    mujoco.mj_forward(m, d)
+    physics._compute_forces()
+    # roll joint: qfrc_applied from our forces plus MuJoCo's gravity (-qfrc_bias at rest)
+    roll = d.qfrc_applied[3] - d.qfrc_bias[3]
+    assert roll == pytest.approx(-p.mass * GRAVITY * 1.0 * math.sin(heel), rel=1e-6)

@@ -51,8 +51,9 @@ leaving them out can be measured.
 MuJoCo's free joint integrates the *world* acceleration a of CO, and R^T a = v_dot + omega x v.
 The step adds R A1 R^T to the translational block of the mass matrix and A2 to the rotational
 one (:mod:`sailmujoco.physics`), which supplies -A1 (v_dot_r + omega x v_r) and -A2 omega_dot
-implicitly (assuming, as Wille does after eq. 6, a current that is constant in the body
-frame). The explicit force computed here adds back A1 (omega x v_r).
+implicitly (with a current constant in the world frame, Wille's dV_c/dt = 0 after eq. 6, the
+implicit part and the explicit one together give exactly -A1 d(v_r)/dt). The explicit force
+computed here adds back A1 (omega x v_r).
 """
 
 from __future__ import annotations

@@ -4,7 +4,8 @@
     Wille (2016a) eq. 20: roll moment -rho g V GM_t sin(phi) cos(phi) (or Saoud eq. 4,
     -m g l_phi sin(phi), for the Saoud robot), plus the linear heave and pitch springs of the
     upright waterplane (k_z = rho g A_wp, k_theta = rho g V GM_L) that hold heave and pitch
-    near their design values. Buoyancy equal to the weight acts vertically through the CG.
+    near their design values. The vertical force, weight - k_z (z_G - z_G0), acts through the
+    CG; the roll and pitch moments act about level axes (a couple of vertical forces).
 ``geometric``
     Buoyancy integrated over the hull's columns against the flat water plane z = 0
     (:func:`sailmujoco.hull.column_quadrature`). Each column is cut exactly along its axis;

@@ -77,7 +77,8 @@ class Wille4DOF:
     wind : WindConfig
         Wind and current (our one wind model).
     switches : object with the fields of :class:`sailmujoco.physics.ForceSwitches`
-        Which force models act (``hydrostatics`` is ignored: eq. 20 always).
+        Which force models act. ``hydrostatics`` is ignored: the restoring is always the paper's
+        (eq. 20, or Saoud's eq. 4 for a boat whose ``paper_righting`` is ``"sin"``).
     model : {"paper", "rigid"}
         Eqs. 3-4 as printed, or the rigid hull with heave and pitch angle held (see above).
     timestep : float
