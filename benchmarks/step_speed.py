@@ -1,12 +1,14 @@
 """Speed of a physics step with all forces, as a ratio to the bare mj_step of the same model.
 
-Run: python benchmarks/step_speed.py [--steps N]
+Run: python benchmarks/step_speed.py [--steps N] [--integrator rk4|implicitfast|implicit|euler]
 
 Both are measured in this run, on the same compiled MjModel: "bare" is mujoco.mj_step on a
-fresh MjData (no force models, no added mass); "sailmujoco" is BoatPhysics.step, which per
-sub-step runs mj_step1, every force model (compiled kernels), the added-mass update and
-refactorisation of the mass matrix, and mj_step2. Calls of step(1) show the per-call
-overhead; step(20) is a 10 Hz control loop at the 5 ms physics step.
+fresh MjData (no force models, no added mass); "sailmujoco" is BoatPhysics.step, which at
+each stage of the integrator runs MuJoCo's forward dynamics with every force model (compiled
+kernels), the added-mass update and refactorisation of the mass matrix. Calls of step(1) show the per-call
+overhead; step(20) is a 10 Hz control loop at the 5 ms physics step. ``--integrator`` sets
+MuJoCo's integrator on that model (both columns): the default RK4 runs the force models at
+each of its four stages, the first-order ones once per step.
 """
 
 from __future__ import annotations
@@ -31,9 +33,17 @@ def best_of(fn, repeats=5):
     return min(times)
 
 
-def measure(boat: str, hydrostatics: str, steps: int) -> dict:
+INTEGRATORS = {"rk4": mujoco.mjtIntegrator.mjINT_RK4,
+               "implicitfast": mujoco.mjtIntegrator.mjINT_IMPLICITFAST,
+               "implicit": mujoco.mjtIntegrator.mjINT_IMPLICIT,
+               "euler": mujoco.mjtIntegrator.mjINT_EULER}
+
+
+def measure(boat: str, hydrostatics: str, steps: int, integrator: str | None = None) -> dict:
     wind = WindConfig(speed=8.0, direction_from=math.radians(45.0), seed=0)
     physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics))
+    if integrator is not None:
+        physics.model.opt.integrator = INTEGRATORS[integrator]
     physics.set_control([0.05, 0.4])
     physics.step(200)  # warm up (and JIT, if not cached)
     model = physics.model.ptr
@@ -63,16 +73,20 @@ def measure(boat: str, hydrostatics: str, steps: int) -> dict:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=20000)
+    parser.add_argument("--integrator", choices=sorted(INTEGRATORS), default=None,
+                        help="MuJoCo integrator (default: the model's, RK4)")
     args = parser.parse_args()
     print(f"{'boat':12s} {'hydrostatics':12s} {'bare mj_step':>13s} {'step(1)':>9s} "
           f"{'ratio':>6s} {'step(20)':>9s} {'ratio':>6s}")
     for boat in ("wille_yacht", "saoud_robot"):
         for hydrostatics in ("paper", "geometric"):
-            r = measure(boat, hydrostatics, args.steps)
+            r = measure(boat, hydrostatics, args.steps, args.integrator)
             print(f"{r['boat']:12s} {r['hydrostatics']:12s} {r['bare_us']:10.2f} us "
                   f"{r['step1_us']:6.2f} us {r['step1_us'] / r['bare_us']:6.2f} "
                   f"{r['step20_us']:6.2f} us {r['step20_us'] / r['bare_us']:6.2f}")
-    print(f"(numpy {np.__version__}, mujoco {mujoco.__version__}; ratio = time / bare mj_step)")
+    name = args.integrator or "model default"
+    print(f"(integrator {name}; numpy {np.__version__}, mujoco {mujoco.__version__}; "
+          f"ratio = time / bare mj_step)")
 
 
 if __name__ == "__main__":

@@ -56,6 +56,9 @@ def test_augmented_mass_matrix_equals_dense_solve(rng):
     """The qacc MuJoCo integrates equals (M_RB + J^T M_A J)^-1 tau on a random state."""
     physics = only_hull("wille_yacht", hydrostatics="geometric", damping=True)
     m, d = physics.model.ptr, physics.data.ptr
+    # one stage, so the qacc left after step(1) is the start state's (RK4 leaves its last
+    # stage's, at another state; each RK4 stage solves the same augmented system)
+    m.opt.integrator = mujoco.mjtIntegrator.mjINT_IMPLICITFAST
     d.qpos[3:7] = [math.cos(0.1), math.sin(0.1), 0.05, 0.2]
     d.qpos[3:7] /= np.linalg.norm(d.qpos[3:7])
     d.qvel[:] = rng.normal(size=m.nv) * 0.3

@@ -133,7 +133,8 @@ def _paper_restoring(heel_deg, pitch_deg, yaw_deg, body_axes=False):
 @pytest.mark.parametrize("yaw_deg", [0.0, 37.0, -120.0])
 def test_paper_restoring_is_a_couple_of_vertical_forces(yaw_deg):
     """Zero world-vertical moment at heel 20 deg, pitch 5 deg (Wille eq. 20 is buoyancy and
-    weight, both vertical); the moment about the level heading axis is eq. 20's."""
+    weight, both vertical); the generalised force on the heel angle (the moment about the
+    CG's body x axis, the axis heel turns about) is eq. 20's, and on the pitch angle k sin."""
     rot, moment_world, k, force_world = _paper_restoring(20.0, 5.0, yaw_deg)
     heading = np.array([rot[0, 0], rot[1, 0], 0.0]) / np.hypot(rot[0, 0], rot[1, 0])
     roll = moment_world @ heading
@@ -142,8 +143,11 @@ def test_paper_restoring_is_a_couple_of_vertical_forces(yaw_deg):
     cg_world = rot @ np.array([0.3, 0.0, -0.2])
     assert force_world[:2] == pytest.approx([0.0, 0.0], abs=1e-9)
     about_cg = moment_world - np.cross(cg_world, force_world)
-    heel = math.radians(20.0)
-    assert about_cg @ heading == pytest.approx(-k * math.sin(heel) * math.cos(heel), rel=1e-12)
+    heel, pitch = math.radians(20.0), math.radians(5.0)
+    assert about_cg @ rot[:, 0] == pytest.approx(-k * math.sin(heel) * math.cos(heel), rel=1e-12)
+    # pitch: about -y1 (the axis pitch turns about, bow up), -k_theta sin(theta)
+    y1 = np.cross([0.0, 0.0, 1.0], heading)
+    assert about_cg @ -y1 == pytest.approx(-5.0e5 * math.sin(pitch), rel=1e-12)
     # the body-axes form (up to 0bcfa2b) has a yaw part: the switch keeps it measurable
     _, old, _, _ = _paper_restoring(20.0, 5.0, yaw_deg, body_axes=True)
     assert abs(old[2]) > 0.01 * abs(roll)

@@ -104,8 +104,12 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
 
     Restoring is a couple of vertical forces (buoyancy and weight), so its moment is horizontal
     at any attitude: the roll moment acts about x1, the horizontal heading direction, and the
-    pitch moment about y1 = e_z x x1. In the papers' 4-DOF models the body x axis *is*
-    horizontal, so this is their eq. 20 / eq. 4. ``body_axes`` puts them about body x and y
+    pitch moment about y1 = e_z x x1. The roll moment about x1 is eq. 20 / cos(theta): body x
+    makes the angle theta with x1, so the generalised force on the heel angle is eq. 20 exactly,
+    and the restoring is the gradient of the potential 1/2 K sin^2(phi) (or K (1 - cos(phi)))
+    + k_theta (1 - cos(theta)) + 1/2 k_z (z_G - z_G0)^2 - W z_G: an undamped boat keeps its
+    energy (tests/test_energy.py). In the papers' 4-DOF models the body x axis *is* horizontal
+    (theta = 0), so this is their eq. 20 / eq. 4. ``body_axes`` puts them about body x and y
     instead, as up to 0bcfa2b: heeled and trimmed, that form has a world-vertical (yaw) part,
     +725 N m on the yacht at heel -5 deg, pitch -1 deg, 44 % of the rudder's yaw moment under
     sail; it is kept only to measure that difference.
@@ -136,6 +140,7 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
     if hn < 1e-12:  # bow straight up or down: no heading; any horizontal axis will do
         hx, hy, hn = 1.0, 0.0, 1.0
     x1x, x1y = hx / hn, hy / hn
+    roll /= hn  # hn = cos(theta): the generalised force on the heel is eq. 20 (docstring)
     mwx = roll * x1x - pitch_moment * x1y
     mwy = roll * x1y + pitch_moment * x1x
     out[3] = mx + rot[0, 0] * mwx + rot[1, 0] * mwy
