@@ -471,13 +471,22 @@ def findings(table: pd.DataFrame, l_phis, smoke: bool) -> str:
         eq4 = g["S_eq4"]
         off_b = int((np.degrees(g["psi_Bm"]) > HELD_DEG).sum())
         held4 = int((np.degrees(g["psi_S_eq4"]) <= HELD_DEG).sum())
+        fixed_rms = np.degrees(g["psi_rms_vel_max"]).max()
+        fixed = (f"while the best fixed sail holds it (rms heading error at most {fixed_rms:.0f}°)"
+                 if fixed_rms <= HELD_DEG else
+                 f"and the best fixed sail too at some angles (rms heading error up to {fixed_rms:.0f}°)")
+        if held4 >= len(g) - 1:  # Saoud's righting moment alone puts the robot back on heading
+            cause = ("Cause, checked by switching: the geometric hull's righting moment, which falls "
+                     "below Saoud's m g l_φ sin φ beyond 15° of heel, with the heeled sail's weather "
+                     "helm (Fig. 6 report).")
+        else:
+            cause = ("Cause, checked by switching: the heeled sail's weather helm, the yaw moment the "
+                     "4-DOF equations drop (Fig. 6 report); Saoud's righting moment in place of the "
+                     f"geometric hull's puts S back on heading at only {held4} of {len(g)} angles.")
         lines += [(
             f"*6-DOF, l_φ = 0.1 m.* With the geometric hull S goes off heading 0 at {off} of {len(g)} "
-            f"sailable angles and Bm at {off_b} (they round up), while the best fixed sail holds it "
-            f"(rms heading error at most {np.degrees(g['psi_rms_vel_max']).max():.0f}°): the 6-DOF "
-            "miss. Cause, checked by switching: the geometric hull's righting moment, which falls below "
-            "Saoud's m g l_φ sin φ beyond 15° of heel, with the heeled sail's weather helm (Fig. 6 "
-            f"report). With eq. 4 in the 6-DOF world S holds heading at {held4} of {len(g)} angles and "
+            f"sailable angles and Bm at {off_b} (they round up), {fixed}: the 6-DOF miss. {cause} "
+            f"With eq. 4 in the 6-DOF world S holds heading at {held4} of {len(g)} angles and "
             f"makes {eq4.min():.2f}-{eq4.max():.2f} m/s, at least as fast as Bm (to 1 %) at "
             f"{int((g['S_eq4'] >= (1 - TIE) * g['Bm_eq4']).sum())} of {len(g)} angles."), ""]
     for l_phi in l_phis:

@@ -388,7 +388,8 @@ def _causes(results) -> str:
    {100 * red_x:.0f} % (paper 93 %).
 4. **6-DOF world.** The heading loop limit-cycles also at 50 Hz (rudder rms
    {hm['rudder_rms_deg']:.0f}°; {hm10['rudder_rms_deg']:.0f}° at 10 Hz) and the boat makes
-   {hm['mean_surge']:.2f} m/s. In exploratory runs (not repeated here) it also limit-cycled at
+   {hm['mean_surge']:.2f} m/s. In exploratory runs on the 6-DOF model of 0bcfa2b (before the hydrodynamics
+   of issue 15; not repeated here) it also limit-cycled at
    100 Hz, with heave and pitch held (dofs = 4), with the paper's hydrostatics, and with
    K_d = 3e5, while the paper world with the rigid-hull yaw kinematics (``paper_model="rigid"``)
    at 50 Hz was quiet (rudder rms < 1°). Among what is left, the likeliest is the MuJoCo rudder, a
