@@ -597,7 +597,7 @@ def _cause(r: Results, world, sim, key) -> str:
     if sim == "sim2_mean":
         return (f"the mean wind direction: with the measured direction (sim 2) {r.mean(world, 'sim2')[key]:.2f}; "
                 f"the gust realisation (seed 0: {s0[key]:.2f}, seed 1: {r.get('main', world, sim, 1)[key]:.2f})")
-    return (f"the boat heels too little past 10° for the law to act in lulls (seed 0: sim-1 heel "
+    return (f"the gust realisation: how far past 10° sim 1 heels sets what the law can take away (seed 0: sim-1 heel "
             f"{r.get('main', world, 'sim1', 0)['mean_heel']:.1f}°, {s0[key]:.2f}; seed 1: "
             f"{r.get('main', world, 'sim1', 1)['mean_heel']:.1f}°, {r.get('main', world, sim, 1)[key]:.2f}); "
             f"sail x{SAIL_FACTOR:g}, seed 0: {sail0[key]:.2f}")
@@ -770,22 +770,61 @@ def _causes(r: Results, tables: dict) -> str:
 7. **6-DOF world.** Seed means {mm['sim1']['roll_amplitude']:.2f} / {mm['sim2']['roll_amplitude']:.2f} /
    {mm['sim3']['roll_amplitude']:.2f}°, surge {mm['sim1']['mean_surge']:.2f} / {mm['sim2']['mean_surge']:.2f} /
    {mm['sim3']['mean_surge']:.2f} m/s, sim-1 heel {mm['sim1']['mean_heel']:.1f}° (paper world
-   {m['sim1']['mean_heel']:.1f}°): the 6-DOF boat is slower and heels less, so cause 1 weighs more.
+   {m['sim1']['mean_heel']:.1f}°): {_six_dof_vs_paper(mm['sim1'], m['sim1'])}.
    Switch, heave and pitch held (``dofs=4``): seed 0 surge {d0['sim1']['mean_surge']:.2f} m/s
    (6-DOF {g('main', 'mujoco', 'sim1', 0)['mean_surge']:.2f}, paper world {p0['sim1']['mean_surge']:.2f}), heel
-   {d0['sim1']['mean_heel']:.1f}°; seed 1: {d1['sim1']['roll_amplitude']:.2f} / {d1['sim2']['roll_amplitude']:.2f} /
+   {d0['sim1']['mean_heel']:.1f}° (6-DOF {g('main', 'mujoco', 'sim1', 0)['mean_heel']:.1f}°); seed 1:
+   {d1['sim1']['roll_amplitude']:.2f} / {d1['sim2']['roll_amplitude']:.2f} /
    {d1['sim3']['roll_amplitude']:.2f}°, {d1['sim1']['mean_surge']:.2f} / {d1['sim2']['mean_surge']:.2f} /
-   {d1['sim3']['mean_surge']:.2f} m/s: the free heave and pitch cost the speed and the heel (how, we did
-   not isolate; the mean rudder angle, δ_r in the table, shows the 6-DOF boat's larger weather helm).
-   With the sail x{SAIL_FACTOR:g} and the roll control off, the 6-DOF boat **broaches**: in a gust at
-   25-35° of heel the weather helm exceeds the rudder (δ_r at its 35° stop), the boat rounds up to
-   ψ_min = {xm0['sim1']['heading_min']:.0f}° / {xm1['sim1']['heading_min']:.0f}° (seeds 0 / 1; the wind comes
-   from -90°) and stalls ({xm0['sim1']['mean_surge']:.2f} / {xm1['sim1']['mean_surge']:.2f} m/s). With heave
-   and pitch held it does not at 10 m/s ({dx0['sim1']['mean_surge']:.2f} m/s, ψ_min
-   {dx0['sim1']['heading_min']:.1f}°){broach_text}. The roll law, holding 10°, prevents it
-   ({xm0['sim3']['mean_surge']:.2f} / {xm1['sim3']['mean_surge']:.2f} m/s in sim 3). The paper's 4-DOF
-   model (eqs. 3-4) has no heel-induced yaw moment of this size and cannot broach.
+   {d1['sim3']['mean_surge']:.2f} m/s (6-DOF {g('main', 'mujoco', 'sim1', 1)['mean_surge']:.2f} /
+   {g('main', 'mujoco', 'sim2', 1)['mean_surge']:.2f} / {g('main', 'mujoco', 'sim3', 1)['mean_surge']:.2f} m/s):
+   {_heave_pitch_effect([d0['sim1'], d1['sim1']], [g('main', 'mujoco', 'sim1', k) for k in (0, 1)])}.
+   {_broach_sentence(xm0['sim1'], xm1['sim1'], dx0['sim1'], xm0['sim3'], xm1['sim3'], broach_text)}
 """
+
+
+def _six_dof_vs_paper(six: dict, paper: dict) -> str:
+    """How the 6-DOF boat's sim 1 differs from the paper world's, and what that does to cause 1."""
+    speed = "slower" if six["mean_surge"] < paper["mean_surge"] else "faster"
+    if six["mean_heel"] > paper["mean_heel"]:
+        return (f"the 6-DOF boat is {speed} and heels more, so the law is on more of the window and "
+                "cause 1 weighs less (larger reductions)")
+    return f"the 6-DOF boat is {speed} and heels less, so cause 1 weighs more"
+
+
+def _heave_pitch_effect(held: list[dict], free: list[dict]) -> str:
+    """What holding heave and pitch changes in sim 1 (per seed: speed and heel)."""
+    dspeed = max(abs(h["mean_surge"] / f["mean_surge"] - 1.0) for h, f in zip(held, free, strict=True))
+    dheel = max(abs(h["mean_heel"] - f["mean_heel"]) for h, f in zip(held, free, strict=True))
+    if dspeed < 0.02 and dheel < 1.0:
+        return (f"holding heave and pitch changes sim 1's speed by at most {100 * dspeed:.1f} % and its "
+                f"heel by at most {dheel:.1f}°: on this reach the free heave and pitch cost nothing "
+                "measurable")
+    return (f"holding heave and pitch changes sim 1's speed by up to {100 * dspeed:.1f} % and its heel "
+            f"by up to {dheel:.1f}°")
+
+
+def _broach_sentence(x0: dict, x1: dict, held0: dict, law0: dict, law1: dict, broach_text: str) -> str:
+    """Sim 1 with the sail x1.5, roll control off: did the 6-DOF boat broach (stall)?"""
+    if min(x0["mean_surge"], x1["mean_surge"]) < STALLED:
+        held = ("With heave and pitch held it does not at 10 m/s" if held0["mean_surge"] >= STALLED
+                else "With heave and pitch held it does too at 10 m/s")
+        return (f"With the sail x{SAIL_FACTOR:g} and the roll control off, the 6-DOF boat **broaches**: "
+                "the weather helm exceeds the rudder, the boat rounds up to ψ_min = "
+                f"{x0['heading_min']:.0f}° / {x1['heading_min']:.0f}° (seeds 0 / 1; the wind comes from "
+                f"-90°) and stalls ({x0['mean_surge']:.2f} / {x1['mean_surge']:.2f} m/s). {held} "
+                f"({held0['mean_surge']:.2f} m/s, ψ_min {held0['heading_min']:.1f}°){broach_text}. The "
+                f"roll law, holding 10°, prevents it ({law0['mean_surge']:.2f} / {law1['mean_surge']:.2f} "
+                "m/s in sim 3). The paper's 4-DOF model (eqs. 3-4) has no heel-induced yaw moment of "
+                "this size and cannot broach.")
+    text = (f"With the sail x{SAIL_FACTOR:g} and the roll control off the 6-DOF boat heels "
+            f"{x0['mean_heel']:.0f}° / {x1['mean_heel']:.0f}° (seeds 0 / 1) and holds its heading "
+            f"(ψ_min {x0['heading_min']:.1f}° / {x1['heading_min']:.1f}°, {x0['mean_surge']:.2f} / "
+            f"{x1['mean_surge']:.2f} m/s): it does not broach at 10 m/s")
+    if broach_text:
+        text += (f"{broach_text} it does (mean surge below {STALLED:g} m/s: rounded up and stopped; "
+                 "the paper's 4-DOF model, eqs. 3-4, has no heel-induced yaw moment of this size)")
+    return text + "."
 
 
 def _share_rows(share, raw, smoke) -> list[dict]:
@@ -851,10 +890,14 @@ def _fig8_text(tables, switch8) -> str:
             parts.append(f"{FIG8_LABELS[variant]}, U10 = {wind:g} m/s: u = "
                          + ", ".join(f"{u:.2f}" for u in rows["mean_surge"]) + " m/s at φ_d = "
                          + ", ".join(f"{h:g}" for h in rows["heel_desired_deg"]) + "°.")
+    stalled = [FIG8_LABELS[v] for v, t in tables.items()
+               if ((t["status"] == "ok") & (t["mean_surge"] < STALLED)).any()]
     text = ("The curve rises while φ_d limits the heel; once φ_d exceeds the heel the boat reaches "
             "with λ100 the law is never on and the curve is flat. The paper's optimum is a maximum "
-            "inside that range: heeling further turns β_ws towards head-on (eqs. 26-27). "
-            + " ".join(parts))
+            "inside that range: heeling further turns β_ws towards head-on (eqs. 26-27)"
+            + (f"; {', '.join(stalled)}: speeds below {STALLED:g} m/s are broaches (rounded up and "
+               "stopped, Table 1 cause 7), not points of that curve" if stalled else "")
+            + ". " + " ".join(parts))
     if switch8 is not None and len(switch8):
         text += (f" With the sail force x{SAIL_FACTOR:g} (paper world) the boat heels further and the "
                  "maximum moves to " + " and ".join(f"{optimum(switch8, w):.0f}° at {w:g} m/s"
