@@ -359,7 +359,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "threshold": "< 10 %",
                  "verdict": "holds" if all(v["paper_formula_error"] < 0.1 for v in restoring.values())
                  else "breaks for one boat",
-                 "effect": "heel in 6-DOF geometric vs paper hydrostatics (wille_roll_table1 study)"})
+                 "effect": "heel and heading in 6-DOF, geometric vs Saoud eq. 4 (saoud_fig6 and saoud_fig7 checks)"})
     headline.update({f"{b}_restoring_error": v["paper_formula_error"] for b, v in restoring.items()})
     # 8. Saoud steady state (where the robot sails: a stalled boat has no steady apparent wind)
     sailing = steady[steady["speed"] > 0.3]

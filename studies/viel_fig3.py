@@ -592,6 +592,24 @@ def _boat_cause(r, variants: pd.DataFrame, capability: pd.DataFrame) -> str:
     return "enters but cannot stay" + under_note
 
 
+def _ten_metres_a_second(capability) -> str:
+    """What the PID heading-hold check shows of each 6-DOF boat on the 45°-off-the-wind tack in 10 m/s."""
+    rows = capability[capability["wind_speed"] == 10.0] if not capability.empty else capability
+    if rows.empty:
+        return "the boats were not checked"
+    parts, overpowered = [], True
+    for _, c in rows.iterrows():
+        stop = c["rudder_saturated"] > 0.5
+        slide = abs(c["sway_mean"]) > 0.5 * abs(c["surge_mean"])
+        overpowered &= bool(stop or slide)
+        parts.append(f"{c['world']} {c['steady_speed']:.2f} m/s, {abs(c['sway_mean']):.2f} m/s of it "
+                     f"sideways, rudder {'on its stop' if stop else f'{c.rudder_mean_deg:.0f}° on average'}, "
+                     f"heading error rms {c['heading_error_rms_deg']:.0f}°")
+    verdict = ("both boats are overpowered 45° off the wind, the tack Viel's step 3 asks for"
+               if overpowered else "not both boats are overpowered 45° off the wind")
+    return f"{verdict} (a PID heading rudder: {'; '.join(parts)})"
+
+
 def _write_report(out, main, variants, grid, capability, figures, timings, wall, smoke, workers, headline,
                   duration):
     report = Report(TITLE + (" (smoke)" if smoke else ""))
@@ -731,10 +749,9 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
 
     scale = get_boat("wille_yacht").hull.length / VIEL_LENGTH
     report.paragraph(
-        "Reading: (1) in 10 m/s (cases 1, 3-6) both boats are overpowered: even the PID cannot hold 45° "
-        "off the wind (rudder on its 35° stop, the robot sliding sideways), while Viel's boat has a rudder "
-        "lift p5 = 1500 kg/s and no sail side force in eq. 5; starting under way or scaling the circles does "
-        "not make them keep position. (2) In 5 m/s (case 2) both boats can sail the tack, but from the "
+        f"Reading: (1) in 10 m/s (cases 1, 3-6) {_ten_metres_a_second(capability)}, while Viel's boat "
+        "has a rudder lift p5 = 1500 kg/s and no sail side force in eq. 5; starting under way or scaling "
+        "the circles does not make them keep position. (2) In 5 m/s (case 2) both boats can sail the tack, but from the "
         "task's start (0.5 m/s, seed 0 heading west) the first turn goes through the wind and Viel's sail "
         "law sets eq. 15's close-hauled 13° from the first step: at 0.5 m/s the apparent wind is broad, "
         "the sail's force is mostly side force that the keel cannot carry at that speed, and the boat ends "
