@@ -504,5 +504,6 @@ def _eq4_conclusion(eq4) -> str:
                 "hull's smaller righting moment at large heel, not the sail laws.")
     return ("So the 6-DOF miss at l_φ = 0.1 m is the heel → yaw coupling of the heeled sail's "
             "drive, which the 4-DOF equations drop (the rigid switch makes the paper world miss "
-            "the same way); the geometric hull's smaller righting moment adds heel but does not "
-            "decide it. It is not the sail laws.")
+            "the same way); the geometric hull's smaller righting moment at large heel does not "
+            "decide it (with Saoud's in its place the robot rounds up all the same). It is not the "
+            "sail laws.")

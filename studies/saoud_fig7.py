@@ -481,8 +481,8 @@ def findings(table: pd.DataFrame, l_phis, smoke: bool) -> str:
                      "helm (Fig. 6 report).")
         else:
             cause = ("Cause, checked by switching: the heeled sail's weather helm, the yaw moment the "
-                     "4-DOF equations drop (Fig. 6 report); Saoud's righting moment in place of the "
-                     f"geometric hull's puts S back on heading at only {held4} of {len(g)} angles.")
+                     "4-DOF equations drop (Fig. 6 report), not the geometric hull's smaller righting "
+                     "moment at large heel.")
         lines += [(
             f"*6-DOF, l_φ = 0.1 m.* With the geometric hull S goes off heading 0 at {off} of {len(g)} "
             f"sailable angles and Bm at {off_b} (they round up), {fixed}: the 6-DOF miss. {cause} "
