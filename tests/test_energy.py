@@ -171,6 +171,6 @@ def test_undamped_oscillation_keeps_its_energy(boat, hydrostatics):
 
 
 def test_first_order_integrator_fails_the_same_check():
-    """The check can tell: implicit-fast at the same step loses 9.5 % on the robot."""
+    """The check can tell: implicit-fast at the same step loses 6.1 % on the robot."""
     assert drift("saoud_robot", "paper", yaw_rate=0.0,
                  integrator=mujoco.mjtIntegrator.mjINT_IMPLICITFAST) < -0.05
