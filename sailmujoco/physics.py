@@ -331,13 +331,10 @@ class BoatPhysics(engine.Physics):
         table, p = self._floating, self.params
         heel = float(self.data.ptr.qpos[3])
         righting = float(np.interp(heel, table.heel, table.righting))
-        weight = p.mass * self._P[kernels.P_G]
-        force_b = weight * rot[2, :]  # world vertical in body axes
-        cg = np.array([p.cg_x, 0.0, p.cg_z])
-        wrench = np.concatenate([force_b, np.cross(cg, force_b)])
+        force_b = p.mass * self._P[kernels.P_G] * rot[2, :]  # the weight, world vertical, body axes
+        wrench = np.concatenate([force_b, np.cross((p.cg_x, 0.0, p.cg_z), force_b)])
         wrench[3] -= righting
         self._terms[kernels.T_HYDRO] = wrench
-        self._diag[kernels.D_SUBMERGED] = float(np.interp(heel, table.heel, table.volume))
         self._qfrc8[0:3] += rot @ force_b
         self._qfrc8[3:6] += wrench[3:]
 
@@ -634,8 +631,11 @@ class BoatPhysics(engine.Physics):
         return float(self.position()[2]), self.pitch()
 
     def submerged_volume(self) -> float:
-        """Submerged volume (geometric hydrostatics only), m^3."""
+        """Submerged volume (geometric hydrostatics only), m^3; in 4 DOF, at the floating pose."""
         self._ensure_fresh()
+        if self.dofs == 4 and self._floating is not None:
+            table = self._floating
+            return float(np.interp(self.data.ptr.qpos[3], table.heel, table.volume))
         return float(self._diag[kernels.D_SUBMERGED])
 
     def sail_coefficients(self) -> tuple[float, float]:

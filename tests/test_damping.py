@@ -9,6 +9,7 @@ from scipy.spatial.transform import Rotation
 from sailmujoco import frames, suite, sweep
 from sailmujoco.constants import GRAVITY
 from sailmujoco.forces.damping import vertical_damping
+from sailmujoco.physics import ForceSwitches
 
 D33, D55 = 5.0e3, 4.0e4  # N s/m, N m s/rad: any positive pair
 
@@ -66,7 +67,7 @@ def test_boat_floats_at_its_weight_in_steady_sailing(boat, wind_speed):
     def run(vertical_damping_form):
         env = suite.load(boat, "heading_hold", "mujoco", seed=0, time_limit=90.0, gusts=False,
                          wander=False, wind_speed=wind_speed, wind_from_deg=60.0,
-                         forces=_switches(vertical_damping_form))
+                         forces=ForceSwitches(vertical_damping=vertical_damping_form))
         controller = sweep.make_controller("pid", env)
         controller.reset(0)
         timestep = env.reset()
@@ -86,8 +87,3 @@ def test_boat_floats_at_its_weight_in_steady_sailing(boat, wind_speed):
     old_hydro, old_damping, _, _ = run("body")
     assert old_hydro - 1.0 > 3e-3 and old_damping < -3e-3
 
-
-def _switches(vertical_damping_form):
-    from sailmujoco.physics import ForceSwitches
-
-    return ForceSwitches(vertical_damping=vertical_damping_form)
