@@ -101,6 +101,13 @@ class ForceSwitches:
     or 'kirchhoff' (the unbounded-fluid terms); ``vertical_damping`` 'world' (heave and pitch
     damping on the vertical motion) or 'body' (on body w and q); ``restoring_axes``
     'horizontal' (paper restoring moments about level axes) or 'body'.
+
+    The boat as built (issue 16), each with the papers' form as its alternative:
+    ``resistance`` 'friction' (ITTC friction, Wille eq. 15) or 'dsyhs' (plus the Delft series'
+    residuary resistance, forces/resistance.py); ``foils`` 'paper' (Saoud's sail polynomial,
+    Wille eq. 23) or 'finite' (finite-wing lift slope and 3-D post-stall, forces/foil.py);
+    ``keel_downwash`` (the keel's downwash at the rudder); ``windage`` (air drag of hull and
+    rig, forces/windage.py).
     """
 
     hydrostatics: str = "geometric"
@@ -113,6 +120,10 @@ class ForceSwitches:
     added_mass_coupling: str = "manoeuvring"
     vertical_damping: str = "world"
     restoring_axes: str = "horizontal"
+    resistance: str = "friction"
+    foils: str = "paper"
+    keel_downwash: bool = False
+    windage: bool = False
 
 
 def _entry_point(dispatcher):
@@ -178,7 +189,9 @@ class BoatPhysics(engine.Physics):
             rudder=forces.rudder, damping=forces.damping, added_mass=forces.added_mass,
             sail_tangential=forces.sail_tangential, wind=wind, wander_dt=WANDER_DT,
             added_mass_coupling=forces.added_mass_coupling,
-            vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes)
+            vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes,
+            resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
+            windage=forces.windage)
         cols = column_quadrature(params.hull)
         self._columns = np.ascontiguousarray(
             np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))

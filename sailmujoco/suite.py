@@ -36,7 +36,8 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
          sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
          paper_model: str = "paper", sail_tangential: bool = True,
          added_mass_coupling: str = "manoeuvring", vertical_damping: str = "world",
-         restoring_axes: str = "horizontal",
+         restoring_axes: str = "horizontal", resistance: str = "friction",
+         foils: str = "paper", keel_downwash: bool = False, windage: bool = False,
          forces: ForceSwitches | None = None, params=None,
          boat_options: dict | None = None, **task_options) -> SailEnvironment:
     """Build an environment.
@@ -60,6 +61,11 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     added_mass_coupling, vertical_damping, restoring_axes : str
         Hydrodynamic modelling forms (:class:`sailmujoco.physics.ForceSwitches`); the defaults
         are the models, the alternatives the forms they replaced, kept to measure the effect.
+    resistance, foils, keel_downwash, windage
+        The boat as built (:class:`sailmujoco.physics.ForceSwitches`): ``resistance``
+        "friction" (Wille eq. 15) or "dsyhs" (plus Delft residuary resistance); ``foils``
+        "paper" or "finite" (finite-wing lift slope, 3-D post-stall); ``keel_downwash`` and
+        ``windage`` on/off.
     boat_options : dict, optional
         Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
     params : BoatParams, optional
@@ -86,7 +92,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     wind = the_task.wind()
     switches = forces or ForceSwitches(hydrostatics=hydrostatics, sail_tangential=sail_tangential,
                                        added_mass_coupling=added_mass_coupling,
-                                       vertical_damping=vertical_damping, restoring_axes=restoring_axes)
+                                       vertical_damping=vertical_damping, restoring_axes=restoring_axes,
+                                       resistance=resistance, foils=foils,
+                                       keel_downwash=keel_downwash, windage=windage)
     if world == "mujoco":
         physics = BoatPhysics.load(params=params, sail_mode=sail_mode, wind=wind, forces=switches,
                                    dofs=dofs)

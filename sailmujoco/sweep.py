@@ -61,7 +61,8 @@ TOP_KEYS = {"name", "boat", "task", "world", "controller", "duration", "seeds", 
             "options", "grid", "zip", "trajectory_rate"}
 NAMESPACES = ("env", "task", "boat", "controller")
 ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_model",
-               "sail_tangential", "added_mass_coupling", "vertical_damping", "restoring_axes")
+               "sail_tangential", "added_mass_coupling", "vertical_damping", "restoring_axes",
+               "resistance", "foils", "keel_downwash", "windage")
 ENTRY_POINTS = "sailmujoco.controllers"
 
 

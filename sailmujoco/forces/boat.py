@@ -40,6 +40,9 @@ HYDROSTATIC_MODES = ("off", "paper", "geometric")
 ADDED_MASS_COUPLINGS = ("manoeuvring", "kirchhoff")  # heave/pitch forward-speed terms out / in
 VERTICAL_DAMPING_FORMS = ("world", "body")  # heave/pitch damping on vertical motion / body w, q
 RESTORING_AXES = ("horizontal", "body")  # paper restoring moments about level axes / body axes
+# The boat as built (issue 16); the first value of each is the papers' form:
+RESISTANCE_FORMS = ("friction", "dsyhs")  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
+FOIL_FORMS = ("paper", "finite")  # the papers' foil coefficients / finite-wing slope and stall
 
 # ---- layout of the packed parameter array P -------------------------------------------
 (P_RHO_W, P_RHO_A, P_NU_W, P_G, P_MASS, P_CG_X, P_CG_Z,
@@ -53,7 +56,12 @@ RESTORING_AXES = ("horizontal", "body")  # paper restoring moments about level a
  P_ON_SAIL, P_ON_KEEL, P_ON_RUDDER, P_HYDRO_MODE, P_ON_DAMPING, P_ON_ADDED, P_TANGENTIAL,
  P_WIND_SPEED, P_WIND_FROM, P_CURRENT_E, P_CURRENT_N, P_WANDER_DT,
  P_FLOTATION_X, P_FULL_KIRCHHOFF, P_BODY_DAMPING, P_BODY_RESTORING,
- P_SIZE) = range(66)
+ P_RESISTANCE_DSYHS, P_FINITE_FOILS, P_KEEL_DOWNWASH, P_ON_WINDAGE) = range(69)
+# Blocks of P owned by one force module each (the module defines the offsets inside its block):
+P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
+P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/foil.py (finite-wing forms)
+P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
+P_SIZE = 165
 
 # ---- diagnostics (``diag`` output) ------------------------------------------------------
 (D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
@@ -69,12 +77,15 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
                     added_mass: bool = True, sail_tangential: bool = True, wind=None,
                     wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
                     vertical_damping: str = "world", restoring_axes: str = "horizontal",
-                    ) -> np.ndarray:
+                    resistance: str = "friction", foils: str = "paper", keel_downwash: bool = False,
+                    windage: bool = False) -> np.ndarray:
     """Flatten boat parameters and switches into the array the kernel reads."""
     for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
                                  ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
                                  ("vertical_damping", vertical_damping, VERTICAL_DAMPING_FORMS),
-                                 ("restoring_axes", restoring_axes, RESTORING_AXES)):
+                                 ("restoring_axes", restoring_axes, RESTORING_AXES),
+                                 ("resistance", resistance, RESISTANCE_FORMS),
+                                 ("foils", foils, FOIL_FORMS)):
         if value not in choices:
             raise ValueError(f"unknown {name} {value!r}; choose one of {choices}")
     h = p.hull
@@ -111,6 +122,10 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     P[P_FULL_KIRCHHOFF] = float(added_mass_coupling == "kirchhoff")
     P[P_BODY_DAMPING] = float(vertical_damping == "body")
     P[P_BODY_RESTORING] = float(restoring_axes == "body")
+    P[P_RESISTANCE_DSYHS] = float(resistance == "dsyhs")
+    P[P_FINITE_FOILS] = float(foils == "finite")
+    P[P_KEEL_DOWNWASH] = float(keel_downwash)
+    P[P_ON_WINDAGE] = float(windage)
     return P
 
 
