@@ -7,7 +7,8 @@ wrench, the hinge moments and the generalised forces MuJoCo needs. The packing o
 array in well under a microsecond; a record of 60 fields takes many) is defined here too.
 
 Term order (rows of ``terms``), each a body-frame wrench about CO:
-``TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external")``.
+``TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external",
+"windage")``.
 """
 
 from __future__ import annotations
@@ -31,9 +32,24 @@ from .foil import (
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .wind import wind_velocity
+from .windage import (
+    W_AREA_FRONT,
+    W_AREA_SIDE,
+    W_CX,
+    W_CY,
+    W_HULL_X,
+    W_HULL_Z,
+    W_MAST_AREA,
+    W_MAST_CD,
+    W_MAST_X,
+    W_MAST_Z,
+    mast_force,
+    pack_windage,
+    topsides_force,
+)
 
-TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external")
-T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT = range(len(TERMS))
+TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
+T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
 HYDROSTATIC_MODES = ("off", "paper", "geometric")
 # Each modelling choice of issue 15 keeps the form it replaced, so its effect can be measured
 # (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
@@ -126,6 +142,7 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     P[P_FINITE_FOILS] = float(foils == "finite")
     P[P_KEEL_DOWNWASH] = float(keel_downwash)
     P[P_ON_WINDAGE] = float(windage)
+    pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
     return P
 
 
@@ -280,6 +297,27 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         diag[D_WIND_X], diag[D_WIND_Y], diag[D_WIND_Z] = wind_w[0], wind_w[1], wind_w[2]
         diag[D_CE_HEIGHT], diag[D_CN], diag[D_CT] = z_ce, c_n, c_t
     diag[D_SAIL_HINGE] = sail_hinge
+
+    # ---- windage of topsides and mast, each at its centroid in its own wind (forces/windage.py) ----
+    if P[P_ON_WINDAGE] > 0.0:
+        wb = P_WINDAGE_BLOCK
+        for element in range(2):
+            if element == 0:
+                point[0], point[1], point[2] = P[wb + W_HULL_X], 0.0, P[wb + W_HULL_Z]
+            else:
+                point[0], point[1], point[2] = P[wb + W_MAST_X], 0.0, P[wb + W_MAST_Z]
+            z_point = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
+            wind_velocity(t, z_point, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
+                          gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, wind_w)
+            for i in range(3):
+                wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
+            _point_flow(wind_b, v, w, point, zero3, flow)
+            if element == 0:
+                topsides_force(flow, P[P_RHO_A], P[wb + W_CX], P[wb + W_CY], P[wb + W_AREA_FRONT],
+                               P[wb + W_AREA_SIDE], force)
+            else:
+                mast_force(flow, P[P_RHO_A], P[wb + W_MAST_CD], P[wb + W_MAST_AREA], force)
+            _accumulate(terms, T_WINDAGE, force, point)
 
     # ---- hydrostatics ----
     mode = P[P_HYDRO_MODE]
