@@ -38,6 +38,27 @@ VIDEO = {"boat": "saoud_robot", "task": "heading_hold", "controller": "saoud", "
          "wind_speed": 8.0, "wind_from_deg": 70.0}
 CONFIGS = {"baseline": {}, "ct_off": {"env.sail_tangential": False}, "four_dof": {"env.dofs": 4},
            "sheeted": {"env.sail_mode": "sheeted"}}
+# The boat as built, each of its differences from the papers' boat switched off in turn
+# (physics.ForceSwitches): (config, sweep options, row title, what the papers assume)
+BUILT = (
+    ("paper_hydrostatics", {"env.hydrostatics": "paper"},
+     "Restoring by formula: eq. 20 / Saoud eq. 4 in place of the hull's geometric buoyancy",
+     "Wille eq. 20; Saoud eq. 4"),
+    ("friction_only", {"env.resistance": "friction"},
+     "Friction-only resistance: no wave-making (residuary) resistance",
+     "Wille eqs. 15-16 (ITTC-57 friction with form factor)"),
+    ("paper_foils", {"env.foils": "paper"},
+     "The papers' foil coefficients: sail slope 7.15 /rad, 2-D post-stall drag",
+     "Saoud §VII-A C_N polynomial; Wille eq. 23 with the 2-D table"),
+    ("no_downwash", {"env.keel_downwash": False},
+     "Rudder in undisturbed flow: no keel downwash", "Wille eqs. 34-36"),
+    ("no_windage", {"env.windage": False},
+     "No windage on hull and rig", "Wille, Saoud (Viel has p1 on the true wind)"),
+)
+CONFIGS.update({name: options for name, options, _, _ in BUILT})
+SPEED_HOLDS = 0.05  # an assumption "holds" where it changes the steady speed by less than 5 %
+HEEL_HOLDS_DEG = 1.0  # ... and the steady heel by less than 1 deg
+FROUDE_WALL = 0.45  # the displacement hull's wave-making wall (Larsson & Eliasson, ch. 5)
 
 
 def plane_sweeps(out: Path, smoke: bool, workers, progress) -> pd.DataFrame:
@@ -214,6 +235,19 @@ def lateral_drift(smoke: bool) -> dict:
     return out
 
 
+def table1_resistance(smoke: bool) -> dict:
+    """Wille (2016b) Table 1 sims 1-3 (seed 0, 6-DOF) with and without residuary resistance."""
+    from .wille_roll_table1 import DURATION, SMOKE_DURATION, WIND, numbers, simulate
+
+    out = {}
+    for resistance in ("dsyhs", "friction"):
+        for sim in ("sim1", "sim2", "sim3"):
+            job = dict(world="mujoco", sim=sim, seed=0, wind_speed=WIND,
+                       duration=SMOKE_DURATION if smoke else DURATION, env={"resistance": resistance})
+            out[(resistance, sim)] = numbers(simulate(job))
+    return out
+
+
 def restoring_errors(data: pd.DataFrame) -> dict:
     """Geometric righting moment against eq. 20 and its linearisation (eq. 66) over the heel
     range the boats reached in the wind plane."""
@@ -235,9 +269,29 @@ def restoring_errors(data: pd.DataFrame) -> dict:
     return out
 
 
+def built_row(data, effect, rng_, config, title, paper_form) -> dict:
+    """A row for one difference between the boat as built and the papers' boat: its effect on
+    steady speed and heel over the wind plane when the papers' form is switched back on."""
+    speed = {b: effect(b, config) for b in BOATS}
+    heel = {b: _delta(data, b, config, "steady_heel").to_numpy(dtype=float).ravel() for b in BOATS}
+    both_speed = np.concatenate(list(speed.values()))
+    both_heel = np.degrees(np.concatenate(list(heel.values())))
+    both_heel = both_heel[np.isfinite(both_heel)]
+    holds = (both_speed.size > 0 and np.max(np.abs(both_speed)) < SPEED_HOLDS
+             and (not both_heel.size or np.max(np.abs(both_heel)) < HEEL_HOLDS_DEG))
+    return {"assumption": f"{title} ({paper_form})",
+            "scenarios": "both boats, wind plane",
+            "metric": "steady speed and heel, the papers' form minus as built",
+            "range": "; ".join(f"{b}: speed {rng_(speed[b], 100, '{:+.1f}')} %, heel "
+                               f"{rng_(heel[b], 180 / math.pi, '{:+.2f}')} deg" for b in BOATS),
+            "threshold": f"|speed| < {100 * SPEED_HOLDS:.0f} %, |heel| < {HEEL_HOLDS_DEG:g} deg",
+            "verdict": "holds" if holds else "breaks at some points",
+            "effect": "speed and heel, as the range"}
+
+
 def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bool = False) -> dict:
     out = Path(out)
-    bar = Progress(5, "assumptions", progress)
+    bar = Progress(6, "assumptions", progress)
     data = plane_sweeps(out, smoke, workers, progress)
     data.to_csv(out / "wind_plane.csv", index=False)
     bar.step()
@@ -250,6 +304,8 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     bar.step()
     drift = lateral_drift(smoke)
     restoring = restoring_errors(data)
+    bar.step()
+    table1 = table1_resistance(smoke)
     bar.step()
     bar.close()
 
@@ -380,6 +436,31 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "threshold": "6-DOF within 0.05 m/s of 3-DOF",
                  "verdict": "holds" if abs(drift["mujoco"] - drift["paper"]) < 0.05 else "breaks",
                  "effect": "see viel_fig3 for the distance to target"})
+
+    # 10-14. the boat as built: each difference from the papers' boat switched off in turn
+    for config, _, title, paper_form in BUILT:
+        rows.append(built_row(data, effect, rng_, config, title, paper_form))
+        both = np.concatenate([effect(b, config) for b in BOATS])
+        headline[f"{config}_speed_effect_max"] = float(np.max(np.abs(both))) if both.size else float("nan")
+    # the resistance row also reports the Froude numbers and Wille's Table 1
+    yacht_length = get_boat("wille_yacht").hull.length
+    froude = {c: _pivot(data, "wille_yacht", c, "steady_speed").to_numpy(dtype=float)
+              / math.sqrt(9.81 * yacht_length) for c in ("baseline", "friction_only")}
+    headline["yacht_froude_max"] = float(np.nanmax(froude["baseline"]))
+    headline["yacht_froude_max_friction"] = float(np.nanmax(froude["friction_only"]))
+    for key, value in table1.items():
+        headline[f"table1_{key[1]}_{key[0]}_roll_deg"] = value["roll_amplitude"]
+        headline[f"table1_{key[1]}_{key[0]}_surge"] = value["mean_surge"]
+    resistance_row = next(r for r in rows if r["assumption"].startswith("Friction-only"))
+    resistance_row["range"] += (f"; yacht Froude number (wind plane) up to {headline['yacht_froude_max']:.2f} "
+                                f"as built, {headline['yacht_froude_max_friction']:.2f} friction only")
+    resistance_row["effect"] += "; Wille Table 1 (6-DOF, seed 0), as built → friction only: " + ", ".join(
+        f"{sim.replace('sim', 'sim ')} roll {table1[('dsyhs', sim)]['roll_amplitude']:.2f}° → "
+        f"{table1[('friction', sim)]['roll_amplitude']:.2f}°, surge {table1[('dsyhs', sim)]['mean_surge']:.2f} → "
+        f"{table1[('friction', sim)]['mean_surge']:.2f} m/s (Fn "
+        f"{table1[('dsyhs', sim)]['mean_surge'] / math.sqrt(9.81 * yacht_length):.2f} → "
+        f"{table1[('friction', sim)]['mean_surge'] / math.sqrt(9.81 * yacht_length):.2f})"
+        for sim in ("sim1", "sim2", "sim3"))
 
     # figures
     fig, axes = plt.subplots(2, 3, figsize=(15, 8))

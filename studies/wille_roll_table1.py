@@ -120,7 +120,8 @@ def simulate(job: dict) -> dict:
     env = make_env("beam_reach_roll", job["world"], seed=job["seed"],
                    sail_factor=job.get("sail_factor", 1.0), sail_time_constant=job.get("sail_time_constant"),
                    paper_model=job.get("paper_model", "paper"), control_timestep=job.get("dt", 0.1),
-                   dofs=job.get("dofs", 6), time_limit=job["duration"], wind_speed=job["wind_speed"])
+                   dofs=job.get("dofs", 6), time_limit=job["duration"], wind_speed=job["wind_speed"],
+                   **job.get("env", {}))
     controller = sweep.make_controller("wille_roll", env, **SIMS[job["sim"]],
                                        heel_desired_deg=job.get("heel_desired_deg", 10.0))
     sail = controller.sail

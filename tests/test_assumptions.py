@@ -86,7 +86,12 @@ def test_study_smoke(tmp_path):
     from sailmujoco.studies import assumptions
 
     headline = assumptions.run(tmp_path, smoke=True, progress=False)
-    assert headline["rows"] == 9
+    assert headline["rows"] == 14
+    for config in ("paper_hydrostatics", "friction_only", "paper_foils", "no_downwash", "no_windage"):
+        assert np.isfinite(headline[f"{config}_speed_effect_max"]), config
+    for sim in ("sim1", "sim2", "sim3"):
+        for resistance in ("dsyhs", "friction"):
+            assert headline[f"table1_{sim}_{resistance}_surge"] > 1.0, (sim, resistance)
     for key in ("ct_cn_max", "pitch_amplitude_max_deg", "omega3_ratio_max", "keel_roll_share_max",
                 "phi_star_error_max_deg", "lateral_speed_6dof"):
         assert np.isfinite(headline[key]), key
