@@ -23,13 +23,14 @@ from sailmujoco.physics import BoatPhysics, ForceSwitches
 N_STATES = 40
 
 
-def evaluate(boat: str, hydrostatics: str, seed: int) -> dict:
+def evaluate(boat: str, hydrostatics: str, seed: int, resistance: str = "friction") -> dict:
     """Forces for N_STATES random states (the same states in any process)."""
     rng = np.random.default_rng(seed)
     wind = WindConfig(speed=9.0, direction_from=1.0, seed=seed, current_east=0.3,
                       current_north=-0.2)
     physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics,
-                                                                     windage=True))
+                                                                     windage=True,
+                                                                     resistance=resistance))
     d = physics.data.ptr
     out = {"terms": [], "qfrc": [], "madd": [], "diag": [], "status": []}
     for _ in range(N_STATES):
@@ -49,13 +50,15 @@ def evaluate(boat: str, hydrostatics: str, seed: int) -> dict:
     return out
 
 
-@pytest.mark.parametrize("boat,hydrostatics", [("wille_yacht", "geometric"),
-                                               ("saoud_robot", "paper")])
-def test_compiled_equals_interpreted(boat, hydrostatics, tmp_path):
-    fast = evaluate(boat, hydrostatics, seed=21)
+@pytest.mark.parametrize("boat,hydrostatics,resistance", [("wille_yacht", "geometric", "friction"),
+                                                          ("saoud_robot", "paper", "friction"),
+                                                          ("wille_yacht", "geometric", "dsyhs")])
+def test_compiled_equals_interpreted(boat, hydrostatics, resistance, tmp_path):
+    fast = evaluate(boat, hydrostatics, seed=21, resistance=resistance)
     script = (f"import json, sys; sys.path.insert(0, {str(Path(__file__).parent)!r});"
               f"from test_fast_path import evaluate;"
-              f"json.dump(evaluate({boat!r}, {hydrostatics!r}, 21), open({str(tmp_path / 'r.json')!r}, 'w'))")
+              f"json.dump(evaluate({boat!r}, {hydrostatics!r}, 21, {resistance!r}),"
+              f" open({str(tmp_path / 'r.json')!r}, 'w'))")
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
     subprocess.run([sys.executable, "-c", script], check=True, env=env, timeout=600, cwd=tmp_path)
     reference = json.loads((tmp_path / "r.json").read_text())

@@ -31,6 +31,7 @@ from .foil import (
     section_flow,
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
+from .resistance import delft_hull, pack_resistance, residuary_surge_force
 from .wind import wind_velocity
 from .windage import (
     W_AREA_FRONT,
@@ -139,6 +140,8 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     P[P_BODY_DAMPING] = float(vertical_damping == "body")
     P[P_BODY_RESTORING] = float(restoring_axes == "body")
     P[P_RESISTANCE_DSYHS] = float(resistance == "dsyhs")
+    block = pack_resistance(delft_hull(h), p.rho_water, GRAVITY)
+    P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + block.size] = block
     P[P_FINITE_FOILS] = float(foils == "finite")
     P[P_KEEL_DOWNWASH] = float(keel_downwash)
     P[P_ON_WINDAGE] = float(windage)
@@ -330,11 +333,15 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
                         wrench)
         terms[T_HYDRO, :] = wrench
 
-    # ---- hull damping, eqs. 12-19 ----
+    # ---- hull damping, eqs. 12-19 (+ residuary resistance, forces/resistance.py) ----
     if P[P_ON_DAMPING] > 0.0:
         hull_damping(R, nu_r, P[P_RHO_W], P[P_D11:P_D66 + 1], P[P_WETTED], P[P_FORM_K], P[P_LENGTH],
                      P[P_NU_W], P[P_CROSSFLOW_CD], strips[0], strips[1], strips[2], P[P_BF0],
                      P[P_BL], P[P_OMEGA_ROLL], P[P_FLOTATION_X], P[P_BODY_DAMPING] > 0.0, wrench)
+        if P[P_RESISTANCE_DSYHS] > 0.0:  # + Delft residuary resistance, along body x at CO
+            heel = math.atan2(R[2, 1], R[2, 2])  # frames.euler_from_matrix
+            block = P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + RESISTANCE_BLOCK_SIZE]
+            wrench[0] += residuary_surge_force(nu_r[0], heel, block)
         terms[T_DAMP, :] = wrench
 
     # ---- added mass: velocity terms here, inertia via madd in the mass matrix ----
