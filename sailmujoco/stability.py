@@ -35,7 +35,7 @@ def equilibrium_heave(p: BoatParams, heel: float, columns: np.ndarray) -> float:
     """Height of CO (m) at which the heeled hull displaces its weight."""
     rot = matrix_from_euler(heel, 0.0, 0.0)
     target = p.displaced_volume
-    span = p.hull.freeboard + p.hull.canoe_draft + p.hull.half_beam * 2
+    span = p.hull.freeboard + p.hull.canoe_draft + 2 * p.hull.half_beam * p.hull.flare
 
     def excess(z):
         return submerged_volume(z, rot, columns)[0] - target
@@ -100,7 +100,16 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
         step = 1e-7
         jac = np.column_stack([(np.asarray(residual(x + d)) - f) / step
                                for d in (np.array([step, 0.0]), np.array([0.0, step]))])
-        x = x - np.linalg.solve(jac, f)
+        # lstsq, not solve: near 90 deg heel the columns lie almost level, each wholly wet or
+        # dry, and then no column's cut moves with trim (a zero Jacobian column); the minimum-
+        # norm step leaves the trim where it is
+        x = x - np.linalg.lstsq(jac, f, rcond=None)[0]
+        f = np.asarray(residual(x))
+    if abs(f[0]) > 1e-9 and abs(f[1]) <= 1e-9:
+        # there the volume is steep where a column is cut and flat between (continuous but
+        # nearly a staircase in the heave), which Newton can cycle on: bracket it instead
+        span = p.hull.freeboard + p.hull.canoe_draft + 2 * p.hull.half_beam * p.hull.flare
+        x[0] = brentq(lambda z: residual((z, x[1]))[0], -span, span, xtol=1e-13, rtol=1e-15)
         f = np.asarray(residual(x))
     if np.max(np.abs(f)) > 1e-9:
         raise RuntimeError(f"{p.name}: no floating pose found at heel {np.degrees(heel):.1f} deg "
