@@ -90,3 +90,19 @@ def test_yacht_keeps_its_righting_moment_to_large_heel(heel_deg):
     table = stability.floating_table(p, max_heel=math.radians(35.0))
     assert np.interp(heel, table.heel, table.righting) >= 0.8 * eq20
     assert np.interp(heel, table.heel, table.righting) == pytest.approx(righting, rel=0.02)
+
+
+def test_gz_curves_and_figure(tmp_path):
+    """Eq. 66 (read as the tangent of eq. 20 at phi_w) touches eq. 20 at phi_w with its slope;
+    the figure script writes a PNG where it is told to (never into the tree)."""
+    p = get_boat("wille_yacht")
+    w = math.radians(10.0)
+    heels = np.array([w - 1e-4, w, w + 1e-4])
+    c = stability.gz_curves(p, heels, (w,))
+    assert c["eq66_10"][1] == pytest.approx(c["eq20"][1], rel=1e-12)
+    assert np.diff(c["eq66_10"]) == pytest.approx(np.diff(c["eq20"]), rel=1e-4)
+    assert c["geometric"][1] == pytest.approx(
+        stability.righting_moment(p, w) / (p.rho_water * GRAVITY * p.displaced_volume), rel=0.01)
+    path = tmp_path / "gz.png"
+    stability.gz_figure(path, "saoud_robot")
+    assert path.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
