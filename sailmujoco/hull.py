@@ -6,7 +6,14 @@ the tests can check the numerical integration against:
 * planform (waterline half-breadth) b(x) = b0 (1 - (2x/L)^2), x in [-L/2, L/2];
 * sections are half-ellipses of half-breadth b(x) and depth t(x) = t0 (1 - (2x/L)^2)
   below the design waterline;
-* topsides are vertical from the waterline up to a flat deck at height ``freeboard``.
+* topsides are ruled straight from the waterline edge (b(x), 0) up to the deck edge
+  (k b(x), freeboard), k = ``deck_half_beam / half_beam`` >= 1: vertical when k = 1 (the
+  default), flared outward when k > 1 (a modern yacht's maximum beam is at the deck);
+* a flat deck at height ``freeboard``.
+
+Everything below the waterline is the canoe body, so the upright closed forms below (and the
+strip-theory added mass, radiation damping and wetted surface built on them) do not depend on
+the flare; the flare only adds volume once a deck edge goes toward the water at large heel.
 
 Keel and rudder volumes are neglected in the buoyancy (a few per cent of the displacement,
 stated in each boat's xml README).
@@ -33,18 +40,28 @@ from scipy.optimize import brentq
 
 @dataclass(frozen=True)
 class HullShape:
-    """Canoe body dimensions, metres."""
+    """Canoe body and topside dimensions, metres."""
 
     length: float  # L, waterline length
     half_beam: float  # b0, maximum waterline half-breadth (midship)
     canoe_draft: float  # t0, maximum depth of the canoe body below the waterline
     freeboard: float  # height of the flat deck above the waterline
+    deck_half_beam: float | None = None  # midship deck half-breadth; None: = half_beam (no flare)
 
     def __post_init__(self):
         for name in ("length", "half_beam", "canoe_draft", "freeboard"):
             value = getattr(self, name)
             if not np.isfinite(value) or value <= 0.0:
                 raise ValueError(f"hull {name} must be a positive finite length in m, got {value!r}")
+        deck = self.deck_half_beam
+        if deck is not None and (not np.isfinite(deck) or deck < self.half_beam):
+            raise ValueError(f"hull deck_half_beam must be >= half_beam ({self.half_beam!r} m), "
+                             f"got {deck!r}")
+
+    @property
+    def flare(self) -> float:
+        """k = deck half-breadth / waterline half-breadth at every station (1: vertical sides)."""
+        return 1.0 if self.deck_half_beam is None else self.deck_half_beam / self.half_beam
 
 
 def volume(h: HullShape) -> float:
@@ -110,10 +127,12 @@ def wetted_surface(h: HullShape, n: int = 200) -> float:
 
 
 def design_for(length: float, displaced_volume: float, gm: float, z_g: float,
-               freeboard: float) -> HullShape:
+               freeboard: float, flare: float = 1.0) -> HullShape:
     """The hull of given length and displacement whose transverse GM equals ``gm``.
 
-    Solves V = (4 pi / 15) b0 t0 L and GM_t(b0, t0) = gm for (b0, t0) with brentq.
+    Solves V = (4 pi / 15) b0 t0 L and GM_t(b0, t0) = gm for (b0, t0) with brentq. ``flare``
+    (deck half-breadth / waterline half-breadth, >= 1) shapes the topsides only: it leaves the
+    upright V, z_B, BM and so GM unchanged.
     """
     area = displaced_volume / (4.0 * np.pi / 15.0 * length)  # b0 * t0
 
@@ -121,7 +140,8 @@ def design_for(length: float, displaced_volume: float, gm: float, z_g: float,
         return gm_transverse(HullShape(length, b0, area / b0, freeboard), z_g) - gm
 
     b0 = brentq(gm_error, 0.02 * length, 0.5 * length, xtol=1e-12)
-    return HullShape(length, b0, area / b0, freeboard)
+    return HullShape(length, b0, area / b0, freeboard,
+                     deck_half_beam=None if flare == 1.0 else flare * b0)
 
 
 @dataclass(frozen=True)
@@ -129,8 +149,9 @@ class ColumnQuadrature:
     """Vertical prisms (columns along body z) that tile the hull's waterplane footprint.
 
     Column k stands at body (x[k], y[k]) with footprint area ``area[k]`` and spans body z from
-    ``z_bottom[k]`` (the canoe-body bottom) to ``z_top[k]`` (the deck). The buoyancy of each
-    column is integrated exactly along its axis; only (x, y) is discretised.
+    ``z_bottom[k]`` (the canoe-body bottom, or the flared topside outboard of the waterline) to
+    ``z_top[k]`` (the deck). The buoyancy of each column is integrated exactly along its axis;
+    only (x, y) is discretised.
     """
 
     x: np.ndarray
@@ -140,11 +161,17 @@ class ColumnQuadrature:
     z_top: np.ndarray
 
 
-def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16) -> ColumnQuadrature:
+def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
+                      nflare: int | None = None) -> ColumnQuadrature:
     """Gauss-Legendre in x, y = b(x) sin(theta) with the midpoint rule in theta.
 
     The substitution makes the half-ellipse depth t cos(theta) and the strip width
     b cos(theta) dtheta smooth, so the upright volume is integrated exactly.
+
+    With flared topsides (``h.flare > 1``) each side gets ``nflare`` more columns per station
+    (default ntheta // 2) over the band b(x) < |y| < k b(x), midpoint rule in |y|: their bottom
+    is the topside, z = freeboard (|y| - b) / ((k - 1) b), taken at the column's centre, which
+    integrates the linear topside exactly wherever a column is wholly wet or dry.
     """
     xg, wg = np.polynomial.legendre.leggauss(nx)
     x1 = 0.5 * h.length * xg
@@ -159,8 +186,19 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16) -> ColumnQua
     area = wx[:, None] * b * np.cos(theta)[None, :] * dtheta
     z_bottom = -t * np.cos(theta)[None, :]
     z_top = np.full((nx, ntheta), h.freeboard)
-    return ColumnQuadrature(*(np.ascontiguousarray(a, dtype=float).ravel()
-                              for a in (x, y, area, z_bottom, z_top)))
+    parts = [(x, y, area, z_bottom, z_top)]
+    if h.flare > 1.0:
+        nf = ntheta // 2 if nflare is None else nflare
+        u = (np.arange(nf) + 0.5) / nf  # fraction of the way from the waterline to the deck edge
+        band = (h.flare - 1.0) * b  # (nx, 1): width of the flare band
+        xf = np.broadcast_to(x1[:, None], (nx, nf))
+        yf = b + u[None, :] * band
+        af = wx[:, None] * band / nf * np.ones((1, nf))
+        zf = np.broadcast_to(h.freeboard * u[None, :], (nx, nf))
+        tf = np.full((nx, nf), h.freeboard)
+        parts += [(xf, yf, af, zf, tf), (xf, -yf, af, zf, tf)]
+    return ColumnQuadrature(*(np.ascontiguousarray(
+        np.concatenate([np.ravel(part[i]) for part in parts]), dtype=float) for i in range(5)))
 
 
 def strip_quadrature(h: HullShape, n: int = 16):

@@ -86,7 +86,8 @@ def hull_inertial(p: BoatParams):
 
 
 def _hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
-    """Vertices and faces of the canoe body (half-ellipse sections + vertical topsides)."""
+    """Vertices and faces of the hull: half-ellipse sections, straight topsides flared out to
+    the deck edge at k b(x) (vertical when k = 1), flat deck."""
     h = p.hull
     xs = np.linspace(-0.5 * h.length, 0.5 * h.length, n_stations)
     verts, rings = [], []
@@ -94,9 +95,9 @@ def _hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
     for x in xs:
         f = max(1.0 - (2.0 * x / h.length) ** 2, 0.03)
         b, t = h.half_beam * f, h.canoe_draft * f
-        ring = [(x, -b, h.freeboard)]
+        ring = [(x, -h.flare * b, h.freeboard)]
         ring += [(x, b * np.sin(th), -t * np.cos(th)) for th in theta]
-        ring += [(x, b, h.freeboard)]
+        ring += [(x, h.flare * b, h.freeboard)]
         rings.append(list(range(len(verts), len(verts) + len(ring))))
         verts += ring
     # wound outward (positive signed volume), so back-face culling shows the outside; the

@@ -35,7 +35,7 @@ def equilibrium_heave(p: BoatParams, heel: float, columns: np.ndarray) -> float:
     """Height of CO (m) at which the heeled hull displaces its weight."""
     rot = matrix_from_euler(heel, 0.0, 0.0)
     target = p.displaced_volume
-    span = p.hull.freeboard + p.hull.canoe_draft + p.hull.half_beam * 2
+    span = p.hull.freeboard + p.hull.canoe_draft + 2 * p.hull.half_beam * p.hull.flare
 
     def excess(z):
         return submerged_volume(z, rot, columns)[0] - target
@@ -100,7 +100,16 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
         step = 1e-7
         jac = np.column_stack([(np.asarray(residual(x + d)) - f) / step
                                for d in (np.array([step, 0.0]), np.array([0.0, step]))])
-        x = x - np.linalg.solve(jac, f)
+        # lstsq, not solve: near 90 deg heel the columns lie almost level, each wholly wet or
+        # dry, and then no column's cut moves with trim (a zero Jacobian column); the minimum-
+        # norm step leaves the trim where it is
+        x = x - np.linalg.lstsq(jac, f, rcond=None)[0]
+        f = np.asarray(residual(x))
+    if abs(f[0]) > 1e-9 and abs(f[1]) <= 1e-9:
+        # there the volume is steep where a column is cut and flat between (continuous but
+        # nearly a staircase in the heave), which Newton can cycle on: bracket it instead
+        span = p.hull.freeboard + p.hull.canoe_draft + 2 * p.hull.half_beam * p.hull.flare
+        x[0] = brentq(lambda z: residual((z, x[1]))[0], -span, span, xtol=1e-13, rtol=1e-15)
         f = np.asarray(residual(x))
     if np.max(np.abs(f)) > 1e-9:
         raise RuntimeError(f"{p.name}: no floating pose found at heel {np.degrees(heel):.1f} deg "
@@ -147,3 +156,88 @@ def floating_table(p: BoatParams, max_heel: float = np.radians(89.0),
                          np.concatenate([trim[:0:-1], trim]),
                          np.concatenate([volume[:0:-1], volume]),
                          np.concatenate([-righting[:0:-1], righting]))
+
+
+WILLE_WORKING_HEEL = np.radians(10.0)  # rad, phi_w of Wille (2016b) §4 (+-10 deg)
+
+
+def gz_curves(p: BoatParams, heels, working_heels=(WILLE_WORKING_HEEL,)) -> dict[str, np.ndarray]:
+    """Righting arms GZ (m) over ``heels`` (rad, >= 0): the geometric hull floating freely
+    (:func:`floating_table`), Wille (2016a) eq. 20, GM_t sin(phi) cos(phi), and Wille (2016b)
+    eq. 66 about each working heel phi_w in ``working_heels``.
+
+    Eq. 66 is printed as rho g V GM_t ((1 - 2 sin^2 phi_w) phi + C_1) with eq. 67
+    C_1 = rho g V GM_t cos(phi_w) sin(phi_w); read as the tangent of eq. 20 at phi_w (the
+    printed form doubles rho g V GM_t in C_1 and drops phi_w from phi - phi_w):
+    GZ = GM_t ((1 - 2 sin^2 phi_w) (phi - phi_w) + sin(phi_w) cos(phi_w)).
+    """
+    heels = np.asarray(heels, dtype=float)
+    table = floating_table(p, max_heel=max(float(heels.max()), np.radians(1.0)),
+                           step=np.radians(0.5))
+    weight = p.rho_water * GRAVITY * p.displaced_volume
+    out = {"heel": heels,
+           "geometric": np.interp(heels, table.heel, table.righting) / weight,
+           "eq20": p.gm_t * np.sin(heels) * np.cos(heels)}
+    for w in working_heels:
+        out[f"eq66_{np.degrees(w):g}"] = p.gm_t * ((1.0 - 2.0 * np.sin(w) ** 2) * (heels - w)
+                                                   + np.sin(w) * np.cos(w))
+    return out
+
+
+def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None,
+              working_heels_deg=(10.0, 25.0)) -> None:
+    """Write the GZ-curve figure (PNG) of ``boat``: ours vs eq. 20 vs eq. 66 (and ``compare``,
+    another hull of the same boat, dashed). ``python -m sailmujoco.stability --gz-figure PATH``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    from .params import get_boat
+
+    p = get_boat(boat)
+    heels = np.radians(np.arange(0.0, 89.01, 1.0))  # at 90 deg the columns lie level
+    c = gz_curves(p, heels, np.radians(working_heels_deg))
+    deg = np.degrees(heels)
+    fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100)
+    ax.plot(deg, c["geometric"], "k", lw=2, label="geometric hull (ours, floating freely)")
+    if compare is not None:
+        ax.plot(deg, gz_curves(compare, heels, ())["geometric"], "k--", lw=1,
+                label="geometric hull before issue 16")
+    ax.plot(deg, c["eq20"], "C0", label="Wille (2016a) eq. 20: GM sin cos")
+    for w, colour in zip(working_heels_deg, ("C1", "C2"), strict=False):
+        ax.plot(deg, c[f"eq66_{w:g}"], colour, lw=1,
+                label=f"Wille (2016b) eq. 66, $\\phi_w$ = {w:g} deg")
+    ax.set_xlim(0, 90)
+    ax.set_ylim(0, 1.6 * max(c["eq20"].max(), c["geometric"].max()) / 1.3)
+    ax.set_xlabel("heel (deg)")
+    ax.set_ylabel("righting arm GZ (m)")
+    ax.set_title(f"{p.name}: GM_t = {p.gm_t:g} m, CG {p.cg_z:+.3f} m from the waterline",
+                 fontsize=9)
+    ax.grid(alpha=0.3)
+    ax.legend(fontsize=7, loc="lower center")
+    fig.tight_layout()
+    fig.savefig(path)
+    plt.close(fig)
+
+
+def _previous_wille_hull() -> BoatParams:
+    """The yacht as it was up to issue 16: CG on the waterline, vertical topsides."""
+    from .hull import design_for
+    from .params import wille_yacht
+
+    p = wille_yacht()
+    return p.with_(cg_z=0.0, hull=design_for(p.hull.length, p.displaced_volume, p.gm_t, 0.0,
+                                             p.hull.freeboard))
+
+
+if __name__ == "__main__":  # python -m sailmujoco.stability --gz-figure PATH [--boat NAME]
+    import argparse
+
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--gz-figure", required=True, metavar="PATH", help="PNG to write")
+    parser.add_argument("--boat", default="wille_yacht")
+    args = parser.parse_args()
+    gz_figure(args.gz_figure, args.boat,
+              compare=_previous_wille_hull() if args.boat == "wille_yacht" else None)
+    print(f"wrote {args.gz_figure}")

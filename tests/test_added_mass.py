@@ -28,6 +28,11 @@ def test_step_force_gives_f_over_m_plus_added_mass(axis, index):
     force = 500.0
     wrench = np.zeros(6)
     wrench[index] = force
+    # through the centre of rigid plus added mass, m r_G / (m + A) from CO (the added mass acts
+    # at CO, the rigid mass at the CG), so the hull translates without turning:
+    # (m + A) a = F and the moment about CO is m r_G x a
+    share = p.mass / (p.mass - p.added_mass[index])
+    wrench[3:] = share * np.cross([p.cg_x, 0.0, p.cg_z], wrench[:3])
     v = _accelerate(physics, wrench)
     dt = physics.timestep()
     # slope over the second half: the rudder and boom servos have settled by then

@@ -101,7 +101,9 @@ def test_study_smoke(tmp_path):
     assert headline["pitch_amplitude_max_deg"] < 5.0
     # switching C_T off changes the speed a little (not nothing, not much)
     assert 0.0 < headline["ct_speed_effect_max"] < 0.2
-    # Wille's sin cos restoring is off by > 10 % from the geometric yacht over the heel reached
-    assert headline["wille_yacht_restoring_error"] > 0.1
+    # Wille's sin cos restoring differs from the geometric yacht over the heel reached, by less
+    # than 25 %: since issue 16 the yacht keeps >= 0.8 of eq. 20 to 30 deg (test_hull_form), and
+    # |eq20 - geo| / geo <= 1 / 0.8 - 1 there
+    assert 0.0 < headline["wille_yacht_restoring_error"] < 0.25
     report = (tmp_path / "report.md").read_text()
     assert report.count("\n| ") >= 10 and (tmp_path / "wind_plane.png").stat().st_size > 30_000

@@ -102,12 +102,14 @@ def test_sheet_length_and_angle_are_inverse():
 @pytest.mark.parametrize("boat", BOATS)
 def test_hull_mesh_is_closed_and_wound_outward(boat):
     """Positive signed volume (outward faces, what back-face culling needs) equal to the canoe
-    body plus the topsides prism up to the deck."""
+    body plus the topsides up to the deck."""
     from sailmujoco import hull
 
     p = get_boat(boat)
     verts, faces = mjcf._hull_mesh(p)
     v, f = verts.reshape(-1, 3), faces.reshape(-1, 3)
     signed = np.sum(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]]))) / 6.0
-    expected = hull.volume(p.hull) + hull.waterplane_area(p.hull) * p.hull.freeboard
+    # topsides: every section's trapezoid of height freeboard between half-breadths b and k b
+    topsides = hull.waterplane_area(p.hull) * p.hull.freeboard * 0.5 * (1.0 + p.hull.flare)
+    expected = hull.volume(p.hull) + topsides
     assert signed == pytest.approx(expected, rel=0.03)
