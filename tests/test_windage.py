@@ -32,7 +32,7 @@ def hand(params, u10, along):
     if along == "y":
         hull_area, c = h.length * f, 0.8
     else:
-        hull_area, c = 2.0 * getattr(h, "deck_half_beam", h.half_beam) * f, 0.7
+        hull_area, c = 2.0 * h.half_beam * h.flare * f, 0.7
     rho = params.rho_air
     f_hull = 0.5 * rho * c * hull_area * log_wind(u10, z_hull) ** 2
     f_mast = 0.5 * rho * 1.2 * mast_d * mast_h * log_wind(u10, z_mast) ** 2
@@ -76,7 +76,7 @@ def test_motion_through_still_air_is_drag():
     physics._compute_forces()
     p = physics.params
     h, s = p.hull, p.sail
-    area = 0.7 * 2.0 * getattr(h, "deck_half_beam", h.half_beam) * h.freeboard \
+    area = 0.7 * 2.0 * h.half_beam * h.flare * h.freeboard \
         + 1.2 * 0.012 * s.luff * (s.masthead_height - h.freeboard)
     assert physics.force_terms()["windage"][0] == pytest.approx(-0.5 * p.rho_air * area * 25.0, rel=1e-9)
 

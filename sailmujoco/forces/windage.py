@@ -52,7 +52,7 @@ def windage_geometry(params) -> dict:
     """Drag areas (m^2) and centroids (body frame, m) of the topsides and the mast."""
     h = params.hull
     s = params.sail
-    deck_half_beam = getattr(h, "deck_half_beam", h.half_beam)
+    deck_half_beam = h.half_beam * h.flare  # the deck's midship half-breadth (hull.py)
     mast_length = s.masthead_height - h.freeboard
     diameter = MAST_DIAMETER_PER_LUFF * s.luff
     return {
