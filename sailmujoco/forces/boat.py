@@ -230,8 +230,8 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
                                                  cd_max, match_angle, thickness, alpha_grid, log_re_grid,
                                                  cl_table, cd_table)
     else:
-        c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness, alpha_grid,
-                                          log_re_grid, cl_table, cd_table)
+        c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness,
+                                          alpha_grid, log_re_grid, cl_table, cd_table)
     fc, fn = lift_drag_components(wc, wn, speed, 0.5 * rho * speed * speed * area, c_l, c_d)
     foil_world_force(fc, fn, chord, normal, force)
     return alpha, speed, c_l
