@@ -23,13 +23,15 @@ from sailmujoco.physics import BoatPhysics, ForceSwitches
 N_STATES = 40
 
 
-def evaluate(boat: str, hydrostatics: str, seed: int) -> dict:
+def evaluate(boat: str, hydrostatics: str, seed: int, foils: str = "paper",
+             keel_downwash: bool = False) -> dict:
     """Forces for N_STATES random states (the same states in any process)."""
     rng = np.random.default_rng(seed)
     wind = WindConfig(speed=9.0, direction_from=1.0, seed=seed, current_east=0.3,
                       current_north=-0.2)
     physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics,
-                                                                     windage=True))
+                                                                     windage=True, foils=foils,
+                                                                     keel_downwash=keel_downwash))
     d = physics.data.ptr
     out = {"terms": [], "qfrc": [], "madd": [], "diag": [], "status": []}
     for _ in range(N_STATES):
@@ -49,13 +51,17 @@ def evaluate(boat: str, hydrostatics: str, seed: int) -> dict:
     return out
 
 
-@pytest.mark.parametrize("boat,hydrostatics", [("wille_yacht", "geometric"),
-                                               ("saoud_robot", "paper")])
-def test_compiled_equals_interpreted(boat, hydrostatics, tmp_path):
-    fast = evaluate(boat, hydrostatics, seed=21)
+# the finite-wing foils and the keel's downwash (issue 16) in one more case
+@pytest.mark.parametrize("boat,hydrostatics,foils,keel_downwash",
+                         [("wille_yacht", "geometric", "paper", False),
+                          ("saoud_robot", "paper", "paper", False),
+                          ("wille_yacht", "geometric", "finite", True)])
+def test_compiled_equals_interpreted(boat, hydrostatics, foils, keel_downwash, tmp_path):
+    fast = evaluate(boat, hydrostatics, 21, foils, keel_downwash)
     script = (f"import json, sys; sys.path.insert(0, {str(Path(__file__).parent)!r});"
               f"from test_fast_path import evaluate;"
-              f"json.dump(evaluate({boat!r}, {hydrostatics!r}, 21), open({str(tmp_path / 'r.json')!r}, 'w'))")
+              f"json.dump(evaluate({boat!r}, {hydrostatics!r}, 21, {foils!r}, {keel_downwash!r}),"
+              f" open({str(tmp_path / 'r.json')!r}, 'w'))")
     env = dict(os.environ, NUMBA_DISABLE_JIT="1")
     subprocess.run([sys.executable, "-c", script], check=True, env=env, timeout=600, cwd=tmp_path)
     reference = json.loads((tmp_path / "r.json").read_text())
