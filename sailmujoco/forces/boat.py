@@ -24,10 +24,22 @@ from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
 from .damping import hull_damping
 from .foil import (
-    flat_sail_force,
+    FB_DOWNWASH_GAIN,
+    FB_KEEL_AR,
+    FB_KEEL_CD_MAX,
+    FB_KEEL_RATIO,
+    FB_MATCH_ANGLE,
+    FB_RUDDER_AR,
+    FB_RUDDER_CD_MAX,
+    FB_RUDDER_RATIO,
+    FB_SAIL_CD_MAX,
+    FB_SAIL_SLOPE,
+    finite_hydrofoil_coefficients,
     foil_world_force,
     hydrofoil_coefficients,
     lift_drag_components,
+    pack_foil_block,
+    sail_force,
     section_flow,
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
@@ -143,6 +155,8 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     block = pack_resistance(delft_hull(h), p.rho_water, GRAVITY)
     P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + block.size] = block
     P[P_FINITE_FOILS] = float(foils == "finite")
+    block = pack_foil_block(p)
+    P[P_FOIL_BLOCK:P_FOIL_BLOCK + block.size] = block
     P[P_KEEL_DOWNWASH] = float(keel_downwash)
     P[P_ON_WINDAGE] = float(windage)
     pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
@@ -187,8 +201,9 @@ def _point_flow(fluid_body, v, w, point, extra, out):
 
 @kernel(inline=True)  # called twice per step: inlined, it costs what the two blocks did
 def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rho, nu, current_b, v, w,
-                    alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force):
-    """Lift and drag of a keel or rudder (Wille eqs. 30-36): (alpha, speed); the force into ``force``.
+                    alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force,
+                    finite, lift_ratio, aspect_ratio_e, cd_max, match_angle, downwash):
+    """Lift and drag of a keel or rudder (Wille eqs. 30-36): (alpha, speed, C_L); the force into ``force``.
 
     The foil stands at (x, 0, z) in the body frame, turned by ``angle`` [rad] about -z (the
     rudder's sigma; 0 for the keel): chord (cos, -sin, 0), normal (sin, cos, 0). The flow is the
@@ -197,6 +212,12 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
     for the aspect ratio (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`). ``point``,
     ``flow``, ``chord``, ``normal`` are work arrays (3,), left holding this foil's values;
     ``zero3`` is a zero vector (no point velocity beyond the hull's).
+
+    ``finite`` picks :func:`sailmujoco.forces.foil.finite_hydrofoil_coefficients` (slope ratio
+    ``lift_ratio`` = a/a0, effective aspect ratio, Viterna-Corrigan C_D,max, matching angle).
+    ``downwash`` [rad], when not 0, turns the inflow about the span by that angle against the
+    angle of attack (the keel's downwash at the rudder): alpha -> alpha - downwash, same speed;
+    lift and drag follow the turned flow. The returned alpha is the turned one.
     """
     point[0], point[1], point[2] = x, 0.0, z
     _point_flow(current_b, v, w, point, zero3, flow)
@@ -204,11 +225,19 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
     chord[0], chord[1], chord[2] = c, -s, 0.0
     normal[0], normal[1], normal[2] = s, c, 0.0
     wc, wn, speed, alpha = section_flow(flow, chord, normal)
-    c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness, alpha_grid,
-                                      log_re_grid, cl_table, cd_table)
+    if downwash != 0.0:
+        alpha = alpha - downwash
+        wc, wn = -speed * math.cos(alpha), -speed * math.sin(alpha)  # alpha = atan2(-wn, -wc)
+    if finite:
+        c_l, c_d = finite_hydrofoil_coefficients(alpha, speed * chord_length / nu, lift_ratio, aspect_ratio_e,
+                                                 cd_max, match_angle, thickness, alpha_grid, log_re_grid,
+                                                 cl_table, cd_table)
+    else:
+        c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness,
+                                          alpha_grid, log_re_grid, cl_table, cd_table)
     fc, fn = lift_drag_components(wc, wn, speed, 0.5 * rho * speed * speed * area, c_l, c_d)
     foil_world_force(fc, fn, chord, normal, force)
-    return alpha, speed
+    return alpha, speed, c_l
 
 
 @kernel
@@ -256,20 +285,28 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         nu_r[3 + i] = w[i]
 
     # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
+    finite = P[P_FINITE_FOILS] > 0.0
+    fb = P_FOIL_BLOCK
+    keel_lift = 0.0
     if P[P_ON_KEEL] > 0.0:
-        alpha, speed = hull_foil_force(0.0, P[P_KEEL_X], P[P_KEEL_Z], P[P_KEEL_CHORD], P[P_KEEL_AR],
-                                       P[P_KEEL_TC], P[P_KEEL_AREA], P[P_RHO_W], P[P_NU_W], current_b, v, w,
-                                       alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow,
-                                       chord, normal, force)
+        alpha, speed, keel_lift = hull_foil_force(
+            0.0, P[P_KEEL_X], P[P_KEEL_Z], P[P_KEEL_CHORD], P[P_KEEL_AR], P[P_KEEL_TC], P[P_KEEL_AREA],
+            P[P_RHO_W], P[P_NU_W], current_b, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
+            flow, chord, normal, force, finite, P[fb + FB_KEEL_RATIO], P[fb + FB_KEEL_AR],
+            P[fb + FB_KEEL_CD_MAX], P[fb + FB_MATCH_ANGLE], 0.0)
         _accumulate(terms, T_KEEL, force, point)
         diag[D_ALPHA_KEEL], diag[D_SPEED_KEEL] = alpha, speed
 
     # ---- rudder: turns by sigma about -z through its CP (Wille eqs. 34-36) ----
     if P[P_ON_RUDDER] > 0.0:
-        alpha, speed = hull_foil_force(qpos[idx[0]], P[P_RUD_X], P[P_RUD_Z], P[P_RUD_CHORD], P[P_RUD_AR],
-                                       P[P_RUD_TC], P[P_RUD_AREA], P[P_RHO_W], P[P_NU_W], current_b, v, w,
-                                       alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow,
-                                       chord, normal, force)
+        # the keel's downwash at the rudder, from the keel's C_L of this same call:
+        # epsilon = k C_L,keel / (pi A_e,keel) (forces/foil.py, downwash_factor); 0 when off
+        downwash = P[fb + FB_DOWNWASH_GAIN] * keel_lift if P[P_KEEL_DOWNWASH] > 0.0 else 0.0
+        alpha, speed, _ = hull_foil_force(
+            qpos[idx[0]], P[P_RUD_X], P[P_RUD_Z], P[P_RUD_CHORD], P[P_RUD_AR], P[P_RUD_TC], P[P_RUD_AREA],
+            P[P_RHO_W], P[P_NU_W], current_b, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
+            flow, chord, normal, force, finite, P[fb + FB_RUDDER_RATIO], P[fb + FB_RUDDER_AR],
+            P[fb + FB_RUDDER_CD_MAX], P[fb + FB_MATCH_ANGLE], downwash)
         _accumulate(terms, T_RUDDER, force, point)
         diag[D_ALPHA_RUDDER], diag[D_SPEED_RUDDER] = alpha, speed
 
@@ -290,9 +327,11 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         _point_flow(wind_b, v, w, point, extra, flow)
         diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
-        speed, alpha, c_n, c_t = flat_sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION],
-                                                 P[P_STALL], P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA],
-                                                 chord, normal, force)
+        # Saoud's C_N (slope 0 selects it) or the finite wing's (forces/foil.py)
+        slope = P[fb + FB_SAIL_SLOPE] if finite else 0.0
+        speed, alpha, c_n, c_t = sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
+                                            P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA], slope,
+                                            P[fb + FB_SAIL_CD_MAX], chord, normal, force)
         _accumulate(terms, T_SAIL, force, point)
         # moment about the hinge axis (-z): -(arm x F)_z
         sail_hinge = -(arm_x * force[1] - arm_y * force[0])
