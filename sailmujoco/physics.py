@@ -102,12 +102,14 @@ class ForceSwitches:
     damping on the vertical motion) or 'body' (on body w and q); ``restoring_axes``
     'horizontal' (paper restoring moments about level axes) or 'body'.
 
-    The boat as built (issue 16), each with the papers' form as its alternative:
-    ``resistance`` 'friction' (ITTC friction, Wille eq. 15) or 'dsyhs' (plus the Delft series'
-    residuary resistance, forces/resistance.py); ``foils`` 'paper' (Saoud's sail polynomial,
-    Wille eq. 23) or 'finite' (finite-wing lift slope and 3-D post-stall, forces/foil.py);
-    ``keel_downwash`` (the keel's downwash at the rudder); ``windage`` (air drag of hull and
-    rig, forces/windage.py).
+    The boat as built (issue 16): the defaults add what the papers leave out, each with the
+    papers' form as its alternative: ``resistance`` 'dsyhs' (ITTC friction plus the Delft
+    series' residuary resistance, forces/resistance.py) or 'friction' (Wille eq. 15 alone);
+    ``foils`` 'finite' (finite-wing lift slope and 3-D post-stall, forces/foil.py) or 'paper'
+    (Saoud's sail polynomial, Wille eq. 23 on the 2-D table); ``keel_downwash`` True (the
+    keel's downwash at the rudder) or False; ``windage`` True (air drag of topsides and mast,
+    forces/windage.py) or False. The paper worlds (reference/) keep the papers' forms whatever
+    these say.
     """
 
     hydrostatics: str = "geometric"
@@ -120,10 +122,10 @@ class ForceSwitches:
     added_mass_coupling: str = "manoeuvring"
     vertical_damping: str = "world"
     restoring_axes: str = "horizontal"
-    resistance: str = "friction"
-    foils: str = "paper"
-    keel_downwash: bool = False
-    windage: bool = False
+    resistance: str = "dsyhs"
+    foils: str = "finite"
+    keel_downwash: bool = True
+    windage: bool = True
 
 
 def _entry_point(dispatcher):

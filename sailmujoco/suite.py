@@ -36,8 +36,8 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
          sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
          paper_model: str = "paper", sail_tangential: bool = True,
          added_mass_coupling: str = "manoeuvring", vertical_damping: str = "world",
-         restoring_axes: str = "horizontal", resistance: str = "friction",
-         foils: str = "paper", keel_downwash: bool = False, windage: bool = False,
+         restoring_axes: str = "horizontal", resistance: str = "dsyhs",
+         foils: str = "finite", keel_downwash: bool = True, windage: bool = True,
          forces: ForceSwitches | None = None, params=None,
          boat_options: dict | None = None, **task_options) -> SailEnvironment:
     """Build an environment.
@@ -62,10 +62,10 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         Hydrodynamic modelling forms (:class:`sailmujoco.physics.ForceSwitches`); the defaults
         are the models, the alternatives the forms they replaced, kept to measure the effect.
     resistance, foils, keel_downwash, windage
-        The boat as built (:class:`sailmujoco.physics.ForceSwitches`): ``resistance``
-        "friction" (Wille eq. 15) or "dsyhs" (plus Delft residuary resistance); ``foils``
-        "paper" or "finite" (finite-wing lift slope, 3-D post-stall); ``keel_downwash`` and
-        ``windage`` on/off.
+        The boat as built (:class:`sailmujoco.physics.ForceSwitches`), MuJoCo world only:
+        ``resistance`` "dsyhs" (friction plus Delft residuary resistance) or "friction" (Wille
+        eq. 15); ``foils`` "finite" (finite-wing lift slope, 3-D post-stall) or "paper";
+        ``keel_downwash`` and ``windage`` on (default) or off.
     boat_options : dict, optional
         Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
     params : BoatParams, optional

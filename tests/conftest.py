@@ -18,10 +18,14 @@ def load(boat="wille_yacht", *, wind=CALM, sail_mode="actuated", dofs=6, **switc
                             dofs=dofs)
 
 
+# The papers' forms of the four issue-16 switches (the defaults are the boat as built)
+PAPER_FORMS = dict(resistance="friction", foils="paper", keel_downwash=False, windage=False)
+
+
 def only_hull(boat="wille_yacht", hydrostatics="off", **extra):
-    """The bare hull: no foils, no damping; added mass on unless switched off."""
+    """The bare hull: no foils, no damping, no windage; added mass on unless switched off."""
     kwargs = dict(hydrostatics=hydrostatics, sail=False, keel=False, rudder=False,
-                  damping=False)
+                  damping=False, windage=False)
     kwargs.update(extra)
     return load(boat, **kwargs)
 

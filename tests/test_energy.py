@@ -63,7 +63,7 @@ def free_boat(boat, hydrostatics):
     """The undamped free boat: buoyancy and added mass only, lossless servo springs."""
     physics = BoatPhysics.load(boat, wind=CALM, forces=ForceSwitches(
         hydrostatics=hydrostatics, sail=False, keel=False, rudder=False, damping=False,
-        added_mass=True))
+        added_mass=True, windage=False))
     m = physics.model.ptr
     m.actuator_biasprm[:, 2] = 0.0  # kv = 0: the servos keep their spring, lose their damper
     return physics

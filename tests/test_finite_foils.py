@@ -214,7 +214,7 @@ def test_paper_sail_force_is_saoud_polynomial():
 
 
 def test_paper_keel_lift_is_eq_23_in_the_kernel():
-    physics = load("wille_yacht", hydrostatics="paper", sail=False, rudder=False)  # foils="paper"
+    physics = load("wille_yacht", hydrostatics="paper", sail=False, rudder=False, foils="paper")
     p = physics.params
     u = 1e6 * p.nu_water / p.keel.chord
     beta = math.radians(5.0)  # sliding to port: alpha = 5 deg, a grid point of the table
@@ -237,7 +237,7 @@ def downwash_state(physics, leeway_deg=4.0, speed=3.0):
 @pytest.mark.parametrize("foils", ["finite", "paper"])
 def test_downwash_turns_the_rudder_inflow_by_epsilon(foils):
     kw = dict(hydrostatics="paper", sail=False, foils=foils)
-    off, on = load("wille_yacht", **kw), load("wille_yacht", keel_downwash=True, **kw)
+    off, on = load("wille_yacht", keel_downwash=False, **kw), load("wille_yacht", keel_downwash=True, **kw)
     for physics in (off, on):
         downwash_state(physics)
     p = on.params
@@ -261,7 +261,7 @@ def test_downwash_turns_the_rudder_inflow_by_epsilon(foils):
 
 def test_downwash_off_or_without_keel_leaves_the_rudder_as_before():
     """With the switch off the rudder force is the paper's: eq. 23 at the geometric inflow."""
-    physics = load("wille_yacht", hydrostatics="paper", sail=False)
+    physics = load("wille_yacht", hydrostatics="paper", sail=False, foils="paper", keel_downwash=False)
     downwash_state(physics)
     p = physics.params
     speed = 3.0
@@ -275,7 +275,8 @@ def test_downwash_off_or_without_keel_leaves_the_rudder_as_before():
     assert f @ np.cross([0, 0, 1], w_hat) == pytest.approx(q_area * c_l, rel=1e-12)
     assert f @ w_hat == pytest.approx(q_area * c_d, rel=1e-12)
     # switch on but no keel: no keel lift, no downwash
-    a = load("wille_yacht", hydrostatics="paper", sail=False, keel=False, keel_downwash=True)
+    a = load("wille_yacht", hydrostatics="paper", sail=False, keel=False, keel_downwash=True,
+             foils="paper")
     downwash_state(a)
     assert np.array_equal(a.force_term("rudder"), physics.force_term("rudder"))
 

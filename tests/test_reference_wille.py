@@ -5,7 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from conftest import CALM
+from conftest import CALM, PAPER_FORMS
 
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.frames import wrap_angle
@@ -35,7 +35,7 @@ def four_dof_params():
 def run_both(model):
     p = four_dof_params()
     wind = WindConfig(speed=6.0, direction_from=math.radians(10.0), seed=2)  # gusts + wander on
-    switches = ForceSwitches(hydrostatics="paper")
+    switches = ForceSwitches(hydrostatics="paper", **PAPER_FORMS)
     mujoco_boat = BoatPhysics.load(params=p, wind=wind, forces=switches, dofs=4)
     paper = Wille4DOF(params=p, wind=wind, switches=switches, model=model)
     errors = []
@@ -79,7 +79,7 @@ def test_identical_state_gives_identical_forces_and_accelerations():
 
     p = four_dof_params()
     wind = WindConfig(speed=6.0, direction_from=math.radians(10.0), gusts=False, wander=False)
-    switches = ForceSwitches(hydrostatics="paper")
+    switches = ForceSwitches(hydrostatics="paper", **PAPER_FORMS)
     boat = BoatPhysics.load(params=p, wind=wind, forces=switches, dofs=4)
     # one stage, so the qacc left after step(1) is the start state's (RK4 leaves its last
     # stage's, at another state)

@@ -150,7 +150,7 @@ def test_boat_kernel_adds_it_to_the_damping_term_only_when_switched_on():
 def test_terminal_speed_under_constant_thrust():
     thrust = 700.0  # N: lands the hull between Fn 0.40 and 0.45, on the wave-making wall
     physics = load("wille_yacht", hydrostatics="geometric", sail=False, keel=False, rudder=False,
-                   added_mass=False, resistance="dsyhs")  # as tests/test_terminal_speed.py
+                   added_mass=False, resistance="dsyhs", windage=False)  # as test_terminal_speed
     p = physics.params
     h = p.hull
     physics.set_external_wrench([thrust, 0, 0, 0, 0, 0])

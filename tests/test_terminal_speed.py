@@ -14,7 +14,7 @@ def test_terminal_speed_matches_ittc_balance(boat, thrust):
     # effect, seen here after ~50 s). The steady surge balance does not involve added mass,
     # so it is switched off to keep the hull straight.
     physics = load(boat, hydrostatics="geometric", sail=False, keel=False, rudder=False,
-                   added_mass=False)
+                   added_mass=False, resistance="friction", windage=False)  # ITTC alone
     p = physics.params
     physics.set_external_wrench([thrust, 0, 0, 0, 0, 0])
     physics.step(30000)  # 150 s, > 10 time constants

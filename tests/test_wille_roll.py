@@ -76,7 +76,7 @@ def test_relative_force_matches_physics_kernel():
     This checks the beta_ws mapping (FRD eq. 27 from our FLU flow) end to end.
     """
     physics = load("wille_yacht", wind=WindConfig(speed=8.0, direction_from=0.0, gusts=False,
-                                                  wander=False))
+                                                  wander=False), foils="paper")  # the tables' sail
     m, d = physics.model.ptr, physics.data.ptr
     site = m.site("sail_ce").id
     betas = []

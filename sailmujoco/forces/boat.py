@@ -106,8 +106,8 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
                     added_mass: bool = True, sail_tangential: bool = True, wind=None,
                     wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
                     vertical_damping: str = "world", restoring_axes: str = "horizontal",
-                    resistance: str = "friction", foils: str = "paper", keel_downwash: bool = False,
-                    windage: bool = False) -> np.ndarray:
+                    resistance: str = "dsyhs", foils: str = "finite", keel_downwash: bool = True,
+                    windage: bool = True) -> np.ndarray:
     """Flatten boat parameters and switches into the array the kernel reads."""
     for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
                                  ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
