@@ -2,9 +2,10 @@
 
 The paper's controller (``viel``: rudder eqs. 10-11, adaptive sail 12-17, speed 18, strategy
 19-22; §5.1: d_M = 14 m, d_T = 7 m, k_s = 5, k_p = 1, k_v = 8, ε = 5°) sails the
-``position_keeping`` task (target p_T = (0, 0), 200 s, wind cases 1-6 of §5.1) in three
-worlds: Viel's own 3-DOF model (``paper``, Table 1 boat) and the two 6-DOF MuJoCo boats,
-``wille_yacht`` (8.8 m, 1600 kg) and ``saoud_robot`` (1.5 m, 15 kg). The paper's claim: "the
+``position_keeping`` task (target p_T = (0, 0), 200 s, wind cases 1-6 of §5.1) in four
+worlds: Viel's own 3-DOF model (``paper``, Table 1 boat) and three 6-DOF MuJoCo boats:
+``viel_boat`` (Table 1's 300 kg boat in 6-DOF, the like-for-like column), ``wille_yacht``
+(8.8 m, 1600 kg) and ``saoud_robot`` (1.5 m, 15 kg). The paper's claim: "the
 distance between sailboat and target remains lower than 6.4 m after [it] has entered the
 target area".
 
@@ -42,7 +43,7 @@ from sailmujoco.tasks.position import PositionKeeping, VielPhysics
 from .common import Progress, Report, relative_difference, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "viel_fig3"
-TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, three worlds"
+TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, four worlds"
 # the scenario `sailmujoco study viel_fig3 --video` films
 VIDEO = {"boat": "saoud_robot", "task": "position_keeping", "controller": "viel",
          "seconds": 120.0, "camera": "top", "case": 2}
@@ -62,10 +63,13 @@ UNDER_WAY = {"heading_deg": 135.0, "surge": 1.5}  # compass deg, m/s: the first 
 TRAJECTORY_RATE = 2.0  # Hz, samples kept for the figures and the stop-based measures
 
 # world key -> (boat, world) for suite.load; the paper world's boat only names the run
-WORLDS = {"paper": ("wille_yacht", "paper"), "wille_yacht": ("wille_yacht", "mujoco"),
-          "saoud_robot": ("saoud_robot", "mujoco")}
-LABELS = {"paper": "paper world (Viel 3-DOF)", "wille_yacht": "wille_yacht (6-DOF, 8.8 m)",
-          "saoud_robot": "saoud_robot (6-DOF, 1.5 m)"}
+WORLDS = {"paper": ("wille_yacht", "paper"), "viel_boat": ("viel_boat", "mujoco"),
+          "wille_yacht": ("wille_yacht", "mujoco"), "saoud_robot": ("saoud_robot", "mujoco")}
+LABELS = {"paper": "paper world (Viel 3-DOF)", "viel_boat": "viel_boat (6-DOF, Table 1 boat, 4 m)",
+          "wille_yacht": "wille_yacht (6-DOF, 8.8 m)", "saoud_robot": "saoud_robot (6-DOF, 1.5 m)"}
+SWEPT = ("paper", "wille_yacht", "saoud_robot")  # run on the sweep engine; viel_boat runs through
+# simulate(), which also samples what the boat does (speed, apparent wind, rudder, heel, mode)
+IRONS_AWA_DEG, IRONS_SURGE = 35.0, 0.5  # deg, m/s: "in irons" = head to wind and (nearly) stopped
 VARIANT_LABELS = {
     "baseline": "as the paper (dt 0.01 s, eqs. 7-8 linear in speed)",
     "dt_0.1": "control period 0.1 s (the suite's)",
@@ -135,13 +139,21 @@ def simulate(spec: dict) -> dict:
     timestep = env.reset()
     every = max(1, int(round(1.0 / (TRAJECTORY_RATE * s["dt"]))))
     t, x, y, step = [], [], [], 0
+    samples = {"surge": [], "awa": [], "rudder": [], "heel": [], "mode": []}
     while not timestep.last():
-        timestep = env.step(policy(timestep))
+        action = policy(timestep)
+        timestep = env.step(action)
         step += 1
         if step % every == 0:
-            t.append(float(timestep.observation["true_state"]["time"]))
-            x.append(float(timestep.observation["position"][0]))
-            y.append(float(timestep.observation["position"][1]))
+            o = timestep.observation
+            t.append(float(o["true_state"]["time"]))
+            x.append(float(o["position"][0]))
+            y.append(float(o["position"][1]))
+            samples["surge"].append(float(o["true_state"]["u"]))
+            samples["awa"].append(float(o["apparent_wind_angle"]))
+            samples["rudder"].append(float(action[0]))
+            samples["heel"].append(float(o["heel"]))
+            samples["mode"].append(policy.info.get("mode", ""))
     metrics = env.task.metrics()
     out = {**spec, "d_T": d_t, "d_M": d_m, "status": "stopped" if metrics.get("stopped") else "ok",
            **{k: float(metrics[k]) for k in ("entered_at", "max_distance_after_entry",
@@ -149,7 +161,34 @@ def simulate(spec: dict) -> dict:
                                               "min_distance")},
            "trajectory": {"t": t, "x": x, "y": y}, "wall_time": clock()}
     out.update(after_entry(np.array(t), np.hypot(np.array(x), np.array(y)), out["entered_at"], d_t))
+    out.update(behaviour(np.array(t), samples, out["entered_at"], math.radians(float(env.action_spec().maximum[0]))))
     return out
+
+
+def behaviour(t: np.ndarray, samples: dict, entered_at: float, rudder_max: float) -> dict:
+    """What the boat did before it entered the target area (the whole run if it never did).
+
+    ``samples``: surge [m/s], apparent wind angle [rad], rudder [rad], heel [rad], controller
+    mode, at times ``t`` [s]. Returns ``irons_fraction`` (head to wind, |AWA| < 35 deg, and
+    surge < 0.5 m/s), ``rudder_stop_fraction`` (rudder within 1 deg of its stop), the mean
+    surge [m/s], the largest |heel| [deg] and the controller mode most often in use.
+    """
+    nan = float("nan")
+    if t.size == 0:
+        return {"irons_fraction": nan, "rudder_stop_fraction": nan, "surge_mean": nan, "heel_max_deg": nan,
+                "main_mode": ""}
+    before = t < entered_at if math.isfinite(entered_at) else np.ones(t.size, dtype=bool)
+    if not before.any():
+        before = np.ones(t.size, dtype=bool)
+    surge = np.asarray(samples["surge"])[before]
+    awa = np.abs(np.asarray(samples["awa"]))[before]
+    rudder = np.abs(np.asarray(samples["rudder"]))[before]
+    modes = [m for m, b in zip(samples["mode"], before, strict=True) if b]
+    return {"irons_fraction": float(np.mean((awa < math.radians(IRONS_AWA_DEG)) & (surge < IRONS_SURGE))),
+            "rudder_stop_fraction": float(np.mean(rudder > rudder_max - math.radians(1.0))),
+            "surge_mean": float(surge.mean()),
+            "heel_max_deg": math.degrees(float(np.max(np.abs(np.asarray(samples["heel"])[before])))),
+            "main_mode": max(set(modes), key=modes.count) if modes else ""}
 
 
 def after_entry(t: np.ndarray, d: np.ndarray, entered_at: float, d_t: float = D_T) -> dict:
@@ -208,7 +247,8 @@ def _variant_specs(cases, switch_starts, duration: float) -> list[dict]:
         for start in switch_starts:
             specs.append({**common, "start": start, "variant": "printed_rudder", "world": "paper",
                           "rudder_law": "printed"})
-        for boat in ("wille_yacht", "saoud_robot"):
+        specs.append({**common, "variant": "baseline", "world": "viel_boat"})  # the Fig. 3 column
+        for boat in ("viel_boat", "wille_yacht", "saoud_robot"):
             specs.append({**common, "variant": "under_way", "world": boat, **UNDER_WAY})
         specs.append({**common, "variant": "under_way_scaled", "world": "wille_yacht", "scale": scale,
                       **UNDER_WAY})
@@ -385,12 +425,12 @@ def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: 
     plt = setup_matplotlib()
     fig, axes = plt.subplots(1, 3, figsize=(17, 4.8))
     cases = sorted(set(main["case"]))
-    width = 0.25
+    width = 0.8 / len(WORLDS)
     for i, key in enumerate(WORLDS):
         rows = main[main["world"] == key].set_index("case")
         values = np.array([rows["max_after_stop"].get(c, np.nan) for c in cases])
         task_metric = np.array([rows["max_distance_after_entry"].get(c, np.nan) for c in cases])
-        pos = np.arange(len(cases)) + (i - 1) * width
+        pos = np.arange(len(cases)) + (i - (len(WORLDS) - 1) / 2) * width
         axes[0].bar(pos, np.nan_to_num(values, nan=0.0), width, label=LABELS[key])
         axes[0].plot(pos, task_metric, "_", color="black", ms=10, mew=2,
                      label="task metric (from the entry crossing)" if i == 0 else None)
@@ -472,6 +512,8 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
         specs = [s for s in specs if not (s.get("variant") in ("dt_0.1", "no_hull_wind") and s["case"] != 1)]
     rows, results, timings = _execute(out, sweeps, specs, serial=smoke or workers == 1,
                                       workers=workers, progress=progress)
+    rows += [r for r in results if r.get("variant") == "baseline"]  # viel_boat's Fig. 3 column
+    results = [r for r in results if r.get("variant") != "baseline"]
 
     # ---- tables
     base = pd.DataFrame(rows)
@@ -528,15 +570,20 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
         "printed_rudder_fraction_below_7m": float((printed["max_distance_after_entry"] < D_T).mean()),
         "wille_yacht_cases_entered": int(main[main["world"] == "wille_yacht"]["entered_at"].notna().sum()),
         "saoud_robot_cases_entered": int(main[main["world"] == "saoud_robot"]["entered_at"].notna().sum()),
+        "viel_boat_cases_entered": int(main[main["world"] == "viel_boat"]["entered_at"].notna().sum()),
         "wall_time_s": wall, "smoke": smoke}
     for key in WORLDS:
         for _, r in main[main["world"] == key].iterrows():
             headline[f"{key}_case{int(r['case'])}_max_after_stop_m"] = float(r["max_after_stop"])
+            headline[f"{key}_case{int(r['case'])}_max_after_entry_m"] = float(r["max_distance_after_entry"])
     for v in ("dt_0.1", "no_hull_wind", "printed_rudder"):
         sel = variants[(variants["variant"] == v) & _is_start(variants["start"], DEFAULT_START)]
         for _, r in sel.iterrows():
             headline[f"{v}_case{int(r['case'])}_max_after_stop_m"] = float(r["max_after_stop"])
-    for boat in ("wille_yacht", "saoud_robot"):
+    for _, r in main[main["world"] == "viel_boat"].iterrows():
+        headline[f"viel_boat_case{int(r['case'])}_irons_fraction"] = float(r["irons_fraction"])
+        headline[f"viel_boat_case{int(r['case'])}_cause"] = _viel_boat_cause(r, variants)
+    for boat in ("viel_boat", "wille_yacht", "saoud_robot"):
         for v in ("under_way", "under_way_scaled"):
             sel = variants[(variants["variant"] == v) & (variants["world"] == boat)]
             for _, r in sel.iterrows():
@@ -592,6 +639,34 @@ def _boat_cause(r, variants: pd.DataFrame, capability: pd.DataFrame) -> str:
     return "enters but cannot stay" + under_note
 
 
+def _viel_boat_cause(r, variants: pd.DataFrame) -> str:
+    """The measured cause for viel_boat in one case, from its samples (:func:`behaviour`)."""
+    case = int(r["case"])
+    under = variants[(variants["variant"] == "under_way") & (variants["world"] == "viel_boat")
+                     & (variants["case"] == case)]
+    under_note = ""
+    if not under.empty:
+        u = under.iloc[0]
+        under_note = ("; started under way (135°, 1.5 m/s): never enters either, closest "
+                      f"{u['min_distance']:.1f} m" if not math.isfinite(u["entered_at"])
+                      else f"; under way: in at {u['entered_at']:.0f} s, max after stop {u['max_after_stop']:.1f} m")
+    if math.isfinite(r["entered_at"]):
+        if r["max_after_stop"] < PAPER_MAX_M:
+            return f"holds the paper's bound (in at {r['entered_at']:.0f} s)"
+        return (f"enters at {r['entered_at']:.0f} s but drifts to {r['max_after_stop']:.1f} m after the stop, "
+                f"{int(r['exits'])} exits")
+    irons, stop = r["irons_fraction"], r["rudder_stop_fraction"]
+    if irons > 0.3:
+        what = (f"never enters: in irons {100 * irons:.0f} % of the run (|AWA| < {IRONS_AWA_DEG:g}°, surge < "
+                f"{IRONS_SURGE:g} m/s; mean surge {r['surge_mean']:.2f} m/s) with the rudder on its stop "
+                f"{100 * stop:.0f} % of the time: the turn from the start heading to the first tack goes "
+                "through the wind and the rudder, whose lift falls with v², cannot bear away")
+    else:
+        what = (f"never enters: sails (mean surge {r['surge_mean']:.2f} m/s, heel up to {r['heel_max_deg']:.0f}°, "
+                f"mostly '{r['main_mode']}') but comes no closer than {r['min_distance']:.1f} m")
+    return what + under_note
+
+
 def _ten_metres_a_second(capability) -> str:
     """What the PID heading-hold check shows of each 6-DOF boat on the 45°-off-the-wind tack in 10 m/s."""
     rows = capability[capability["wind_speed"] == 10.0] if not capability.empty else capability
@@ -629,6 +704,23 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
         f"6.4 m after the stop in {100 * headline['grid_fraction_below_6_4m']:.0f} %. The paper's controller "
         "parameters were not changed.")
 
+    vb = main[main["world"] == "viel_boat"]
+    if not vb.empty:
+        entered = vb[vb["entered_at"].notna()]
+        held = int((entered["max_after_stop"] < PAPER_MAX_M).sum())
+        report.paragraph(
+            "**Like for like in 6-DOF (viel_boat, Viel's Table 1 boat, task start, seed 0): "
+            f"enters the target area in {len(entered)} of {len(vb)} cases**"
+            + (f", and stays below the paper's 6.4 m after the stop in {held} of them"
+               f" (max distance after entry, the task's metric: "
+               + ", ".join(f"case {int(c)} {m:.2f} m" for c, m in zip(entered["case"],
+                                                                      entered["max_distance_after_entry"],
+                                                                      strict=True)) + ")"
+               if len(entered) else "")
+            + ". Per case, what the boat did: "
+            + "; ".join(f"case {int(x['case'])}: {_viel_boat_cause(x, variants)}" for _, x in vb.iterrows())
+            + ".")
+
     report.paragraph("## The measure: 6.4 m is about what happens after the boat has stopped")
     report.paragraph(
         "The boat enters the target area at d = d_T = 7 m, so the task's `max_distance_after_entry` "
@@ -642,7 +734,8 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
     for key in WORLDS:
         for _, r in main[main["world"] == key].iterrows():
             diff = relative_difference(float(r["max_after_stop"]), PAPER_MAX_M)
-            cause = _paper_cause(r, variants) if key == "paper" else _boat_cause(r, variants, capability)
+            cause = (_paper_cause(r, variants) if key == "paper" else _viel_boat_cause(r, variants)
+                     if key == "viel_boat" else _boat_cause(r, variants, capability))
             rows.append({"case": int(r["case"]), "world": LABELS[key], "entered at (s)": _fmt(r["entered_at"]),
                          "max after entry, task (m)": _fmt(r["max_distance_after_entry"], 2),
                          "stop at (s) / d (m)": f"{_fmt(r['stopped_at'], 0)} / {_fmt(r['stop_distance'])}",
@@ -654,6 +747,7 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
     report.table(rows)
     report.figure(figures["paper"], "Paper world: trajectories (target area green, pre-arrival area between "
                                     "the red circles, wind red) and the distance to the target")
+    report.figure(figures["viel_boat"], "viel_boat (6-DOF): Viel's Table 1 boat, like for like")
     report.figure(figures["wille_yacht"], "wille_yacht (6-DOF)")
     report.figure(figures["saoud_robot"], "saoud_robot (6-DOF)")
     report.figure(figures["summary"], "Max distance after the stop: per world; paper world per switch; over "
@@ -726,7 +820,7 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
                        "heading error rms (deg)": _fmt(r["heading_error_rms_deg"])}
                       for _, r in capability.sort_values(["world", "wind_speed"]).iterrows()])
     srows = []
-    for boat in ("wille_yacht", "saoud_robot"):
+    for boat in ("viel_boat", "wille_yacht", "saoud_robot"):
         for v in ("baseline", "under_way", "under_way_scaled"):
             sel = variants[(variants["variant"] == v) & (variants["world"] == boat)].set_index("case")
             if sel.empty:
@@ -785,7 +879,8 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
         + (f" (cluster start {timings['cluster_start_s']:.0f} s, " if "cluster_start_s" in timings else " (")
         + f"sweeps {timings['sweeps_s']:.0f} s, switches after the sweeps {timings['switches_s']:.0f} s). "
         f"{len(grid) + 2 * len(paper)} sweep runs, {len(variants) - len(main) + len(capability)} switch runs. "
-        f"One {duration:g} s run: paper world {per_world['paper']:.1f} s, wille_yacht "
+        f"One {duration:g} s run: paper world {per_world['paper']:.1f} s, viel_boat "
+        f"{per_world['viel_boat']:.1f} s, wille_yacht "
         f"{per_world['wille_yacht']:.1f} s, saoud_robot {per_world['saoud_robot']:.1f} s"
         + (f", paper world at dt = 0.1 s {float(dt_runs.mean()):.1f} s" if len(dt_runs) else "")
         + " (wall per run on a shared machine: includes waiting for a core)."

@@ -8,7 +8,7 @@ import pytest
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
-BOATS = ("wille_yacht", "saoud_robot")
+BOATS = ("wille_yacht", "saoud_robot", "viel_boat")
 CALM = WindConfig(speed=0.0, gusts=False, wander=False)
 
 

@@ -21,8 +21,8 @@ def test_smoke_writes_report_figures_and_data(smoke):
     out, headline = smoke
     report = (out / "report.md").read_text()
     assert "Done-when" in report and "max after stop" in report
-    for name in ("fig3_paper.png", "fig3_wille_yacht.png", "fig3_saoud_robot.png", "max_distance.png",
-                 "six_dof_switches.png"):
+    for name in ("fig3_paper.png", "fig3_viel_boat.png", "fig3_wille_yacht.png", "fig3_saoud_robot.png",
+                 "max_distance.png", "six_dof_switches.png"):
         assert (out / name).stat().st_size > 10_000, name
         assert f"]({name})" in report
     for name in ("summary.csv", "trajectories.csv", "switches.csv", "start_grid.csv",
@@ -53,6 +53,19 @@ def test_smoke_six_dof_findings(smoke):
     # both boats sail 45 deg off a 5 m/s wind far faster than off a 10 m/s one (overpowered)
     for boat in ("wille_yacht", "saoud_robot"):
         assert h[f"{boat}_pid_135deg_5ms_speed"] > 1.5 * h[f"{boat}_pid_135deg_10ms_speed"]
+
+
+def test_smoke_viel_boat_column_reports_a_measured_cause(smoke):
+    out, h = smoke
+    report = (out / "report.md").read_text()
+    assert "Like for like in 6-DOF (viel_boat" in report
+    for case in (1, 2):
+        cause = h[f"viel_boat_case{case}_cause"]
+        assert cause and cause in report
+        entered = math.isfinite(h[f"viel_boat_case{case}_max_after_entry_m"])
+        # a run that never enters says what the boat did, with the measured numbers
+        assert entered or ("never enters" in cause and " m/s" in cause)
+        assert 0.0 <= h[f"viel_boat_case{case}_irons_fraction"] <= 1.0
 
 
 def test_after_entry_measures_from_the_stop():
