@@ -422,9 +422,10 @@ def viel_boat() -> BoatParams:
     keel_span = math.sqrt(keel_ar * keel_area)
     rudder_span = math.sqrt(rudder_ar * rudder_area)
     sail_area = viel_identified_sail_area(rho_air)  # m^2, from p4
-    luff = 7.6  # m: the luff of the flat AR 5 sail of this area (7.64 m, Saoud §VII-A's AR 5,
-    # whose C_N polynomial the force model uses) to 0.1 m, so the MJCF's 6 digits hold the CE
-    sail_ar = luff**2 / sail_area  # -, 4.94
+    luff = 7.65  # m: the luff of the flat AR 5 sail of this area (7.645 m, Saoud §VII-A's AR 5,
+    # whose C_N polynomial the paper-form force model uses), rounded so that the CE height
+    # 0.8 + luff / 3 = 3.35 m is exact in the MJCF's 6 digits
+    sail_ar = luff**2 / sail_area  # -, 5.01
     boom_height = 0.8  # m, guess: boom 0.4 m above the 0.4 m deck
     return BoatParams(
         name="viel_boat",
@@ -465,13 +466,14 @@ def viel_boat() -> BoatParams:
         sail=Sail(area=sail_area, aspect_ratio=sail_ar,
                   mast_x=VIEL_P7,  # m, Viel Table 1 p7 (mast ahead of G)
                   ce_aft=VIEL_P6,  # m, Viel Table 1 p6 (CE behind the mast along the boom)
-                  ce_height=boom_height + luff / 3.0,  # m, 2.4: triangle, CE luff/3 above the boom
+                  ce_height=boom_height + luff / 3.0,  # m, 3.35: triangle, CE luff/3 above the boom
                   mass=10.0,  # kg, guess: a 3.1 m aluminium boom (~6) and an 11.7 m^2 Dacron main (~4)
                   max_angle=math.pi / 2.0,  # Viel §2.1 delta_s,max
                   time_constant=0.5),  # s, T_lambda: Wille's (Viel gives none)
         rho_water=rho,
         rho_air=rho_air,
-        paper_righting="sin_cos",  # Wille eq. 20 for the paper world's 4-DOF (a keelboat)
+        paper_righting="sin",  # Saoud eq. 4, m g GM sin(phi): a ballasted keelboat keeps its
+        # righting arm to large heel, where eq. 20's sin cos peaks at 45 deg and falls to 0 at 90
         sources={"paper": "Viel, Vautier, Wan, Jaulin (2019), Table 1 (p2, p4-p10) and §2.1; "
                           "hull, keel, roll: ours (xml/viel_boat/README.md)"},
     )
