@@ -382,11 +382,12 @@ def viel_boat() -> BoatParams:
     p8 behind G; the sail area from p4 (:func:`viel_identified_sail_area`), the rudder area from
     p5 (:func:`viel_identified_rudder_area`); the hull friction is Wille's eq. 15 with
     k = 0.15 (Viel's p2 is not taken over: it lumps wave resistance); the actuator limits of
-    §2.1 (45 deg rudder, 90 deg sail). Viel's model is planar and gives no hull: length, beam, draft, keel, roll and pitch
-    inertia, GM, added mass and damping are ours, for a ~4 m ballasted dinghy-like keelboat
-    (xml/viel_boat/README.md). Not taken over: p1 (hull windage, a separate force model), p3
-    (Viel's yaw friction p3 omega v: in 6-DOF the keel, rudder and hull damp the yaw), p11 (the
-    rudder brake: in 6-DOF the rudder's own drag brakes the boat).
+    §2.1 (45 deg rudder, 90 deg sail). Viel's model is planar and gives no hull: length, beam,
+    draft, keel, roll and pitch inertia, GM, added mass and damping are ours, for a ~4 m
+    ballasted dinghy-like keelboat (xml/viel_boat/README.md). Not taken over: p1 (hull
+    windage: forces/windage.py, from the boat's dimensions), p3 (Viel's yaw friction p3 omega v:
+    in 6-DOF the keel, rudder and hull damp the yaw), p11 (the rudder brake: in 6-DOF the
+    rudder's own drag brakes the boat).
     """
     mass = VIEL_P9  # kg, Viel Table 1 p9
     rho = c.RHO_WATER  # kg/m^3, sea water (Viel gives none)

