@@ -17,8 +17,11 @@ from sailmujoco import frames, stability
 from sailmujoco.constants import GRAVITY
 from sailmujoco.params import get_boat
 
-PAPER_GM = {"wille_yacht": 2.4, "saoud_robot": 1.0}  # m: Wille Appendix A; Saoud l_phi = 1 m
-PAPER_MASS = {"wille_yacht": 1600.0, "saoud_robot": 15.0}  # kg: Wille Appendix A; Saoud Table I
+# m: Wille Appendix A; Saoud l_phi = 1 m; viel_boat's design GM (Viel's planar model has none:
+# xml/viel_boat/README.md)
+PAPER_GM = {"wille_yacht": 2.4, "saoud_robot": 1.0, "viel_boat": 1.05}
+# kg: Wille Appendix A; Saoud Table I; Viel Table 1 p9
+PAPER_MASS = {"wille_yacht": 1600.0, "saoud_robot": 15.0, "viel_boat": 300.0}
 
 
 def _waterplane_inertia(h, n=(2000, 2000)):

@@ -150,7 +150,7 @@ def _toml(spec):
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nseeds = "0"\n',
      "seeds must be a non-empty list of integers"),
     ('boat = "dinghy"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n',
-     "boat = 'dinghy' is not one of: saoud_robot, wille_yacht"),
+     "boat = 'dinghy' is not one of: saoud_robot, viel_boat, wille_yacht"),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
      '[grid]\n"task.wind_sped" = [1]\n', "unknown task option 'wind_sped'"),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
