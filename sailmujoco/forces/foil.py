@@ -165,13 +165,19 @@ def sail_coefficients(alpha, tangential, suction_efficiency, suction_stall, fric
     False sets C_T = 0 exactly, making the force exactly normal to the sail.
     """
     s = math.sin(alpha)
-    cs = math.cos(alpha)
     c_normal = saoud_normal_coefficient(s)
     if not tangential:
         return c_normal, 0.0
+    return c_normal, tangential_coefficient(c_normal, s, math.cos(alpha), suction_efficiency,
+                                            suction_stall, friction)
+
+
+@kernel
+def tangential_coefficient(c_normal, s, cs, suction_efficiency, suction_stall, friction):
+    """C_T of the flat sail for its C_N at sin(alpha) = s, cos(alpha) = cs (the model of
+    :func:`sail_coefficients`' docstring: recovered suction fading past the stall, friction)."""
     fade = math.exp(-((s / math.sin(suction_stall)) ** 2))
-    c_tangential = suction_efficiency * fade * c_normal * s * cs - 2.0 * friction * cs
-    return c_normal, c_tangential
+    return suction_efficiency * fade * c_normal * s * cs - 2.0 * friction * cs
 
 
 @kernel
@@ -340,13 +346,11 @@ def finite_sail_coefficients(alpha, tangential, suction_efficiency, suction_stal
     stall at ``suction_stall`` (the angle where its leading-edge suction collapses), and
     :func:`sail_coefficients`' tangential model on that C_N (suction share, fade, friction)."""
     s = math.sin(alpha)
-    cs = math.cos(alpha)
     c_normal = finite_sail_normal_coefficient(s, slope, suction_stall, cd_max)
     if not tangential:
         return c_normal, 0.0
-    fade = math.exp(-((s / math.sin(suction_stall)) ** 2))
-    c_tangential = suction_efficiency * fade * c_normal * s * cs - 2.0 * friction * cs
-    return c_normal, c_tangential
+    return c_normal, tangential_coefficient(c_normal, s, math.cos(alpha), suction_efficiency,
+                                            suction_stall, friction)
 
 
 @kernel
