@@ -483,9 +483,15 @@ def findings(table: pd.DataFrame, l_phis, smoke: bool) -> str:
             cause = ("Cause, checked by switching: the heeled sail's weather helm, the yaw moment the "
                      "4-DOF equations drop (Fig. 6 report), not the geometric hull's smaller righting "
                      "moment at large heel.")
+        if off or off_b:
+            held = (f"With the geometric hull S goes off heading 0 at {off} of {len(g)} sailable "
+                    f"angles and Bm at {off_b} (they round up), {fixed}: the 6-DOF miss. {cause}")
+        else:
+            held = (f"With the geometric hull both laws hold heading 0 at all {len(g)} sailable "
+                    "angles (mean |ψ| at most "
+                    f"{max(np.degrees(g['psi_S']).max(), np.degrees(g['psi_Bm']).max()):.0f}°).")
         lines += [(
-            f"*6-DOF, l_φ = 0.1 m.* With the geometric hull S goes off heading 0 at {off} of {len(g)} "
-            f"sailable angles and Bm at {off_b} (they round up), {fixed}: the 6-DOF miss. {cause} "
+            f"*6-DOF, l_φ = 0.1 m.* {held} "
             f"With eq. 4 in the 6-DOF world S holds heading at {held4} of {len(g)} angles and "
             f"makes {eq4.min():.2f}-{eq4.max():.2f} m/s, at least as fast as Bm (to 1 %) at "
             f"{int((g['S_eq4'] >= (1 - TIE) * g['Bm_eq4']).sum())} of {len(g)} angles."), ""]

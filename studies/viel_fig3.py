@@ -139,7 +139,7 @@ def simulate(spec: dict) -> dict:
     timestep = env.reset()
     every = max(1, int(round(1.0 / (TRAJECTORY_RATE * s["dt"]))))
     t, x, y, step = [], [], [], 0
-    samples = {"surge": [], "awa": [], "rudder": [], "heel": [], "mode": []}
+    samples = {"surge": [], "sway": [], "awa": [], "rudder": [], "heel": [], "sail": [], "mode": []}
     while not timestep.last():
         action = policy(timestep)
         timestep = env.step(action)
@@ -150,6 +150,8 @@ def simulate(spec: dict) -> dict:
             x.append(float(o["position"][0]))
             y.append(float(o["position"][1]))
             samples["surge"].append(float(o["true_state"]["u"]))
+            samples["sway"].append(float(o["true_state"]["v"]))
+            samples["sail"].append(float(action[1]))
             samples["awa"].append(float(o["apparent_wind_angle"]))
             samples["rudder"].append(float(action[0]))
             samples["heel"].append(float(o["heel"]))
@@ -162,7 +164,32 @@ def simulate(spec: dict) -> dict:
            "trajectory": {"t": t, "x": x, "y": y}, "wall_time": clock()}
     out.update(after_entry(np.array(t), np.hypot(np.array(x), np.array(y)), out["entered_at"], d_t))
     out.update(behaviour(np.array(t), samples, out["entered_at"], math.radians(float(env.action_spec().maximum[0]))))
+    out.update(drift_after_stop(np.array(t), np.array(x), np.array(y), samples, out["stopped_at"],
+                                task.wind().direction_from))
     return out
+
+
+def drift_after_stop(t: np.ndarray, x: np.ndarray, y: np.ndarray, samples: dict, stopped_at: float,
+                     direction_from: float) -> dict:
+    """How the boat moves once it has stopped in the target area: its mean velocity over ground
+    (displacement / time from the stop to the end) and the part of it downwind [m/s], and its
+    mean surge, mean |sway| [m/s] and mean |sail command| [deg] over that time. nan if it never
+    stopped."""
+    nan = float("nan")
+    keys = ("drift_speed", "drift_downwind", "surge_after_stop", "sway_after_stop", "sail_after_stop_deg")
+    if not math.isfinite(stopped_at) or t.size < 2:
+        return dict.fromkeys(keys, nan)
+    after = t >= stopped_at - 1e-9
+    if after.sum() < 2:
+        return dict.fromkeys(keys, nan)
+    ta, xa, ya = t[after], x[after], y[after]
+    elapsed = ta[-1] - ta[0]
+    vx, vy = (xa[-1] - xa[0]) / elapsed, (ya[-1] - ya[0]) / elapsed
+    downwind = (-math.sin(direction_from), -math.cos(direction_from))  # where the wind blows to
+    return {"drift_speed": float(math.hypot(vx, vy)), "drift_downwind": float(vx * downwind[0] + vy * downwind[1]),
+            "surge_after_stop": float(np.mean(np.asarray(samples["surge"])[after])),
+            "sway_after_stop": float(np.mean(np.abs(np.asarray(samples["sway"])[after]))),
+            "sail_after_stop_deg": math.degrees(float(np.mean(np.abs(np.asarray(samples["sail"])[after]))))}
 
 
 def behaviour(t: np.ndarray, samples: dict, entered_at: float, rudder_max: float) -> dict:
@@ -525,7 +552,8 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                          ignore_index=True)
     columns = ["variant", "world", "case", "start", "seed", "d_T", "entered_at", "max_distance_after_entry",
                "mean_distance_after_entry", "stopped_at", "stop_distance", "max_after_stop", "min_distance",
-               "final_distance", "to_paper_bound_s", "to_first_exit_s", "exits", "wall_time"]
+               "final_distance", "to_paper_bound_s", "to_first_exit_s", "exits", "drift_speed",
+               "drift_downwind", "wall_time"]
     main[columns[1:]].to_csv(out / "summary.csv", index=False, float_format="%.4g")
     variants[columns].to_csv(out / "switches.csv", index=False, float_format="%.4g")
     grid[columns[1:]].to_csv(out / "start_grid.csv", index=False, float_format="%.4g")
@@ -653,8 +681,22 @@ def _viel_boat_cause(r, variants: pd.DataFrame) -> str:
     if math.isfinite(r["entered_at"]):
         if r["max_after_stop"] < PAPER_MAX_M:
             return f"holds the paper's bound (in at {r['entered_at']:.0f} s)"
+        drift = ""
+        if math.isfinite(r.get("drift_speed", float("nan"))):
+            surge, sway = r["surge_after_stop"], r["sway_after_stop"]
+            way = ("downwind" if r["drift_downwind"] > 0.5 * r["drift_speed"] else
+                   "upwind" if r["drift_downwind"] < -0.5 * r["drift_speed"] else "across the wind")
+            drift = (f": from the stop on it makes {r['drift_speed']:.2f} m/s over ground, mostly {way}, "
+                     f"with surge {surge:.2f} m/s, sideways {sway:.2f} m/s and the sail eased to "
+                     f"{r['sail_after_stop_deg']:.0f}° on average")
+            if sway > 0.3 * abs(surge):
+                leeway = math.degrees(math.atan2(sway, abs(surge)))
+                drift += (f"; the slow boat slips sideways at {leeway:.0f}° of leeway, where Viel's eq. 5 "
+                          "has no sail side force and resists sideways motion with its rudder term g_ru (eq. 8, p5 = "
+                          "1500 kg/s), "
+                          "while a 6-DOF keel's lift falls with the square of the speed")
         return (f"enters at {r['entered_at']:.0f} s but drifts to {r['max_after_stop']:.1f} m after the stop, "
-                f"{int(r['exits'])} exits")
+                f"{int(r['exits'])} exits" + drift)
     irons, stop = r["irons_fraction"], r["rudder_stop_fraction"]
     if irons > 0.3:
         what = (f"never enters: in irons {100 * irons:.0f} % of the run (|AWA| < {IRONS_AWA_DEG:g}°, surge < "

@@ -23,11 +23,13 @@ In 6-DOF the restoring moment is buoyancy plus the weight's moment about CO (gra
 MuJoCo's). Fig. 8: mean surge over the last 50 s of 150 s runs (seed 0) on a grid of phi_d (the
 roll law's desired heel, true wind) at U10 = 13 and 16 m/s, on the sweep engine.
 
-Our sail is the flat AR 5 sail (Saoud's C_N, our C_T), not Marchaj's coefficients (which we do
-not have), and our roll LQR gain is K = [5.82e4, 1.0e5] from the paper's A, B, Q, R, not the
-printed [9.0e4, 1.0e5] (controllers/wille_roll.py and its test explain why). Both are switched
-below, with the hysteresis band (ours 5 deg; the paper gives none), the 4-DOF yaw kinematics
-(``paper_model="rigid"``), in 6-DOF heave and pitch (``dofs=4``), and for sim 3 the sail
+Our sail is the flat AR 5 sail (Saoud's C_N in the paper world, its finite-wing form in 6-DOF;
+our C_T), not Marchaj's coefficients (which we do not have), and our roll LQR gain is
+K = [5.82e4, 1.0e5] from the paper's A, B, Q, R, not the printed [9.0e4, 1.0e5]
+(controllers/wille_roll.py and its test explain why). Both are switched below, with the
+hysteresis band (ours 5 deg; the paper gives none), the 4-DOF yaw kinematics
+(``paper_model="rigid"``), in 6-DOF heave and pitch (``dofs=4``) and the residuary resistance
+(``resistance="friction"``, Wille's friction alone), and for sim 3 the sail
 actuator's lag T_lambda and the control rate; sims 1 and 3 are also run on 20 more gust
 realisations (seeds 5-24, paper world) to place the paper's single run among ours.
 """
@@ -106,6 +108,7 @@ CASES = {"main": "headline", "sail": f"switch: sail force x{SAIL_FACTOR:g}",
          "band": f"switch: hysteresis band {NARROW_BAND_DEG:g}° (ours 5°)",
          "rigid": "switch: rigid-hull yaw kinematics (paper_model='rigid')",
          "dofs4": "switch: heave and pitch held (dofs = 4)",
+         "friction": "switch: friction-only resistance (Wille eqs. 15-16, no wave making)",
          "sail dofs4": f"switch: sail force x{SAIL_FACTOR:g}, heave and pitch held",
          **{f"lag {t:g}": f"switch: sail actuator lag T_λ = {t:g} s (paper 0.5 s)" for t in LAG_SWITCH_S},
          "rate": f"switch: control at {1 / FAST_CONTROL_S:g} Hz (ours 10 Hz)",
@@ -179,6 +182,8 @@ def jobs_for(smoke: bool) -> list[dict]:
              for s in controlled]
     jobs += [dict(base, key=("dofs4", "mujoco", s, seed), world="mujoco", sim=s, seed=seed, dofs=4)
              for seed in SWITCH_SEEDS for s in SWITCH_SIMS]
+    jobs += [dict(base, key=("friction", "mujoco", s, 0), world="mujoco", sim=s, seed=0,
+                  env={"resistance": "friction"}) for s in SWITCH_SIMS]
     jobs += [dict(base, key=("band", "paper", s, 0), world="paper", sim=s, seed=0, band_deg=NARROW_BAND_DEG)
              for s in controlled]
     jobs += [dict(base, key=("rigid", "paper", s, 1), world="paper", sim=s, seed=1, paper_model="rigid")
@@ -586,8 +591,11 @@ def _cause(r: Results, world, sim, key) -> str:
         text = (f"our flat AR 5 sail drives less than Marchaj's: sail x{SAIL_FACTOR:g}, seed 0: "
                 f"{s0[key]:.2f} → {sail0[key]:.2f} m/s")
         if world == "mujoco":
-            d4 = r.get("dofs4", world, switched, 0)
-            text += f"; heave and pitch held: {d4[key]:.2f} m/s"
+            d4, fr = r.get("dofs4", world, switched, 0), r.get("friction", world, switched, 0)
+            froude = math.sqrt(9.81 * get_boat(BOAT).hull.length)
+            text = (f"the wave-making wall (Froude {s0[key] / froude:.2f}): friction-only resistance, "
+                    f"seed 0: {s0[key]:.2f} → {fr[key]:.2f} m/s (Froude {fr[key] / froude:.2f}); " + text
+                    + f"; heave and pitch held: {d4[key]:.2f} m/s")
             if sail0[key] < 2.0:
                 text += " (with the stronger sail the 6-DOF boat broaches, see causes)"
         return text
@@ -622,7 +630,7 @@ def _reduction_rows(r: Results, smoke) -> list[dict]:
             for seed in r.seeds:
                 rows.append(row(world, "main", str(seed), {s: r.get("main", world, s, seed) for s in SIMS}))
     if not smoke:
-        for case in ("sail", "dofs4"):
+        for case in ("sail", "dofs4", "friction"):
             for world in WORLDS:
                 for seed in (0, 1):
                     if r.has(case, world, "sim1", seed):
@@ -652,6 +660,26 @@ def _detail_rows(r: Results) -> list[dict]:
                      "wind at sail [m/s]": n["wind_ce"], "on": f"{100 * n['on']:.0f} %",
                      "δ_r [deg]": n["rudder_mean"], "ψ_min [deg]": n["heading_min"]})
     return rows
+
+
+def _resistance_sentence(g, paper_mean) -> str:
+    """What the wave-making resistance does to the 6-DOF Table 1 (seed 0): the switch back to
+    Wille's friction-only eq. 15."""
+    froude = math.sqrt(9.81 * get_boat(BOAT).hull.length)
+    built = {s: g("main", "mujoco", s, 0) for s in ("sim1", "sim2", "sim3")}
+    fr = {s: g("friction", "mujoco", s, 0) for s in ("sim1", "sim2", "sim3")}
+    def values(runs, key):
+        return " / ".join(f"{runs[s][key]:.2f}" for s in runs)
+
+    verdict = ("the displacement hull's wave-making wall, which the paper's friction-only resistance "
+               "does not have, is what makes the 6-DOF yacht slower"
+               if fr["sim1"]["mean_surge"] > 1.1 * built["sim1"]["mean_surge"]
+               else "the residuary resistance changes the speed by less than 10 %")
+    return (f"Switch, friction-only resistance (Wille eqs. 15-16, no wave making; seed 0): sims 1-3 "
+            f"surge {values(built, 'mean_surge')} → {values(fr, 'mean_surge')} m/s (sim 1 at Froude "
+            f"{built['sim1']['mean_surge'] / froude:.2f} → {fr['sim1']['mean_surge'] / froude:.2f}; paper world "
+            f"{paper_mean['sim1']['mean_surge'] / froude:.2f}, the paper's 7.75 m/s {7.75 / froude:.2f}), roll "
+            f"amplitude {values(built, 'roll_amplitude')} → {values(fr, 'roll_amplitude')}°: {verdict}.")
 
 
 def _causes(r: Results, tables: dict) -> str:
@@ -780,6 +808,7 @@ def _causes(r: Results, tables: dict) -> str:
    {d1['sim3']['mean_surge']:.2f} m/s (6-DOF {g('main', 'mujoco', 'sim1', 1)['mean_surge']:.2f} /
    {g('main', 'mujoco', 'sim2', 1)['mean_surge']:.2f} / {g('main', 'mujoco', 'sim3', 1)['mean_surge']:.2f} m/s):
    {_heave_pitch_effect([d0['sim1'], d1['sim1']], [g('main', 'mujoco', 'sim1', k) for k in (0, 1)])}.
+   {_resistance_sentence(g, m)}
    {_broach_sentence(xm0['sim1'], xm1['sim1'], dx0['sim1'], xm0['sim3'], xm1['sim3'], broach_text)}
 """
 
