@@ -279,14 +279,24 @@ def built_row(data, effect, rng_, config, title, paper_form) -> dict:
     both_heel = both_heel[np.isfinite(both_heel)]
     holds = (both_speed.size > 0 and np.max(np.abs(both_speed)) < SPEED_HOLDS
              and (not both_heel.size or np.max(np.abs(both_heel)) < HEEL_HOLDS_DEG))
+    def summary(values, scale, unit, limit):
+        v = np.asarray(values, dtype=float) * scale
+        v = v[np.isfinite(v)]
+        if not v.size:
+            return "—"
+        beyond = int(np.count_nonzero(np.abs(v) >= limit))
+        return (f"median {np.median(v):+.1f}{unit} ({rng_(v, 1.0, '{:+.1f}')}{unit}; "
+                f"{beyond} of {v.size} points beyond ±{limit:g}{unit})")
+
     return {"assumption": f"{title} ({paper_form})",
             "scenarios": "both boats, wind plane",
             "metric": "steady speed and heel, the papers' form minus as built",
-            "range": "; ".join(f"{b}: speed {rng_(speed[b], 100, '{:+.1f}')} %, heel "
-                               f"{rng_(heel[b], 180 / math.pi, '{:+.2f}')} deg" for b in BOATS),
+            "range": "; ".join(f"{b}: speed {summary(speed[b], 100, ' %', 100 * SPEED_HOLDS)}, heel "
+                               f"{summary(heel[b], 180 / math.pi, '°', HEEL_HOLDS_DEG)}" for b in BOATS),
             "threshold": f"|speed| < {100 * SPEED_HOLDS:.0f} %, |heel| < {HEEL_HOLDS_DEG:g} deg",
             "verdict": "holds" if holds else "breaks at some points",
-            "effect": "speed and heel, as the range"}
+            "effect": "speed and heel, as the range (the extremes are points where one of the two "
+                      "boats loses its heading or stalls)"}
 
 
 def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bool = False) -> dict:
