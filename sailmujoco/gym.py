@@ -7,6 +7,9 @@
 Observations are the suite's nested dicts as ``gymnasium.spaces.Dict`` of ``Box`` (float64).
 ``terminated`` means the simulation stopped (capsize, non-finite state), ``truncated`` that the
 time limit came; ``info`` carries the reward terms and, at the end, the task's metrics.
+The action is [rudder angle (rad), sail angle (rad)], or with ``sail_mode="sheeted"`` [rudder
+angle (rad), sheet length (m)]; the bounds are the actuators' (``action_space.low``/``high``) and
+the dm_env spec's name spells the units ("rudder_rad,sail_rad" or "rudder_rad,sheet_m").
 """
 
 from __future__ import annotations

@@ -37,6 +37,7 @@ import mujoco
 import numpy as np
 from dm_control.mujoco import engine
 from dm_control.mujoco.wrapper import core
+from dm_control.rl import control
 
 from . import frames, stability
 from .forces import boat as kernels
@@ -393,10 +394,15 @@ class BoatPhysics(engine.Physics):
         if self.stop_reason is not None:
             raise SimulationStopped(self.stop_reason, d.time)
         self._prepare(nstep * m.opt.timestep)
-        if m.opt.integrator == _RK4:
-            self._step_rk4(nstep)
-        else:
-            self._step_split(nstep)
+        try:
+            if m.opt.integrator == _RK4:
+                self._step_rk4(nstep)
+            else:
+                self._step_split(nstep)
+        except control.PhysicsError as err:  # MuJoCo's own check: a NaN or a huge acceleration
+            self._status = kernels.STATUS_NONFINITE
+            self.stop_reason = f"non-finite or out-of-range state ({err})"
+            raise SimulationStopped(self.stop_reason, d.time) from None
         self._fresh = False
 
     def _stop(self, status: int) -> None:

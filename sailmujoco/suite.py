@@ -21,7 +21,7 @@ import math
 
 from .params import BOATS, get_boat
 from .physics import BoatPhysics, ForceSwitches
-from .tasks.base import PaperPhysics, SailEnvironment
+from .tasks.base import PaperPhysics, SailEnvironment, check_number
 from .tasks.position import PositionKeeping, VielPhysics
 from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial
 
@@ -53,7 +53,9 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     time_limit : float, optional
         Episode length in seconds (default: the task's, e.g. 200 s for course_hold).
     sail_mode, hydrostatics, dofs, forces
-        MuJoCo world options (see :class:`sailmujoco.physics.BoatPhysics`).
+        MuJoCo world options (see :class:`sailmujoco.physics.BoatPhysics`). With
+        ``sail_mode="sheeted"`` the action's second command is the sheet length in metres (the
+        boom swings free up to the angle that length allows), not the sail angle in radians.
     paper_model : {"paper", "rigid"}
         Wille 4-DOF variant (see :mod:`sailmujoco.reference.wille`).
     sail_tangential : bool
@@ -81,6 +83,8 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
     dt_ok = isinstance(control_timestep, (int, float)) and not isinstance(control_timestep, bool)
     if not (dt_ok and math.isfinite(control_timestep) and control_timestep > 0):
         raise ValueError(f"control_timestep must be a positive time in s, got {control_timestep!r}")
+    if time_limit is not None:
+        time_limit = check_number("time_limit", time_limit, 0.0, low_open=True, unit="s")
     if params is None:
         params = get_boat(boat, **(boat_options or {}))
     elif boat_options:

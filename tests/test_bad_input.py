@@ -69,3 +69,80 @@ def test_unknown_modes():
     physics = load("wille_yacht")
     with pytest.raises(ValueError, match="unknown force term"):
         physics.force_term("engine")
+
+
+# ---- episode options at suite.load: one line naming the option and the accepted range ------
+@pytest.mark.parametrize("options,message", [
+    ({"time_limit": 0}, "time_limit must be a finite number > 0 s, got 0"),
+    ({"time_limit": -1.0}, "time_limit must be a finite number > 0 s, got -1.0"),
+    ({"time_limit": float("nan")}, "time_limit must be a finite number > 0 s, got nan"),
+    ({"time_limit": "10"}, "time_limit must be a finite number > 0 s, got '10'"),
+    ({"desired_heading_deg": float("nan")}, "desired_heading_deg must be a finite number, got nan"),
+    ({"heading_jitter_deg": -30}, "heading_jitter_deg must be a finite number >= 0 and <= 180, got -30"),
+    ({"seed": -1}, "seed must be None or an integer >= 0, got -1"),
+    ({"seed": 1.5}, "seed must be None or an integer >= 0, got 1.5"),
+    ({"wind_speed": 1e6}, "wind_speed must be a finite number >= 0 and <= 60 m/s, got 1000000.0"),
+    ({"steady_window": 0}, "steady_window must be a finite number > 0 s, got 0"),
+])
+def test_episode_options_are_checked_at_load(options, message):
+    from sailmujoco import suite
+
+    with pytest.raises(ValueError) as err:
+        suite.load("saoud_robot", "heading_hold", **options)
+    assert str(err.value) == message
+
+
+@pytest.mark.parametrize("options,message", [
+    ({"d_target": 0}, "d_target must be a finite number > 0 m, got 0"),
+    ({"d_target": 7.0, "d_prearrival": 5.0},
+     "d_prearrival must be a finite number > 7 m (more than d_target), got 5.0"),
+])
+def test_position_keeping_radii_are_checked_at_load(options, message):
+    from sailmujoco import suite
+
+    with pytest.raises(ValueError) as err:
+        suite.load("saoud_robot", "position_keeping", **options)
+    assert str(err.value) == message
+
+
+def test_valid_episode_options_still_load():
+    from sailmujoco import suite
+
+    env = suite.load("saoud_robot", "heading_hold", seed=3, time_limit=0.5, heading_jitter_deg=0,
+                     wind_speed=0.0, desired_heading_deg=-720)
+    assert env.reset().observation is not None
+
+
+def test_a_wind_beyond_the_models_range_is_refused():
+    from sailmujoco.forces.wind import WindConfig
+
+    with pytest.raises(ValueError) as err:
+        WindConfig(speed=1e6)
+    assert str(err.value) == "wind: speed must be between 0 and 100 m/s, got 1000000.0"
+
+
+def test_a_blown_up_state_stops_as_non_finite_not_as_capsized():
+    """MuJoCo's own check (a huge acceleration) ends the run with that reason, as a
+    SimulationStopped the task records, not as a capsize or a PhysicsError traceback."""
+    from sailmujoco.physics import BoatPhysics, SimulationStopped
+
+    physics = BoatPhysics.load("saoud_robot")
+    physics.data.ptr.qvel[0] = 1e200  # finite, far out of range: the drag overflows the step
+    with pytest.raises(SimulationStopped) as err:
+        physics.step(1)
+    assert "non-finite" in err.value.reason and "capsized" not in err.value.reason
+    assert physics.stop_reason == err.value.reason
+
+
+@pytest.mark.parametrize("sail_mode,name", [("actuated", "rudder_rad,sail_rad"),
+                                            ("sheeted", "rudder_rad,sheet_m")])
+def test_action_spec_names_its_units(sail_mode, name):
+    """The sheeted sail's second command is a sheet length in metres, not an angle."""
+    from sailmujoco import mjcf, suite
+
+    env = suite.load("saoud_robot", "heading_hold", sail_mode=sail_mode)
+    spec = env.action_spec()
+    assert spec.name == name
+    if sail_mode == "sheeted":  # the bounds are the sheet's lengths at 0 and at the sail limit
+        p = env.physics.params
+        assert spec.maximum[1] == pytest.approx(float(mjcf.sheet_length(p, p.sail.max_angle)), rel=1e-5)

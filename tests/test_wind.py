@@ -79,7 +79,7 @@ def test_bad_wind_file_gives_one_clear_error(tmp_path):
         WindConfig.from_toml(unknown)
     negative = tmp_path / "neg.toml"
     negative.write_text("speed = -3\n")
-    with pytest.raises(ValueError, match="speed must be >= 0"):
+    with pytest.raises(ValueError, match="speed must be between 0 and 100 m/s"):
         WindConfig.from_toml(negative)
     good = tmp_path / "good.toml"
     good.write_text("[wind]\nspeed = 5\ndirection_from_deg = 130\nseed = 3\n")

@@ -32,6 +32,7 @@ from .._jit import kernel
 from ..tomlfile import read_toml
 
 F_MAX = 0.4  # Hz, upper end of the simulated gust band (Wille §2.1)
+MAX_SPEED = 100.0  # m/s, U10: well above any hurricane's; the force models are not meant for more
 WANDER_DT = 0.1  # s, grid of the direction-wander random walk
 # Heights of the gust-amplitude table (log spaced); the amplitude is interpolated in ln z.
 _Z_TABLE = np.geomspace(0.05, 60.0, 48)
@@ -71,8 +72,8 @@ class WindConfig:
                 continue
             if not isinstance(value, (int, float)) or not math.isfinite(value):
                 raise ValueError(f"wind: {name} must be a finite number, got {value!r}")
-        if self.speed < 0.0:
-            raise ValueError(f"wind: speed must be >= 0 m/s, got {self.speed}")
+        if not 0.0 <= self.speed <= MAX_SPEED:
+            raise ValueError(f"wind: speed must be between 0 and {MAX_SPEED:g} m/s, got {self.speed}")
         if self.n_frequencies < 1:
             raise ValueError(f"wind: n_frequencies must be >= 1, got {self.n_frequencies}")
         if self.wander_intensity < 0 or self.wander_limit < 0:

@@ -71,6 +71,26 @@ def measure(world) -> OrderedDict:
     )
 
 
+
+
+def check_number(name: str, value, low: float | None = None, high: float | None = None, *,
+                 low_open: bool = False, unit: str = "") -> float:
+    """``value`` as a float if it is a finite number within [low, high] (or (low, high] with
+    ``low_open``); otherwise a ValueError naming the option and the accepted range."""
+    given = value
+    ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
+    if ok:
+        value = float(value)
+        ok = math.isfinite(value) and (low is None or (value > low if low_open else value >= low)) \
+            and (high is None or value <= high)
+    if not ok:
+        lo = "" if low is None else f"{'>' if low_open else '>='} {low:g}"
+        hi = "" if high is None else f"<= {high:g}"
+        allowed = " and ".join(p for p in (lo, hi) if p)
+        rng = f" {allowed}{' ' + unit if unit else ''}" if allowed else (f" (in {unit})" if unit else "")
+        raise ValueError(f"{name} must be a finite number{rng}, got {given!r}")
+    return value
+
 class PaperPhysics(control.Physics):
     """A paper world (reduced ODE model) behind dm_control's Physics interface."""
 
@@ -130,6 +150,10 @@ class SailTask(control.Task):
     duration = 60.0  # s, default episode length
 
     def __init__(self, seed: int | None = None, heading_jitter_deg: float = 5.0):
+        if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
+                                 or seed < 0):
+            raise ValueError(f"seed must be None or an integer >= 0, got {seed!r}")
+        check_number("heading_jitter_deg", heading_jitter_deg, 0.0, 180.0)
         self.seed = seed
         self.random = np.random.default_rng(seed)
         self.heading_jitter = math.radians(heading_jitter_deg)
@@ -189,8 +213,10 @@ class SailTask(control.Task):
                 "course": physics.course(), "speed": physics.speed_over_ground()}
 
     def action_spec(self, physics):
+        """Two commands: the rudder angle [rad], then the sail angle [rad] (actuated sail) or,
+        with ``sail_mode="sheeted"``, the sheet length [m]; the spec's name says which."""
         low, high = action_bounds(physics)
-        return specs.BoundedArray((2,), np.float64, low, high, name="rudder_sail")
+        return specs.BoundedArray((2,), np.float64, low, high, name=action_name(physics))
 
     def get_observation(self, physics):
         cached, self._reward_observation = self._reward_observation, None
@@ -222,6 +248,12 @@ class SailTask(control.Task):
         out["stopped"] = self.stopped
         out["duration"] = self._records[-1]["t"] if self._records else 0.0
         return out
+
+
+def action_name(physics) -> str:
+    """The action's fields with their units: "rudder_rad,sail_rad" or "rudder_rad,sheet_m"."""
+    names = getattr(physics, "actuator_names", None) or ["rudder", "sail"]
+    return ",".join(("sheet_m" if name == "sheet" else f"{name}_rad") for name in names)
 
 
 def action_bounds(physics):

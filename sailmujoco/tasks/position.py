@@ -36,7 +36,7 @@ import numpy as np
 
 from ..forces.wind import WindConfig
 from ..physics import SimulationStopped
-from .base import SailTask
+from .base import SailTask, check_number
 
 # case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
 CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
@@ -57,8 +57,9 @@ class PositionKeeping(SailTask):
         self.case = case
         self.start = np.asarray(start, dtype=float)
         self.target = np.asarray(target, dtype=float)
-        self.d_target = float(d_target)
-        self.d_prearrival = float(d_prearrival)
+        self.d_target = check_number("d_target", d_target, 0.0, low_open=True, unit="m")
+        self.d_prearrival = check_number("d_prearrival", d_prearrival, self.d_target, low_open=True,
+                                         unit="m (more than d_target)")
 
     def wind(self):
         speed, speed_osc, dir_osc = CASES[self.case]

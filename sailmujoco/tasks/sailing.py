@@ -27,7 +27,9 @@ import numpy as np
 
 from .. import frames
 from ..forces.wind import WindConfig
-from .base import SailTask, amplitude, wrap
+from .base import SailTask, amplitude, check_number, wrap
+
+MAX_WIND = 60.0  # m/s, U10: above a hurricane's; the force models are not meant for more
 
 
 class HeadingHold(SailTask):
@@ -47,9 +49,10 @@ class HeadingHold(SailTask):
                  steady_window: float = 20.0, diagnostics: bool = False, **kwargs):
         super().__init__(seed, **kwargs)
         self.diagnostics = diagnostics
-        self.desired_heading = math.radians(desired_heading_deg)
-        self.wind_speed = wind_speed
-        self.wind_from = math.radians(wind_from_deg)
+        self.desired_heading = math.radians(check_number("desired_heading_deg", desired_heading_deg))
+        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
+        steady_window = check_number("steady_window", steady_window, 0.0, low_open=True, unit="s")
         self.gusts, self.wander = gusts, wander
         self.steady_window = steady_window
 
@@ -157,8 +160,9 @@ class CourseHold(SailTask):
     def __init__(self, seed=None, desired_course_deg: float = 0.0, wind_speed: float = 5.0,
                  beta_w_deg: float = 130.0, **kwargs):
         super().__init__(seed, **kwargs)
-        self.desired_course = math.radians(desired_course_deg)
-        self.wind_speed = wind_speed
+        self.desired_course = math.radians(check_number("desired_course_deg", desired_course_deg))
+        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        beta_w_deg = check_number("beta_w_deg", beta_w_deg)
         self.wind_from = float(frames.direction_from_wille_beta_w(math.radians(beta_w_deg)))
 
     def wind(self):
@@ -207,8 +211,8 @@ class BeamReachRoll(SailTask):
     def __init__(self, seed=None, wind_speed: float = 10.0, desired_heading_deg: float = 0.0,
                  **kwargs):
         super().__init__(seed, **kwargs)
-        self.wind_speed = wind_speed
-        self.desired_heading = math.radians(desired_heading_deg)
+        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.desired_heading = math.radians(check_number("desired_heading_deg", desired_heading_deg))
 
     def wind(self):
         return WindConfig(speed=self.wind_speed, direction_from=self.desired_heading - math.pi / 2,
@@ -254,7 +258,7 @@ class SpeedTrial(SailTask):
 
     def __init__(self, seed=None, wind_speed: float = 4.0, **kwargs):
         super().__init__(seed, **kwargs)
-        self.wind_speed = wind_speed
+        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
 
     @staticmethod
     def wind_from(angle_deg: float) -> float:
