@@ -146,3 +146,23 @@ def test_action_spec_names_its_units(sail_mode, name):
     if sail_mode == "sheeted":  # the bounds are the sheet's lengths at 0 and at the sail limit
         p = env.physics.params
         assert spec.maximum[1] == pytest.approx(float(mjcf.sheet_length(p, p.sail.max_angle)), rel=1e-5)
+
+
+def test_terminal_observation_after_a_capsize_is_the_state_it_stopped_in():
+    """A 60 m/s beam wind on a sheeted-in robot capsizes it within a second; the terminal
+    observation is measured at the stop (time and heel of that state), not the previous step's."""
+    import math
+
+    import numpy as np
+
+    from sailmujoco import suite
+
+    env = suite.load("saoud_robot", "heading_hold", seed=0, wind_speed=60.0, time_limit=20.0,
+                     gusts=False, wander=False)
+    timestep = env.reset()
+    while not timestep.last():
+        timestep = env.step(np.array([0.0, 0.0]))
+    assert env.task.metrics()["stopped"].startswith("capsized")
+    observation = timestep.observation
+    assert float(observation["true_state"]["time"]) == pytest.approx(env.physics.data.time, abs=1e-12)
+    assert abs(math.degrees(float(observation["heel"]))) > 80.0  # heeled over, not last step's heel

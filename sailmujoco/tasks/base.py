@@ -131,8 +131,23 @@ class SailEnvironment(control.Environment):
         except SimulationStopped as stop:
             self._task.stopped = stop.reason
             self._reset_next_step = True
+            # the state the run stopped in (a capsize is a valid state); the previous step's
+            # observation only when that state cannot be measured (non-finite)
             observation = self._task.last_observation
+            try:
+                fresh = self._task.get_observation(self._physics)
+            except (ValueError, FloatingPointError, SimulationStopped):
+                fresh = None
+            if fresh is not None and _finite(fresh):
+                observation = fresh
             return dm_env.termination(reward=0.0, observation=observation)
+
+
+def _finite(observation) -> bool:
+    """Every number of a (nested) observation is finite."""
+    if isinstance(observation, dict):
+        return all(_finite(value) for value in observation.values())
+    return bool(np.all(np.isfinite(np.asarray(observation, dtype=float))))
 
 
 class SailTask(control.Task):
