@@ -122,6 +122,27 @@ def _sweep(args) -> int:
     return 0
 
 
+def _number(low: float, *, low_open: bool, unit: str, integer: bool = False):
+    """An argparse type: a finite number above ``low`` (or at least ``low``), else exit 2 with
+    one line naming the range."""
+    def parse(text: str):
+        try:
+            value = int(text) if integer else float(text)
+        except ValueError:
+            value = None
+        if value is None or not math.isfinite(value) or (value <= low if low_open else value < low):
+            kind = "an integer" if integer else "a number"
+            raise argparse.ArgumentTypeError(
+                f"must be {kind} {'>' if low_open else '>='} {low:g}{' ' + unit if unit else ''}, "
+                f"got {text!r}")
+        return value
+    return parse
+
+
+POSITIVE_SECONDS = _number(0.0, low_open=True, unit="s")
+WORKERS = _number(0, low_open=False, unit="(0: all cores)", integer=True)
+
+
 def _floats(text: str) -> list[float]:
     """'2,4,6' or 'start:stop:step' (stop included) -> floats."""
     if ":" in text:
@@ -228,8 +249,9 @@ def build_parser() -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", required=True)
     check = sub.add_parser("check", help="load every boat, sail it, print a health report")
     check.add_argument("--boat", action="append", help="only this boat (repeatable)")
-    check.add_argument("--seconds", type=float, default=20.0, help="simulated time per run (s)")
-    check.add_argument("--wind", type=float, default=10.0, help="mean wind at 10 m (m/s)")
+    check.add_argument("--seconds", type=POSITIVE_SECONDS, default=20.0, help="simulated time per run (s)")
+    check.add_argument("--wind", type=_number(0.0, low_open=False, unit="m/s"), default=10.0,
+                       help="mean wind at 10 m (m/s)")
     check.add_argument("--seed", type=int, default=0)
     check.add_argument("--plots", nargs="?", const="results/check", default=None,
                        metavar="DIR", help="write righting-curve plots (default results/check)")
@@ -239,7 +261,8 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("file", help="sweep description (TOML), see sailmujoco.sweep")
     sweep.add_argument("--out", help="results folder (default results/sweeps/<name>)")
     sweep.add_argument("--scheduler", help="Dask scheduler address tcp://host:port, or 'serial'")
-    sweep.add_argument("--workers", type=int, help="worker processes of the embedded cluster")
+    sweep.add_argument("--workers", type=WORKERS,
+                       help="worker processes of the embedded cluster (0: all cores)")
     sweep.add_argument("--resume", action="store_true", help="run only the missing runs")
     sweep.add_argument("--retries", type=int, default=2, help="extra attempts of a failing run")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
@@ -256,10 +279,10 @@ def build_parser() -> argparse.ArgumentParser:
                        help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
     polar.add_argument("--twa", type=_floats, default=[float(a) for a in range(30, 181, 15)],
                        help="true wind angles, deg: '30:180:15'")
-    polar.add_argument("--duration", type=float, default=60.0, help="seconds per point")
+    polar.add_argument("--duration", type=POSITIVE_SECONDS, default=60.0, help="seconds per point")
     polar.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
     polar.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
-    polar.add_argument("--workers", type=int)
+    polar.add_argument("--workers", type=WORKERS, help="worker processes (0: all cores)")
     polar.add_argument("--no-progress", action="store_true")
     polar.set_defaults(func=_polar)
 
@@ -267,7 +290,7 @@ def build_parser() -> argparse.ArgumentParser:
     study.add_argument("name", help="study name, or 'all'")
     study.add_argument("--smoke", action="store_true", help="short runs (under a minute)")
     study.add_argument("--out", default="results", help="results root (default results/)")
-    study.add_argument("--workers", type=int, help="worker processes for the sweeps")
+    study.add_argument("--workers", type=WORKERS, help="worker processes for the sweeps (0: all cores)")
     study.add_argument("--video", action="store_true", help="also record the main scenario")
     study.add_argument("--no-progress", action="store_true")
     study.set_defaults(func=_study)
