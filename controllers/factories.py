@@ -32,6 +32,10 @@ class Bounded:
         return np.clip(self.controller(timestep), self.low, self.high)
 
     def __getattr__(self, name):
+        # only for attributes not found on self; before __init__ or __setstate__ has set
+        # ``controller`` (copy and pickle build the object bare) there is nothing to forward to
+        if name == "controller":
+            raise AttributeError(name)
         return getattr(self.controller, name)
 
 
@@ -43,10 +47,14 @@ class SheetFromAngle:
     """
 
     def __init__(self, law, params):
+        self.law = law
+        self.params = params
+
+    def length(self, angle: float) -> float:
+        """Sheet length [m] that lets the boom out to ``|angle|`` [rad]."""
         from sailmujoco.mjcf import sheet_length
 
-        self.law = law
-        self.length = lambda angle: float(sheet_length(params, abs(angle)))
+        return float(sheet_length(self.params, abs(angle)))
 
     def reset(self, seed: int | None = None) -> None:
         if hasattr(self.law, "reset"):

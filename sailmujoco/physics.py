@@ -28,6 +28,7 @@ depend on how many sub-steps a control step has.
 
 from __future__ import annotations
 
+import copy as _copy
 import functools
 import math
 import threading
@@ -80,6 +81,10 @@ def _rk4_stage(m, d) -> None:
             previous(m, d)
         return
     stage(m, d)
+
+
+# per-instance attributes bound to one MjData or one process: rebuilt, never copied
+_REBUILT = ("_kernel", "_args", "_bound", "_bound_wander")
 
 
 class SimulationStopped(RuntimeError):
@@ -180,7 +185,16 @@ class BoatPhysics(engine.Physics):
         physics.reset()
         return physics
 
+    @classmethod
+    def _from_mjcf(cls, *args, **kwargs):
+        raise ValueError("a BoatPhysics is built from the boat's parameters, which its force models "
+                         "need: use BoatPhysics.load(boat, ...) (xml/<boat>/ is generated from them), "
+                         "or dm_control.mujoco.Physics for the bare MJCF")
+
+    from_xml_string = from_xml_path = from_byte_string = from_binary_path = _from_mjcf
+
     def _setup(self, params, sail_mode, wind, forces, dofs=6):
+        before = set(vars(self))
         self.params = params
         self.dofs = dofs
         self.sail_mode = sail_mode
@@ -250,6 +264,8 @@ class BoatPhysics(engine.Physics):
         self._status = kernels.STATUS_OK
         self._fresh = True
         self.stop_reason: str | None = None
+        # what a copy or a pickle carries beside dm_control's MjData (see __getstate__)
+        self._boat_keys = tuple(sorted(set(vars(self)) - before - set(_REBUILT)))
 
     def _bind(self):
         """Hold the arrays the kernel reads and writes (MuJoCo's buffers are stable per MjData)."""
@@ -274,10 +290,30 @@ class BoatPhysics(engine.Physics):
         if self._bound is not d or self._bound_wander is not self.wind.wander:
             self._bind()
 
+    # ------------------------------------------------------------------ copy and pickle
+    # dm_control's Physics pickles only its MjData, and its copy() builds a bare Physics around a
+    # copy of it: the boat's force models, wind field, external wrench and stop state travel
+    # here too, so that a copy (deepcopy, pickle, copy()) steps bit for bit like the original.
+    def _boat_state(self) -> dict:
+        return {key: getattr(self, key) for key in self._boat_keys}
+
+    def _attach(self, state: dict) -> None:
+        self.__dict__.update(state)
+        self._kernel = _entry_point(kernels.boat_forces)
+        self._bound = self._bound_wander = None  # rebound to this MjData on the next step
+
+    def __getstate__(self):
+        return self.data, self._boat_state()
+
+    def __setstate__(self, state):
+        data, boat = state
+        super().__setstate__(data)
+        self._attach(boat)
+
     def copy(self, share_model=False):
+        """An independent copy in the same state (``share_model``: share the MjModel)."""
         new = super().copy(share_model=share_model)
-        new._setup(self.params, self.sail_mode, self.wind_config, self.switches, self.dofs)
-        new._external[:] = self._external
+        new._attach(_copy.deepcopy(self._boat_state()))
         return new
 
     def reset(self, keyframe_id=None):

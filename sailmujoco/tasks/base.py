@@ -12,6 +12,7 @@ named terms (``reward_terms``; the reward is their sum) and keeps metrics over t
 
 from __future__ import annotations
 
+import copy
 import math
 from collections import OrderedDict
 
@@ -114,6 +115,11 @@ class PaperPhysics(control.Physics):
 
     def after_reset(self):
         pass
+
+    def copy(self, share_model=False):
+        """An independent copy in the same state (as ``BoatPhysics.copy``; a paper world holds
+        no model to share, so ``share_model`` changes nothing)."""
+        return copy.deepcopy(self)
 
     def __getattr__(self, name):  # the named accessors of the world
         if name == "world":

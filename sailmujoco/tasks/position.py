@@ -30,6 +30,7 @@ counter-clockwise, so a compass bearing it *comes from* shrinks by the same amou
 
 from __future__ import annotations
 
+import copy
 import math
 
 import numpy as np
@@ -146,6 +147,10 @@ class VielPhysics:
 
     def after_reset(self):
         pass
+
+    def copy(self, share_model=False):
+        """An independent copy in the same state (``share_model`` changes nothing here)."""
+        return copy.deepcopy(self)
 
     def reset_context(self):
         from dm_control.rl.control import Physics
