@@ -108,18 +108,32 @@ def _sweep(args) -> int:
 
     spec = sweep.load_spec(args.file)
     out = Path(args.out or Path("results") / "sweeps" / spec["name"])
+    sweep.check_folder(spec, out)  # a file, or another sweep's folder: one line, exit 2
     runs = sweep.expand(spec)
     where = args.scheduler or f"embedded Dask cluster, {args.workers or 'all'} worker(s)"
-    print(f"sweep {spec['name']!r}: {len(runs)} runs ({spec['boat']}, {spec['task']}, "
-          f"{spec['world']}, {spec['controller']}) on {where} -> {out}")
+    print(f"sweep {spec['name']!r} ({sweep.sweep_id(spec)}): {len(runs)} runs ({spec['boat']}, "
+          f"{spec['task']}, {spec['world']}, {spec['controller']}) on {where} -> {out}", flush=True)
     table = sweep.run(spec, out, scheduler=args.scheduler, workers=args.workers,
-                      resume=args.resume, retries=args.retries, progress=not args.no_progress)
-    counts = table["status"].value_counts().to_dict()
-    print("status: " + ", ".join(f"{k} {v}" for k, v in sorted(counts.items())))
+                      resume=args.resume, retries=args.retries, progress=not args.no_progress,
+                      exclusive=True)
+    counts = {"ok": 0, "stopped": 0, "failed": 0, **table["status"].value_counts().to_dict()}
+    print("status: " + ", ".join(f"{k} {v}" for k, v in counts.items())
+          + (" (stopped: the simulation ended early, e.g. a capsize; see the error column)"
+             if counts["stopped"] else ""))
     for metric in spec.get("metrics", [])[:5]:
         print("  " + sweep.summarise(table, metric))
     print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv")
     return 0
+
+
+def _out_folder(path) -> Path:
+    """``--out`` as a folder, created if missing; a file there is one line, exit 2."""
+    path = Path(path)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except (FileExistsError, NotADirectoryError):
+        raise ValueError(f"--out {str(path)!r} is (or lies under) a file; give a folder") from None
+    return path
 
 
 def _number(low: float, *, low_open: bool, unit: str, integer: bool = False):
@@ -157,8 +171,7 @@ def _polar(args) -> int:
     from .params import get_boat
 
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
-    out = Path(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
-    out.mkdir(parents=True, exist_ok=True)
+    out = _out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
     frames = {}
     for name in names:
@@ -222,7 +235,7 @@ def _study(args) -> int:
     unknown = [n for n in names if n not in studies]
     if unknown:
         raise ValueError(f"unknown study {unknown[0]!r}; known: all, {', '.join(order)}")
-    root = Path(args.out)
+    root = _out_folder(args.out)
     start = time.perf_counter()
     for i, name in enumerate(names, 1):
         out = root / name
@@ -263,8 +276,10 @@ def build_parser() -> argparse.ArgumentParser:
     sweep.add_argument("--scheduler", help="Dask scheduler address tcp://host:port, or 'serial'")
     sweep.add_argument("--workers", type=WORKERS,
                        help="worker processes of the embedded cluster (0: all cores)")
-    sweep.add_argument("--resume", action="store_true", help="run only the missing runs")
-    sweep.add_argument("--retries", type=int, default=2, help="extra attempts of a failing run")
+    sweep.add_argument("--resume", action="store_true",
+                       help="run only the missing runs and those lost with a worker that died")
+    sweep.add_argument("--retries", type=_number(0, low_open=False, unit="", integer=True), default=2,
+                       help="extra attempts of a failing run")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
     sweep.set_defaults(func=_sweep)
 

@@ -29,13 +29,32 @@ Option keys are ``<namespace>.<name>``: ``env.`` goes to :func:`sailmujoco.suite
 Controllers are found by name through the ``sailmujoco.controllers`` entry points, so the
 library never imports a controller.
 
+Every option value of every run is checked before any run starts (boats, tasks and
+controllers built once per distinct option set, the environment once per distinct ``env.``
+set), so a bad value anywhere in the grid ends as one line naming it.
+
 Every finished run is written atomically to ``<out>/runs/<run_id>.json`` as it finishes
-(parameters, seed, metrics, wall time, package version, status and error text); the
-consolidated table is ``<out>/results.parquet`` (``pandas.read_parquet``) and ``results.csv``.
-``resume=True`` runs only what is missing. A run that raises is retried ``retries`` times and
-then recorded as failed; a run whose simulation stops (capsize, non-finite state) is recorded
-as ``stopped`` with its reason. Simulations run in worker processes (MuJoCo and numba state
-stay per process).
+(parameters, seed, metrics, package version, status and error text); the consolidated table is
+``<out>/results.parquet`` (``pandas.read_parquet``) and ``results.csv``, one row per run of
+*this* sweep. Its columns: ``sweep_id`` (``<name>-<first 8 of spec_hash>``) and ``spec_hash``
+(SHA-256 of the normalised description, 16 hex digits), ``run_id``, boat, task, world,
+controller, seed, ``status``, ``error``, ``wall_time`` (the run's duration in wall seconds in
+its worker: build, simulate, metrics, of its last attempt; NaN for a run the cluster lost),
+``attempts``, ``version``, then one column per option (``<namespace>.<name>``) and per metric
+(the metric ``duration`` is the simulated time the run covered, less than asked if it stopped).
+
+A folder holds one sweep: the command line refuses a different description in a folder that
+already holds one (``run(..., exclusive=True)``; :func:`check_folder`); the library by default
+lets sweeps share a folder (runs are stored by the hash of their parameters) and still writes a
+table of this sweep's runs only.
+
+``resume=True`` runs what is missing, and re-runs the runs the cluster lost: those recorded as
+failed because their worker died (Dask's ``KilledWorker``) or the task could not be run at all
+(``lost`` in the run's record). A run that raised in its own simulation is not re-run: same
+seed, same code, same error. A run that raises is retried ``retries`` times and then recorded
+as failed; a run whose simulation stops (capsize, non-finite state) is recorded as ``stopped``
+with its reason, and counted apart from failures. Simulations run in worker processes (MuJoCo
+and numba state stay per process).
 """
 
 from __future__ import annotations
@@ -45,6 +64,7 @@ import inspect
 import itertools
 import json
 import math
+import numbers
 import os
 import sys
 import time
@@ -55,6 +75,7 @@ from pathlib import Path
 import numpy as np
 
 from . import __version__
+from .progress import Progress
 from .tomlfile import read_toml
 
 TOP_KEYS = {"name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
@@ -64,6 +85,7 @@ ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_m
                "sail_tangential", "added_mass_coupling", "vertical_damping", "restoring_axes",
                "resistance", "foils", "keel_downwash", "windage")
 ENTRY_POINTS = "sailmujoco.controllers"
+CONNECT_TIMEOUT_S = 3.0  # to reach a Dask scheduler given by address
 
 
 class SweepError(ValueError):
@@ -169,29 +191,81 @@ def validate(spec: dict) -> dict:
     runs = expand(out)
     if not runs:
         raise SweepError("the sweep has no runs (empty grid)")
-    _check_values(out, runs[0])
+    _check_values(out, runs)
     return out
 
 
-def _check_values(spec: dict, run: dict) -> None:
-    """Build the first run's boat and task to catch out-of-range values early."""
-    from .params import get_boat
-    from .suite import TASKS
+def _distinct(runs: list[dict], key: str) -> list[dict]:
+    """The first run of each distinct value of ``run[key]`` (an options dict)."""
+    seen = {}
+    for r in runs:
+        seen.setdefault(json.dumps(r[key], sort_keys=True, default=repr), r)
+    return list(seen.values())
 
-    try:
-        get_boat(run["boat"], **run["boat_options"])
-    except ValueError as err:
-        raise SweepError(f"boat options {run['boat_options']}: {err}") from None
-    try:
-        TASKS[run["task"]](seed=0, **run["task_options"])
-    except (TypeError, ValueError) as err:
-        raise SweepError(f"task options {run['task_options']}: {err}") from None
-    env = run["env_options"]
+
+def _check_kinds(namespace: str, options: dict, fn) -> None:
+    """Each option of the kind its default in ``fn``'s signature has: true/false for a flag, a
+    finite number for a number, text for text (None where the signature allows it)."""
+    parameters = inspect.signature(fn).parameters
+    for name, value in options.items():
+        param = parameters.get(name)
+        if param is None or param.default is param.empty:
+            continue
+        default = param.default
+        if value is None and (default is None or "None" in str(param.annotation)):
+            continue
+        if isinstance(default, bool):
+            ok, kind = isinstance(value, bool), "true or false"
+        elif isinstance(default, (int, float)):
+            ok = (isinstance(value, (int, float)) and not isinstance(value, bool)
+                  and math.isfinite(value))
+            kind = "a finite number"
+        elif isinstance(default, str):
+            ok, kind = isinstance(value, str), "a string"
+        else:
+            continue
+        if not ok:
+            raise SweepError(f"{namespace}.{name} = {value!r}: must be {kind}")
+
+
+def _check_values(spec: dict, runs: list[dict]) -> None:
+    """Check every run's option values before any run starts: each distinct boat, task and
+    controller option set is built once, and the environment once per distinct ``env.`` set
+    (a MuJoCo model build, about 0.05 s)."""
+    from .params import get_boat
+    from .suite import TASKS, load
+
+    for r in _distinct(runs, "boat_options"):
+        try:
+            get_boat(r["boat"], **r["boat_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"boat options {r['boat_options']}: {err}") from None
+    for r in _distinct(runs, "task_options"):
+        try:
+            TASKS[r["task"]](seed=0, **r["task_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"task options {r['task_options']}: {err}") from None
     choices = {"hydrostatics": ("off", "paper", "geometric"), "sail_mode": ("actuated", "sheeted"),
                "dofs": (4, 6), "paper_model": ("paper", "rigid")}
-    for key, allowed in choices.items():
-        if key in env and env[key] not in allowed:
-            raise SweepError(f"env.{key} = {env[key]!r} is not one of {allowed}")
+    env = None
+    for r in _distinct(runs, "env_options"):
+        _check_kinds("env", r["env_options"], load)
+        for key, allowed in choices.items():  # also where the paper worlds ignore them
+            if key in r["env_options"] and r["env_options"][key] not in allowed:
+                raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}")
+        try:
+            built = load(r["boat"], r["task"], r["world"], seed=r["seed"], time_limit=r.get("duration"),
+                         boat_options=r["boat_options"], **r["env_options"], **r["task_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"env options {r['env_options']}: {err}") from None
+        env = env or built
+    factory = controller_factories()[spec["controller"]].load()
+    for r in _distinct(runs, "controller_options"):
+        _check_kinds("controller", r["controller_options"], factory)
+        try:
+            factory(env, **r["controller_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"controller options {r['controller_options']}: {err}") from None
 
 
 def expand(spec: dict) -> list[dict]:
@@ -225,6 +299,38 @@ def run_id(run: dict) -> str:
             "env_options", "task_options", "boat_options", "controller_options")
     text = json.dumps({k: run.get(k) for k in keys}, sort_keys=True, default=float)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def spec_hash(spec: dict) -> str:
+    """Stable hash of a (validated) sweep description (16 hex digits)."""
+    text = json.dumps(spec, sort_keys=True, default=_plain)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def sweep_id(spec: dict) -> str:
+    """``<name>-<first 8 hex digits of the spec hash>``: which sweep a folder or row belongs to."""
+    return f"{spec.get('name', 'sweep')}-{spec_hash(spec)[:8]}"
+
+
+def check_folder(spec: dict, out) -> None:
+    """Refuse ``out`` if it holds a sweep with another description (a file, not a folder, too).
+
+    The same description may be re-run or resumed there."""
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise SweepError(f"results folder {str(out)!r} is a file, not a folder")
+    path = out / "sweep.json"
+    if not path.is_file():
+        return
+    try:
+        held = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError):
+        raise SweepError(f"{str(out)!r} holds an unreadable sweep.json; use --out elsewhere "
+                         "or delete it") from None
+    if not isinstance(held, dict) or spec_hash(held) != spec_hash(spec):
+        held_id = sweep_id(held) if isinstance(held, dict) else "?"
+        raise SweepError(f"{str(out)!r} holds sweep {held_id} with a different spec (this one is "
+                         f"{sweep_id(spec)}); use --out elsewhere or delete it")
 
 
 # ----------------------------------------------------------------------------- one run
@@ -288,7 +394,11 @@ class ResultStore:
     def __init__(self, out):
         self.out = Path(out)
         self.runs_dir = self.out / "runs"
-        self.runs_dir.mkdir(parents=True, exist_ok=True)
+        try:
+            self.runs_dir.mkdir(parents=True, exist_ok=True)
+        except (FileExistsError, NotADirectoryError):
+            raise SweepError(f"results folder {str(self.out)!r} is (or lies under) a file, "
+                             "not a folder") from None
 
     def path(self, rid: str) -> Path:
         return self.runs_dir / f"{rid}.json"
@@ -308,14 +418,21 @@ class ResultStore:
             out[record["run_id"]] = record
         return out
 
-    def table(self, metrics: list | None = None):
-        """The consolidated table (pandas DataFrame), one row per run."""
+    def table(self, metrics: list | None = None, run_ids=None):
+        """The consolidated table (pandas DataFrame), one row per run (of ``run_ids`` only, when
+        given: the runs of one sweep)."""
         import pandas as pd
 
         rows = []
+        keep = None if run_ids is None else set(run_ids)
         for record in sorted(self.done().values(), key=lambda r: r.get("index", 0)):
-            row = {k: record[k] for k in ("run_id", "boat", "task", "world", "controller", "seed",
-                                          "status", "error", "wall_time", "version")}
+            if keep is not None and record["run_id"] not in keep:
+                continue
+            row = {"sweep_id": record.get("sweep_id"), "spec_hash": record.get("spec_hash")}
+            row.update({k: record[k] for k in ("run_id", "boat", "task", "world", "controller", "seed",
+                                               "status", "error", "wall_time")})
+            row["attempts"] = record.get("attempts")
+            row["version"] = record["version"]
             for ns in NAMESPACES:
                 for k, v in record.get(f"{ns}_options", {}).items():
                     row[f"{ns}.{k}"] = v
@@ -325,8 +442,8 @@ class ResultStore:
             rows.append(row)
         return pd.DataFrame(rows)
 
-    def consolidate(self, metrics: list | None = None) -> Path:
-        frame = self.table(metrics)
+    def consolidate(self, metrics: list | None = None, run_ids=None) -> Path:
+        frame = self.table(metrics, run_ids)
         path = self.out / "results.parquet"
         tmp = self.out / ".results.parquet.tmp"
         frame.to_parquet(tmp, index=False)
@@ -337,46 +454,109 @@ class ResultStore:
 
 # ----------------------------------------------------------------------------- the engine
 def run(spec, out, *, scheduler: str | None = None, workers: int | None = None,
-        resume: bool = False, retries: int = 2, progress: bool = True):
-    """Run a sweep; returns the consolidated table (pandas DataFrame).
+        resume: bool = False, retries: int = 2, progress: bool = True, exclusive: bool = False):
+    """Run a sweep; returns its table (pandas DataFrame): the rows of this sweep's runs.
 
     Parameters
     ----------
     spec : dict or path
-        The sweep description (validated here).
+        The sweep description (validated here: every run's option values, before any run).
     out : path
         Results folder.
     scheduler : str, optional
         ``None``: an embedded Dask LocalCluster on the local cores (worker processes);
-        ``"tcp://host:port"``: an existing Dask scheduler; ``"serial"``: in this process.
+        ``"tcp://host:port"``: an existing Dask scheduler (reached within ``CONNECT_TIMEOUT_S``,
+        else a one-line :class:`SweepError`); ``"serial"``: in this process.
     workers : int, optional
-        Worker processes of the embedded cluster (default: the number of cores).
+        Worker processes of the embedded cluster (``None`` or 0: the number of cores).
     resume : bool
-        Skip runs already recorded in ``out`` (finished, stopped, or failed after retries).
+        Skip runs already recorded in ``out`` (finished, stopped, or failed after retries),
+        except those the cluster lost (a worker died): they run again.
     retries : int
-        Extra attempts for a run that raises.
+        Extra attempts for a run that raises (or whose worker dies).
+    progress : bool
+        Show progress on stderr: a bar on a terminal, a line per 10 % elsewhere.
+    exclusive : bool
+        Refuse ``out`` if it holds a sweep with another description (the command line's
+        behaviour); by default sweeps may share a folder.
     """
+    _check_count("workers", workers, "(0: all cores)", none_ok=True)
+    _check_count("retries", retries, "")
     spec = load_spec(spec) if isinstance(spec, (str, Path)) else validate(spec)
-    store = ResultStore(out)
-    runs = expand(spec)
-    session = f"{os.getpid()}-{time.time():.6f}"
-    for i, r in enumerate(runs):
-        r["index"] = i
-        r["session"] = session
-    (store.out / "sweep.json").write_text(json.dumps(spec, indent=1, default=_plain))
-    done = store.done() if resume else {}
-    todo = [r for r in runs if r["run_id"] not in done]
-    bar = _progress(len(runs), len(runs) - len(todo), progress)
-    if scheduler == "serial":
-        for r in todo:
-            record = _with_retries(r, retries)
-            store.write(record)
-            bar.update(record)
-    elif todo:
-        _run_dask(todo, store, bar, scheduler, workers, retries)
-    bar.close()
-    store.consolidate(spec.get("metrics"))
-    return store.table(spec.get("metrics"))
+    if scheduler is not None and not isinstance(scheduler, str):
+        raise SweepError(f"scheduler must be an address tcp://host:port, 'serial' or None, "
+                         f"got {scheduler!r}")
+    if exclusive:
+        check_folder(spec, out)
+    client = _connect(scheduler) if scheduler not in (None, "serial") else None
+    try:
+        store = ResultStore(out)
+        runs = expand(spec)
+        session = f"{os.getpid()}-{time.time():.6f}"
+        sid, digest = sweep_id(spec), spec_hash(spec)
+        for i, r in enumerate(runs):
+            r.update(index=i, session=session, sweep_id=sid, spec_hash=digest)
+        (store.out / "sweep.json").write_text(json.dumps(spec, indent=1, default=_plain))
+        done = store.done() if resume else {}
+        kept = {r["run_id"]: done[r["run_id"]] for r in runs
+                if r["run_id"] in done and not lost(done[r["run_id"]])}
+        todo = [r for r in runs if r["run_id"] not in kept]
+        counts = dict.fromkeys(("ok", "stopped", "failed"), 0)
+        for record in kept.values():
+            counts[record["status"]] = counts.get(record["status"], 0) + 1
+        bar = Progress(len(runs), f"sweep {spec['name']}", sys.stderr, initial=len(kept),
+                       show=progress, counts=counts)
+        if scheduler == "serial":
+            for r in todo:
+                record = _with_retries(r, retries)
+                store.write(record)
+                bar.update(**{record["status"]: 1})
+        elif todo:
+            _run_dask(todo, store, bar, client, workers, retries)
+        bar.close()
+    finally:
+        if client is not None:
+            client.close()
+    ids = [r["run_id"] for r in runs]
+    store.consolidate(spec.get("metrics"), ids)
+    return store.table(spec.get("metrics"), ids)
+
+
+def lost(record: dict) -> bool:
+    """Whether a recorded run failed because the cluster lost it (its worker died, or the task
+    could not be run), not because of its simulation: ``resume`` runs these again."""
+    if record.get("status") != "failed":
+        return False
+    return bool(record.get("lost")) or str(record.get("error") or "").startswith("KilledWorker")
+
+
+def _check_count(name: str, value, unit: str, none_ok: bool = False) -> None:
+    if value is None and none_ok:
+        return
+    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0:
+        raise SweepError(f"{name} must be an integer >= 0{' ' + unit if unit else ''}, got {value!r}")
+
+
+def _connect(address: str):
+    """A Dask client of the scheduler at ``address``, or one line saying it cannot be reached."""
+    from dask.distributed import Client
+
+    _quiet_dask()
+    try:
+        return Client(address, timeout=CONNECT_TIMEOUT_S)
+    except Exception as err:  # OSError (timeout, refused), ValueError (malformed), DNS errors
+        why = (str(err).strip().splitlines() or [type(err).__name__])[0][:120]
+        raise SweepError(f"cannot reach the Dask scheduler at {address!r} within "
+                         f"{CONNECT_TIMEOUT_S:g} s ({why}); check --scheduler, or leave it out for "
+                         "the embedded cluster") from None
+
+
+def _quiet_dask() -> None:
+    import logging
+
+    for name in ("distributed", "distributed.scheduler", "distributed.nanny", "distributed.worker",
+                 "distributed.client", "distributed.core", "distributed.comm"):
+        logging.getLogger(name).setLevel(logging.ERROR)
 
 
 def _with_retries(r: dict, retries: int) -> dict:
@@ -389,21 +569,16 @@ def _with_retries(r: dict, retries: int) -> dict:
     return record
 
 
-def _run_dask(todo, store, bar, scheduler, workers, retries):
-    import logging
-
+def _run_dask(todo, store, bar, client, workers, retries):
+    """Run ``todo`` on ``client``'s cluster, or on an embedded LocalCluster when it is None."""
     from dask.distributed import Client, LocalCluster, as_completed
 
-    for name in ("distributed", "distributed.scheduler", "distributed.nanny", "distributed.worker"):
-        logging.getLogger(name).setLevel(logging.ERROR)
-
-    cluster = None
-    if scheduler is None:
+    _quiet_dask()
+    cluster = own = None
+    if client is None:
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                                processes=True, dashboard_address=None)
-        client = Client(cluster)
-    else:
-        client = Client(scheduler)
+        client = own = Client(cluster)
     try:
         attempts = {}
         owner = {}
@@ -420,7 +595,8 @@ def _run_dask(todo, store, bar, scheduler, workers, retries):
                 record = future.result()
             except Exception as err:  # a worker died too often, or the task could not run
                 record = {**r, "status": "failed", "error": f"{type(err).__name__}: {err}",
-                          "metrics": {}, "version": __version__, "wall_time": float("nan")}
+                          "lost": True, "metrics": {}, "version": __version__,
+                          "wall_time": float("nan")}
             if record["status"] == "failed" and attempts[r["run_id"]] <= retries:
                 n = attempts[r["run_id"]]
                 attempts[r["run_id"]] = n + 1
@@ -430,40 +606,12 @@ def _run_dask(todo, store, bar, scheduler, workers, retries):
                 continue
             record["attempts"] = attempts[r["run_id"]]
             store.write(record)
-            bar.update(record)
+            bar.update(**{record["status"]: 1})
     finally:
-        client.close()
+        if own is not None:
+            own.close()
         if cluster is not None:
             cluster.close()
-
-
-class _Progress:
-    """Runs done, failures and ETA (tqdm when asked, silent otherwise)."""
-
-    def __init__(self, total, already, show):
-        self.failures = 0
-        self.bar = None
-        if show:
-            from tqdm import tqdm
-
-            self.bar = tqdm(total=total, initial=already, unit="run", file=sys.stderr,
-                            dynamic_ncols=True)
-            self.bar.set_postfix(failed=0)
-
-    def update(self, record):
-        if record["status"] != "ok":
-            self.failures += 1
-        if self.bar is not None:
-            self.bar.update(1)
-            self.bar.set_postfix(failed=self.failures)
-
-    def close(self):
-        if self.bar is not None:
-            self.bar.close()
-
-
-def _progress(total, already, show):
-    return _Progress(total, already, show)
 
 
 def summarise(table, metric: str) -> str:

@@ -13,5 +13,11 @@ def read_toml(path, what: str, error: type[Exception] = ValueError) -> dict:
         return tomllib.loads(path.read_text())
     except FileNotFoundError:
         raise error(f"{what} {str(path)!r} does not exist") from None
+    except IsADirectoryError:
+        raise error(f"{what} {str(path)!r} is a folder, not a TOML file") from None
+    except UnicodeDecodeError:
+        raise error(f"{what} {str(path)!r} is not a text (TOML) file") from None
+    except OSError as err:
+        raise error(f"{what} {str(path)!r} cannot be read: {err.strerror or err}") from None
     except tomllib.TOMLDecodeError as err:
         raise error(f"{what} {str(path)!r} does not parse as TOML: {err}") from None

@@ -795,7 +795,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--controller", required=True, help="registered controller (pid, saoud, ...)")
     parser.add_argument("--world", default="mujoco", choices=("mujoco", "paper"))
     parser.add_argument("--seconds", type=float, default=30.0, help="simulated seconds (default 30)")
-    parser.add_argument("--out", required=True, help="output file (.mp4)")
+    parser.add_argument("--out", required=True, help="output file (.mp4); missing folders are made")
     parser.add_argument("--fps", type=float, default=25.0, help="frames per simulated second")
     parser.add_argument("--width", type=int, default=640)
     parser.add_argument("--height", type=int, default=480)
@@ -817,6 +817,14 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 def run_cli(args) -> int:
     """The ``video`` sub-command."""
+    out = Path(args.out)
+    if out.is_dir():
+        raise ValueError(f"--out {args.out!r} is a folder; give a file name such as "
+                         f"{str(out / 'run.mp4')!r}")
+    try:  # a missing folder is made
+        out.parent.mkdir(parents=True, exist_ok=True)
+    except (FileExistsError, NotADirectoryError):
+        raise ValueError(f"--out {args.out!r}: {str(out.parent)!r} is a file, not a folder") from None
     try:
         rec = record(args.boat, args.task, args.controller, args.out, seconds=args.seconds,
                      world=args.world, fps=args.fps, width=args.width, height=args.height,

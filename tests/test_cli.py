@@ -46,3 +46,50 @@ def test_bad_numbers_exit_2_with_one_line(argv, message, capsys):
     lines = capsys.readouterr().err.strip().splitlines()
     assert lines[-1].endswith(message)
     assert not any("Traceback" in line for line in lines)
+
+
+def _one_line(capsys) -> str:
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "Traceback" not in err, err
+    return err
+
+
+def _tiny_sweep(tmp_path):
+    path = tmp_path / "tiny.toml"
+    path.write_text('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\n'
+                    'controller = "pid"\nduration = 1.0\n')
+    return path
+
+
+@pytest.mark.parametrize("address,why", [("tcp://127.0.0.1:1", "Timed out trying to connect"),
+                                         ("nonsense", "missing port number")])
+def test_sweep_on_an_unreachable_scheduler_fails_fast_in_one_line(tmp_path, capsys, address, why):
+    assert main(["sweep", str(_tiny_sweep(tmp_path)), "--out", str(tmp_path / "o"), "--no-progress",
+                 "--scheduler", address]) == 2
+    err = _one_line(capsys)
+    assert f"cannot reach the Dask scheduler at {address!r} within 3 s" in err and why in err
+
+
+def test_sweep_given_a_folder_or_a_missing_file_exits_2(tmp_path, capsys):
+    assert main(["sweep", str(tmp_path)]) == 2
+    assert f"sweep file {str(tmp_path)!r} is a folder, not a TOML file" in _one_line(capsys)
+    assert main(["sweep", str(tmp_path / "nope.toml")]) == 2
+    assert f"sweep file {str(tmp_path / 'nope.toml')!r} does not exist" in _one_line(capsys)
+
+
+@pytest.mark.parametrize("command", [["sweep", "SWEEP"], ["polar", "saoud_robot"],
+                                     ["study", "saoud_fig6"]])
+def test_out_at_a_file_exits_2_in_one_line(tmp_path, capsys, command):
+    a_file = tmp_path / "taken"
+    a_file.write_text("not a folder")
+    argv = [str(_tiny_sweep(tmp_path)) if a == "SWEEP" else a for a in command]
+    assert main([*argv, "--out", str(a_file), "--no-progress"]) == 2
+    err = _one_line(capsys)
+    assert str(a_file) in err and "file" in err
+    assert a_file.read_text() == "not a folder"
+
+
+def test_video_out_at_a_folder_exits_2_in_one_line(tmp_path, capsys):
+    assert main(["video", "saoud_robot", "heading_hold", "--controller", "pid",
+                 "--out", str(tmp_path)]) == 2
+    assert f"--out {str(tmp_path)!r} is a folder; give a file name" in _one_line(capsys)

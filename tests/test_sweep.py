@@ -1,8 +1,8 @@
 """The sweep engine: Dask = serial, worker and driver deaths lose nothing, bad files exit 2."""
 
 import json
-import math
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -54,23 +54,29 @@ def test_dask_local_cluster_equals_serial(tmp_path):
     assert table["mean_surge"].notna().all()
 
 
-def test_failures_are_recorded_and_the_sweep_goes_on(tmp_path):
+def test_capsizes_are_stopped_not_failed(tmp_path):
     spec = dict(SPEC, grid={}, seeds=[0], duration=20.0,
                 boat="saoud_robot", controller="fixed_sail",
-                zip={"controller.sail_deg": [30.0, 30.0, 20.0],
-                     "controller.kp": [1.0, float("nan"), 1.0],
-                     "task.wind_speed": [4.0, 4.0, 16.0]},
+                zip={"controller.sail_deg": [30.0, 20.0], "task.wind_speed": [4.0, 16.0]},
                 options={"env.hydrostatics": "paper", "boat.l_phi": 0.1})
     table = sweep.run(spec, tmp_path, scheduler="serial", retries=1, progress=False)
-    by_kp = {(row["controller.kp"] if not math.isnan(row["controller.kp"]) else "nan",
-              row["task.wind_speed"]): row for _, row in table.iterrows()}
-    assert by_kp[(1.0, 4.0)]["status"] == "ok"
-    nan_run = by_kp[("nan", 4.0)]
-    assert nan_run["status"] == "failed" and "finite" in nan_run["error"]
-    record = json.loads(next((tmp_path / "runs").glob(f"{nan_run['run_id']}.json")).read_text())
-    assert record["attempts"] == 2  # retried once, then recorded
-    capsized = by_kp[(1.0, 16.0)]
+    by_wind = {row["task.wind_speed"]: row for _, row in table.iterrows()}
+    assert by_wind[4.0]["status"] == "ok"
+    capsized = by_wind[16.0]
     assert capsized["status"] == "stopped" and "capsized" in capsized["error"]
+    assert capsized["attempts"] == 1  # a stop is a result, not retried
+
+
+def test_failures_are_retried_recorded_and_the_sweep_goes_on(tmp_path):
+    """Viel's position keeper on a heading task has no target: it raises on its first step,
+    which no up-front check can know; the run is retried once, then recorded as failed."""
+    spec = dict(SPEC, controller="viel", grid={}, zip={}, options={}, seeds=[0, 1], duration=1.0)
+    table = sweep.run(spec, tmp_path, scheduler="serial", retries=1, progress=False)
+    assert list(table["status"]) == ["failed", "failed"]
+    assert table["error"].str.startswith("ValueError: VielController: no target").all()
+    assert list(table["attempts"]) == [2, 2]  # retried once, then recorded
+    record = json.loads((tmp_path / "runs" / f"{table['run_id'][0]}.json").read_text())
+    assert record["attempts"] == 2 and not record.get("lost")  # its own failure, not the cluster's
 
 
 def test_killing_a_worker_loses_and_duplicates_nothing(tmp_path):
@@ -142,6 +148,9 @@ def _toml(spec):
     return "\n".join(lines) + "\n"
 
 
+HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
+
+
 @pytest.mark.parametrize("body,message", [
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nspeed = 3\n',
      "unknown key(s) ['speed']"),
@@ -156,6 +165,23 @@ def _toml(spec):
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
      '[options]\n"boat.l_phi" = -1\n', "l_phi"),
     ('boat = [unclosed\n', "does not parse as TOML"),
+    # every run's values are checked before any run, not the first run's only
+    (HEAD + '[grid]\n"boat.l_phi" = [0.1, -1.0]\n',
+     "boat options {'l_phi': -1.0}: l_phi (metacentric height) must be positive, got -1.0"),
+    (HEAD + '[grid]\n"task.wind_speed" = [3.0, 500.0]\n',
+     "task options {'wind_speed': 500.0}: wind_speed must be a finite number >= 0 and <= 60 m/s"),
+    (HEAD + '[grid]\n"env.hydrostatics" = ["paper", "bogus"]\n',
+     "env.hydrostatics = 'bogus' is not one of ('off', 'paper', 'geometric')"),
+    (HEAD + '[zip]\n"env.control_timestep" = [0.1, -0.1]\n',
+     "control_timestep must be a positive time in s, got -0.1"),
+    (HEAD + '[options]\n"env.windage" = "yes"\n', "env.windage = 'yes': must be true or false"),
+    # controller options: unknown names list the accepted ones, bad values are named
+    (HEAD + '[options]\n"controller.kpp" = 1.0\n',
+     "unknown controller option 'kpp'; allowed: fraction, kd, ki, kp"),
+    (HEAD + '[grid]\n"controller.kp" = [1.0, nan]\n', "controller.kp = nan: must be a finite number"),
+    (HEAD + '[grid]\n"controller.kd" = [1.0, "2"]\n', "controller.kd = '2': must be a finite number"),
+    (HEAD.replace('"pid"', '"saoud"') + '[grid]\n"controller.wind_source" = ["ce", "gps"]\n',
+     "unknown wind source 'gps'; known: saoud_v, ce, masthead"),
 ])
 def test_bad_sweep_files_exit_2_with_one_clear_message(tmp_path, capsys, body, message):
     path = tmp_path / "bad.toml"
@@ -164,3 +190,13 @@ def test_bad_sweep_files_exit_2_with_one_clear_message(tmp_path, capsys, body, m
     err = capsys.readouterr().err
     assert message in err
     assert err.count("\n") == 1  # one line
+    assert not (tmp_path / "o").exists()  # refused before anything is written
+
+
+def test_the_library_checks_workers_and_retries(tmp_path):
+    for kwargs, message in [({"workers": -1}, "workers must be an integer >= 0 (0: all cores), got -1"),
+                            ({"workers": 1.5}, "workers must be an integer >= 0"),
+                            ({"retries": -1}, "retries must be an integer >= 0, got -1")]:
+        with pytest.raises(sweep.SweepError, match=re.escape(message)):
+            sweep.run(dict(SPEC, duration=1.0), tmp_path / "o", **kwargs)
+    assert not (tmp_path / "o").exists()

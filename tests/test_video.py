@@ -146,6 +146,15 @@ def test_cli_writes_video_and_still(tmp_path, capsys):
     assert not list(tmp_path.glob(".*partial*"))
 
 
+def test_cli_makes_the_missing_folders_of_out(tmp_path, capsys):
+    out = tmp_path / "not" / "yet" / "run.mp4"
+    code = video.main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
+                       "--out", str(out), "--fps", "10", "--width", "32", "--height", "24",
+                       "--camera", "side", "--no-progress"])
+    assert code == 0 and out.stat().st_size > 0
+    assert f"wrote {out}: 2 frames" in capsys.readouterr().out
+
+
 def test_study_scenario_goes_to_the_study_folder(tmp_path):
     rec = video.record_study_scenario(tmp_path, "saoud_robot", "heading_hold", "pid", seconds=0.3,
                                       fps=10, width=64, height=48, camera="top")
