@@ -18,6 +18,7 @@ import numpy as np
 
 UNIT = re.compile(r"\[[^\]]+\]|\([^)]*[A-Za-z°%/][^)]*\)")
 ROBUST_PERCENTILES = (2.0, 98.0)
+MIN_ROBUST = 10  # fewer values (a smoke grid): no value is an outlier of the others
 
 
 class FigureWarning(UserWarning):
@@ -63,8 +64,9 @@ def legend_below(fig, axes=None, ncol: int = 3, **kwargs):
 def robust_limits(values, percentiles=ROBUST_PERCENTILES) -> tuple[float, float, str]:
     """Colour limits that one outlier cannot take over: the ``percentiles`` of the finite values
     (a single extreme cell of a grid lies beyond them) when the full range is more than twice
-    as wide, else the full range. Returns (vmin, vmax, extend) with extend as matplotlib's
-    colorbar takes it ('neither', 'min', 'max', 'both': which ends are clipped)."""
+    as wide and there are at least ``MIN_ROBUST`` values, else the full range. Returns (vmin, vmax,
+    extend) with extend as matplotlib's colorbar takes it ('neither', 'min', 'max', 'both':
+    which ends are clipped)."""
     finite = np.asarray(values, dtype=float)
     finite = finite[np.isfinite(finite)]
     if finite.size == 0:
@@ -72,7 +74,7 @@ def robust_limits(values, percentiles=ROBUST_PERCENTILES) -> tuple[float, float,
     full_low, full_high = float(finite.min()), float(finite.max())
     low = float(np.percentile(finite, percentiles[0], method="higher"))
     high = float(np.percentile(finite, percentiles[1], method="lower"))
-    if high <= low or (full_high - full_low) <= 2.0 * (high - low):
+    if finite.size < MIN_ROBUST or high <= low or (full_high - full_low) <= 2.0 * (high - low):
         low, high = full_low, full_high
     if high <= low:
         low, high = low - 0.5, high + 0.5

@@ -65,6 +65,8 @@ def test_robust_limits_leave_one_outlier_out_and_say_so():
     # no outlier (full span 29 <= twice the robust span 27): the full range, nothing clipped
     assert figures.robust_limits(np.arange(30.0)) == (0.0, 29.0, "neither")
     assert figures.robust_limits([np.nan, 1.0, 3.0]) == (1.0, 3.0, "neither")
+    # a 2 x 2 smoke grid has too few cells to call one an outlier
+    assert figures.robust_limits([0.01, 0.01, 0.02, 0.3]) == (0.01, 0.3, "neither")
 
 
 def test_moments_are_in_newton_metres_below_a_kilonewton_metre():
