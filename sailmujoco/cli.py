@@ -75,31 +75,26 @@ def _check(args) -> int:
 
 
 def _plot_righting_curve(params, path: Path) -> None:
-    import matplotlib
+    from . import figures, stability
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    from . import stability
-
+    plt = figures.pyplot()
     heel = np.radians(np.linspace(0.0, 89.0, 90))
     curve = stability.righting_curve(params, heel)
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+    scale, unit = figures.moment_unit(max(float(np.max(np.abs(curve[k]))) for k in ("geometric", "sin")))
+    fig, ax = plt.subplots(figsize=(7, 4.6))
     deg = np.degrees(heel)
-    ax.plot(deg, curve["geometric"] / 1e3, lw=2.2, label="geometric hull (6-DOF)")
-    ax.plot(deg, curve["sin_cos"] / 1e3, "--", label=r"$\rho g \nabla GM_t \sin\phi\cos\phi$ (Wille eq. 20)")
-    ax.plot(deg, curve["sin"] / 1e3, ":", label=r"$m g l_\phi \sin\phi$ (Saoud eq. 4)")
-    ax.plot(deg[:25], curve["linear"][:25] / 1e3, color="0.6", lw=1, label=r"$\rho g \nabla GM_t\,\phi$")
+    ax.plot(deg, curve["geometric"] / scale, lw=2.2, label="geometric hull (6-DOF)")
+    ax.plot(deg, curve["sin_cos"] / scale, "--",
+            label=r"$\rho g \nabla GM_t \sin\phi\cos\phi$ (Wille eq. 20)")
+    ax.plot(deg, curve["sin"] / scale, ":", label=r"$m g l_\phi \sin\phi$ (Saoud eq. 4)")
+    ax.plot(deg[:25], curve["linear"][:25] / scale, color="0.6", lw=1, label=r"$\rho g \nabla GM_t\,\phi$")
     ax.set_xlabel("heel φ [deg]")
-    ax.set_ylabel("righting moment [kN m]")
+    ax.set_ylabel(f"righting moment [{unit}]")
     ax.set_title(f"{params.name}: righting moment vs heel (GM_t = {params.gm_t:g} m)")
     ax.set_xlim(0, 90)
     ax.set_ylim(bottom=0)
-    ax.grid(alpha=0.3)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    figures.legend_below(fig, ax, ncol=2)
+    figures.save(fig, path, dpi=120)
 
 
 def _sweep(args) -> int:
@@ -237,22 +232,53 @@ def _study(args) -> int:
         raise ValueError(f"unknown study {unknown[0]!r}; known: all, {', '.join(order)}")
     root = _out_folder(args.out)
     start = time.perf_counter()
+    took: dict[str, float] = {}
     for i, name in enumerate(names, 1):
         out = root / name
         out.mkdir(parents=True, exist_ok=True)
         t0 = time.perf_counter()
-        print(f"[{i}/{len(names)}] study {name}{' (smoke)' if args.smoke else ''} -> {out}",
-              flush=True)
+        print(f"[{i}/{len(names)}] study {name}{' (smoke)' if args.smoke else ''} -> {out}"
+              + (f"; {_progress_note(t0 - start, list(took.values()), len(names))}" if len(names) > 1
+                 else ""), flush=True)
         headline = studies[name].load()(out, smoke=args.smoke, workers=args.workers,
                                         progress=not args.no_progress, video=args.video)
         if args.video:
             _record_study_video(studies[name], out, args.smoke)
+        took[name] = time.perf_counter() - t0
         shown = ", ".join(f"{k} {v:.3g}" if isinstance(v, float) else f"{k} {v}"
                           for k, v in list(headline.items())[:6])
-        print(f"      done in {time.perf_counter() - t0:.0f} s: {shown}", flush=True)
+        print(f"      done in {took[name]:.0f} s: {shown}", flush=True)
+    if len(names) > 1:
+        print(timing_table(took, time.perf_counter() - start))
     print(f"all done in {time.perf_counter() - start:.0f} s; reports: "
           + ", ".join(str(root / n / "report.md") for n in names))
     return 0
+
+
+def _clock(seconds: float) -> str:
+    seconds = int(round(seconds))
+    return f"{seconds // 3600}:{seconds % 3600 // 60:02d}:{seconds % 60:02d}"
+
+
+def _progress_note(elapsed: float, took: list[float], total: int) -> str:
+    """'elapsed 0:01:05, ETA 0:04:20 (...)' before study len(took)+1 of ``total``: the ETA is
+    the finished studies' mean time times the studies left (none before the first ends)."""
+    if not took:
+        return f"elapsed {_clock(elapsed)}, ETA after the first study"
+    left = total - len(took)
+    return (f"elapsed {_clock(elapsed)}, ETA {_clock(left * sum(took) / len(took))} "
+            f"({left} left x the mean {sum(took) / len(took):.0f} s of the {len(took)} done)")
+
+
+def timing_table(took: dict[str, float], wall: float) -> str:
+    """The time each study took, and the total, as a plain text table."""
+    width = max([len("total (wall)")] + [len(n) for n in took])
+    lines = [f"{'study':{width}s} {'time [s]':>9s} {'share':>6s}", "-" * (width + 17)]
+    total = sum(took.values()) or 1.0
+    for name, seconds in took.items():
+        lines.append(f"{name:{width}s} {seconds:9.1f} {100 * seconds / total:5.0f} %")
+    lines.append(f"{'total (wall)':{width}s} {wall:9.1f}")
+    return "\n".join(lines)
 
 
 def build_parser() -> argparse.ArgumentParser:

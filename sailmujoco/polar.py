@@ -81,11 +81,9 @@ def best_vmg(frame):
 
 def plot_polar(frame, path, title: str) -> None:
     """The classic polar: speed against TWA, one curve per TWS, best VMG marked."""
-    import matplotlib
+    from . import figures
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = figures.pyplot()
     fig = plt.figure(figsize=(6.5, 6.5))
     ax = fig.add_subplot(projection="polar")
     ax.set_theta_zero_location("N")
@@ -101,23 +99,22 @@ def plot_polar(frame, path, title: str) -> None:
             v = float(group.loc[group["twa"] == a, "speed"].iloc[0])
             ax.plot([math.radians(a)], [v], marker, ms=10, color=line.get_color(),
                     markeredgecolor="k")
-    ax.set_xlabel("true wind angle [deg]   (▲ best VMG upwind, ▼ downwind)")
-    ax.set_title(title + "\nboat speed [m/s]", fontsize=10)
-    ax.legend(loc="lower left", bbox_to_anchor=(0.0, 0.0), fontsize=8)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    ax.annotate("true wind\nfrom 0° ", xy=(0.0, ax.get_rmax()), xycoords="data", xytext=(-14, 42),
+                textcoords="offset points", ha="right", va="center", fontsize=8, color="red",
+                arrowprops=dict(arrowstyle="-|>", color="red", lw=1.5), annotation_clip=False)
+    ax.set_xlabel("true wind angle TWA [deg], from where the wind comes\n(▲ best VMG upwind, ▼ downwind)")
+    ax.set_title(title + "\nradius: boat speed [m/s]", fontsize=10)
+    figures.legend_below(fig, ax, ncol=3)
+    figures.save(fig, path, dpi=120)
 
 
 def plot_comparison(frames: dict, path, title: str) -> None:
     """Speed against TWA for several sail laws (one panel per TWS)."""
-    import matplotlib
+    from . import figures
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
+    plt = figures.pyplot()
     tws_values = sorted(next(iter(frames.values()))["tws"].unique())
-    fig, axes = plt.subplots(1, len(tws_values), figsize=(4.2 * len(tws_values), 3.6),
+    fig, axes = plt.subplots(1, len(tws_values), figsize=(4.2 * len(tws_values), 3.8),
                              squeeze=False, sharey=False)
     styles = {"best": dict(color="k", ls="--", label="best fixed sail (vel_max)")}
     for ax, tws in zip(axes[0], tws_values, strict=True):
@@ -127,10 +124,7 @@ def plot_comparison(frames: dict, path, title: str) -> None:
             ax.plot(group["twa"], group["speed"], marker="o", ms=3, **style)
         ax.set_title(f"TWS {tws:g} m/s")
         ax.set_xlabel("true wind angle [deg]")
-        ax.grid(alpha=0.3)
-    axes[0][0].set_ylabel("steady speed [m/s]")
-    axes[0][0].legend(fontsize=8)
+        ax.set_ylabel("steady speed [m/s]")
+    figures.legend_below(fig, axes[0][0], ncol=len(frames))
     fig.suptitle(title)
-    fig.tight_layout()
-    fig.savefig(path, dpi=120)
-    plt.close(fig)
+    figures.save(fig, path, dpi=120)

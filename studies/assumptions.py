@@ -26,6 +26,7 @@ import pandas as pd
 from sailmujoco.controllers.base import Composite
 
 from sailmujoco import frames, stability, sweep
+from sailmujoco.figures import robust_limits
 from sailmujoco.params import get_boat
 
 from .common import Progress, Report, run_episode, save_figure, setup_matplotlib
@@ -95,20 +96,30 @@ def _delta(data, boat, config, value):
 
 
 def heatmap(plt, grid: pd.DataFrame, ax, title, unit, holds=None):
-    """The metric over TWA x TWS; hatched where the assumption holds (``holds(values)``)."""
+    """The metric over TWA x TWS, ✓ where the assumption holds (``holds(values)``). The colour
+    scale is robust (2nd-98th percentile when one cell would take it over): cells beyond it
+    take the end colour, print their value, and the colorbar's end is an arrow."""
     values = grid.to_numpy(dtype=float)
-    image = ax.imshow(values, origin="lower", aspect="auto", cmap="viridis")
+    vmin, vmax, extend = robust_limits(values)
+    image = ax.imshow(values, origin="lower", aspect="auto", cmap="viridis", vmin=vmin, vmax=vmax)
+    ax.grid(False)
     ax.set_xticks(range(len(grid.columns)), [f"{c:g}" for c in grid.columns])
     ax.set_yticks(range(len(grid.index)), [f"{i:g}" for i in grid.index])
     ax.set_xlabel("true wind angle [deg]")
     ax.set_ylabel("true wind speed [m/s]")
     ax.set_title(title, fontsize=9)
-    plt.colorbar(image, ax=ax, label=unit)
+    label = f"[{unit}]" + ("" if extend == "neither" else "\n(2nd-98th percentile; beyond: value printed)")
+    plt.colorbar(image, ax=ax, label=label, extend=extend)
     for (i, j), v in np.ndenumerate(values):
         if not np.isfinite(v):
             ax.text(j, i, "×", ha="center", va="center", color="red")  # capsized / no data
-        elif holds is not None and holds(v):
-            ax.text(j, i, "✓", ha="center", va="center", color="white", fontsize=8)
+            continue
+        mark = "✓" if holds is not None and holds(v) else ""
+        if v < vmin or v > vmax:
+            mark += f"{v:.3g}"
+        if mark:
+            ax.text(j, i, mark, ha="center", va="center", color="white" if v < vmax else "black",
+                    fontsize=8 if len(mark) < 2 else 7)
 
 
 def time_constants() -> dict:

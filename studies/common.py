@@ -122,44 +122,56 @@ def parallel_map(fn, items: list, workers: int | None = None, progress: bool = T
 
 
 class Progress:
-    """A tqdm bar over a known number of simulations (silent when ``show`` is False)."""
+    """Progress over a known number of simulations: a tqdm bar on a terminal; elsewhere (a batch
+    job's log, CI) a plain line at each tenth done, never a carriage return. Silent when
+    ``show`` is False."""
 
-    def __init__(self, total: int, label: str, show: bool = True):
-        self.bar = None
-        if show:
+    def __init__(self, total: int, label: str, show: bool = True, stream=None):
+        self.stream = stream or sys.stderr
+        self.total, self.label, self.done = total, label, 0
+        self.show, self.bar, self.start, self.printed = show, None, time.perf_counter(), 0
+        if show and _is_terminal(self.stream):
             from tqdm import tqdm
 
-            self.bar = tqdm(total=total, desc=label, unit="sim", file=sys.stderr,
+            self.bar = tqdm(total=total, desc=label, unit="sim", file=self.stream,
                             dynamic_ncols=True, leave=False)
 
     def step(self, n: int = 1) -> None:
+        self.done += n
         if self.bar is not None:
             self.bar.update(n)
+        elif self.show and self.total > 0:
+            tenth = 10 * self.done // self.total
+            if tenth > self.printed:
+                self.printed = tenth
+                print(f"      {self.label}: {self.done}/{self.total} ({100 * self.done // self.total} %), "
+                      f"{time.perf_counter() - self.start:.0f} s", file=self.stream, flush=True)
 
     def close(self) -> None:
         if self.bar is not None:
             self.bar.close()
 
 
+def _is_terminal(stream) -> bool:
+    try:
+        return bool(stream.isatty())
+    except (AttributeError, ValueError):
+        return False
+
+
 def setup_matplotlib():
-    import matplotlib
+    """matplotlib.pyplot for a study's figures (Agg, constrained layout, the package's style)."""
+    from sailmujoco import figures
 
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-
-    plt.rcParams.update({"figure.dpi": 110, "axes.grid": True, "grid.alpha": 0.3,
-                         "legend.fontsize": 8})
-    return plt
+    return figures.pyplot()
 
 
 def save_figure(fig, path: Path) -> Path:
-    """Lay out, write and close a study figure; returns its path."""
-    import matplotlib.pyplot as plt
+    """Check (:func:`sailmujoco.figures.problems`), write with nothing clipped, close; returns
+    its path."""
+    from sailmujoco import figures
 
-    fig.tight_layout()
-    fig.savefig(path)
-    plt.close(fig)
-    return path
+    return figures.save(fig, path)
 
 
 def timer():

@@ -19,6 +19,8 @@ import numpy as np
 import pandas as pd
 from sailmujoco.controllers.saoud import SaoudParams, optimal_sail
 
+from sailmujoco.figures import legend_below
+
 from .common import Report, save_figure, setup_matplotlib
 
 NAME = "saoud_fig3_fig4"
@@ -62,11 +64,11 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
             ax.plot(group["theta_v"], group[col], label=label)
     for ax, title in zip(axes, ("(a) optimal roll φ*", "(b) optimal sail δs*", "(c) attack α*"),
                          strict=True):
-        ax.set_xlabel("Θ_V [deg]")
+        ax.set_xlabel("apparent wind angle Θ_V [deg]")
         ax.set_ylabel(title.split(" ", 1)[1] + " [deg]")
         ax.set_title(title)
         ax.set_xlim(-180, 180)
-    axes[0].legend()
+    legend_below(fig, axes[0], ncol=4)
     fig.suptitle("Saoud Fig. 3 (reproduced): problem (5), no roll limit")
     save_figure(fig, out / "fig3.png")
 
@@ -75,12 +77,12 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     for case, group in fig4.groupby("case", sort=False):
         axes[0].plot(group["theta_v"], group["phi"], label=case + "°")
         axes[1].plot(group["theta_v"], group["delta"], label=case + "°")
-    for ax, title in zip(axes, ("(a) optimal roll φ* [deg]", "(b) optimal sail δs* [deg]"),
-                         strict=True):
-        ax.set_xlabel("Θ_V [deg]")
+    for ax, title in zip(axes, ("(a) optimal roll φ*", "(b) optimal sail δs*"), strict=True):
+        ax.set_xlabel("apparent wind angle Θ_V [deg]")
+        ax.set_ylabel(title.split(" ", 1)[1] + " [deg]")
         ax.set_title(title)
         ax.set_xlim(-180, 180)
-    axes[0].legend(title="|V| = 5 m/s, l_φ = 0.1 m")
+    legend_below(fig, axes[0], ncol=3, title="roll limit, at |V| = 5 m/s, l_φ = 0.1 m")
     fig.suptitle("Saoud Fig. 4 (reproduced): problem (14), roll limited")
     save_figure(fig, out / "fig4.png")
 

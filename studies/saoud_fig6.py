@@ -26,6 +26,7 @@ import numpy as np
 import pandas as pd
 from sailmujoco.controllers import factories
 
+from sailmujoco.figures import legend_below
 from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import get_boat
 from sailmujoco.tasks.sailing import SpeedTrial
@@ -237,16 +238,18 @@ def plot(series: pd.DataFrame, stats: dict, l_phi: float, path: Path) -> None:
         for start, angle, end in SEGMENTS:
             axes[0, col].text(0.5 * (start + end), 0.03, f"$\\angle v_w^B$ = {angle:g}°", ha="center",
                               transform=axes[0, col].get_xaxis_transform(), fontsize=8, color="0.3")
-    axes[0, 0].set_ylabel("(a) boat speed |v| [m/s]")
-    axes[1, 0].set_ylabel("(b) roll angle $\\phi$ [deg]")
+    for col in range(len(WORLDS)):
+        axes[0, col].set_ylabel("(a) boat speed |v| [m/s]")
+        axes[1, col].set_ylabel("(b) roll angle $\\phi$ [deg]")
     main = series[(series["l_phi"] == l_phi) & (series["sensor"] == WIND_SOURCE)
                   & (series["hydrostatics"] == "geometric") & (series["paper_model"] == "paper")]
     top = max(1.0, float(np.nanmax(main["speed"])) * 1.1)
     for ax in axes[0]:
         ax.set_ylim(0, top)
-    axes[0, 0].legend(loc="lower right", bbox_to_anchor=(1.0, 0.1))
+    legend_below(fig, axes[0, 0], ncol=2)
     fig.suptitle(f"Saoud Fig. 6 (reproduced): true wind {TRUE_WIND:g} m/s at the sail, heading 0 held "
-                 f"by a PID, $l_\\phi$ = {l_phi:g} m")
+                 f"by a PID, $l_\\phi$ = {l_phi:g} m\n$\\angle v_w^B$: the direction the wind blows "
+                 "towards, counter-clockwise from the bow (10° = wind from nearly astern)", fontsize=11)
     save_figure(fig, path)
 
 

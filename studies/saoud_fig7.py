@@ -29,6 +29,7 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import polar, sweep
+from sailmujoco.figures import legend_below
 
 from .common import Report, parallel_map, run_episode, save_figure, setup_matplotlib, timer
 from .saoud_fig6 import (
@@ -271,9 +272,8 @@ def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
             for a in g.loc[g["no_go"], "angle"]:
                 ax.axvspan(max(a - 7.5, 0.0), min(a + 7.5, 180.0), color="0.88", zorder=0, lw=0)
             if g["no_go"].any():
-                ax.text(g.loc[g["no_go"], "angle"].mean(), 0.9, "no-go", ha="center", fontsize=8,
-                        color="0.3", transform=ax.get_xaxis_transform())
-            ax.legend(loc="best", fontsize=7)
+                ax.text(g.loc[g["no_go"], "angle"].min() - 7.5, 0.97, "no-go ", ha="right", va="top",
+                        fontsize=8, color="0.3", transform=ax.get_xaxis_transform())
             ax.set_title(f"{titles[world]}, $l_\\phi$ = {l_phi:g} m", fontsize=10)
             ax.set_xlim(0, 180)
             ax.set_xticks(range(0, 181, 30))
@@ -281,8 +281,8 @@ def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
             if row == len(l_phis) - 1:
                 ax.set_xlabel("$\\angle v_w^B$: true wind direction (blowing to) relative to heading "
                               "[deg]\n0 = dead run, 180 = head to wind")
-            if col == 0:
-                ax.set_ylabel("maximum velocity [m/s]")
+            ax.set_ylabel("maximum velocity [m/s]")
+    legend_below(fig, axes, ncol=3)
     fig.suptitle(f"Saoud Fig. 7 (reproduced): steady speed at |v_w| = {TRUE_WIND:g} m/s (at the sail)")
     save_figure(fig, path)
 

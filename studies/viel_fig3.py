@@ -33,6 +33,7 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import frames, sweep
+from sailmujoco.figures import legend_below, wind_arrow
 from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
@@ -366,19 +367,12 @@ def _execute(out: Path, sweeps: dict, specs: list[dict], serial: bool, workers: 
 
 # --------------------------------------------------------------------------- figures
 def _wind_arrow(ax, case: int):
-    """Red arrow: where the wind blows (north, psi_tw = pi/2), with the direction swing."""
+    """Red arrow: where the wind blows (towards north, psi_tw = pi/2), its speed and the
+    direction swing, in the corner the trajectory leaves free."""
     speed, speed_osc, dir_osc = WIND_CASES[case]
-    x0, y0, length = 0.1, 0.72, 0.2
-    for swing, alpha, lw in ((0.0, 1.0, 2.5), (dir_osc, 0.45, 1.2), (-dir_osc, 0.45, 1.2)):
-        if swing == 0.0 and alpha < 1.0:
-            continue
-        ax.annotate("", xy=(x0 - length * math.sin(swing), y0 + length * math.cos(swing)), xytext=(x0, y0),
-                    xycoords="axes fraction",
-                    arrowprops=dict(arrowstyle="-|>", color="red", lw=lw, alpha=alpha))
-    text = f"{speed:g}" + (f"±{speed_osc:g}" if speed_osc else "") + " m/s"
-    if dir_osc:
-        text += f"\n±{math.degrees(dir_osc):.0f}°"
-    ax.text(x0 + 0.04, y0 + 0.02, text, transform=ax.transAxes, color="red", fontsize=7, va="bottom")
+    text = "wind " + f"{speed:g}" + (f"±{speed_osc:g}" if speed_osc else "") + " m/s"
+    text += "\nfrom S, blowing N" + (f"\n±{math.degrees(dir_osc):.0f}° swing" if dir_osc else "")
+    wind_arrow(ax, 0.0, text, swing_deg=math.degrees(dir_osc))
 
 
 def _trajectory_panel(ax, run: dict, case: int, start, title: str | None = None):
@@ -420,7 +414,7 @@ def figure_world(out: Path, key: str, runs: dict, start) -> Path:
         ax = fig.add_subplot(grid[i // 3, i % 3])
         _trajectory_panel(ax, runs[case], case, start)
         if i == 0:
-            ax.legend(loc="lower left", fontsize=7)
+            first = ax
     ax = fig.add_subplot(grid[2, :])
     top = 20.0
     for case, run in sorted(runs.items()):
@@ -442,7 +436,8 @@ def figure_world(out: Path, key: str, runs: dict, start) -> Path:
     ax.set_ylabel("distance to target [m]")
     ax.set_title("distance to the target p_T" + (f" (axis cut at {limit:.0f} m: the approach starts at "
                                                  f"{np.hypot(*start):.0f} m)" if top > limit else ""))
-    ax.legend(fontsize=7, loc="upper center", ncol=4, framealpha=0.9)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    legend_below(fig, first, ncol=5)
     fig.suptitle(f"Viel Fig. 3 reproduced, {LABELS[key]}: start {start} m, seed 0, dt {DT:g} s, paper's gains")
     return save_figure(fig, out / f"fig3_{key}.png")
 
@@ -492,7 +487,11 @@ def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: 
         ax.axhline(PAPER_MAX_M, color="black", ls="-.", lw=1.2, label="paper 6.4 m")
         ax.set_ylabel("max distance after the stop [m]")
         ax.set_ylim(0, 25)
-        ax.legend(fontsize=7, loc="upper left")
+        for bar in ax.patches:  # a bar beyond the axis says how far it goes
+            if bar.get_height() > 25:
+                ax.text(bar.get_x() + bar.get_width() / 2, 24.5, f"{bar.get_height():.0f}↑", ha="center",
+                        va="top", rotation=90, fontsize=7, color="white")
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.08), ncol=2)
     return save_figure(fig, out / "max_distance.png")
 
 
@@ -506,7 +505,7 @@ def figure_six_dof(out: Path, runs: dict) -> Path:
                 if math.isfinite(run["entered_at"]) else "never enters")
         _trajectory_panel(ax, run, int(run["case"]), DEFAULT_START,
                           title=f"{boat}, case {int(run['case'])}\n{VARIANT_LABELS[variant]}\n{note}")
-    axes[0][0].legend(loc="lower left", fontsize=6)
+    legend_below(fig, axes[0][0], ncol=5)
     return save_figure(fig, out / "six_dof_switches.png")
 
 

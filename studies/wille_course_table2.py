@@ -28,6 +28,7 @@ from sailmujoco.controllers.wille import WilleHeading
 from sailmujoco.controllers.wille_roll import WilleRollSail
 
 from sailmujoco import suite, sweep
+from sailmujoco.figures import legend_below, wind_arrow
 from sailmujoco.params import get_boat
 
 from .common import Report, parallel_map, relative_difference, save_figure, setup_matplotlib, timer
@@ -190,10 +191,11 @@ def figure_positions(results: dict, out: Path, plt) -> Path:
         span = max(40.0, max(abs(results[("main", world, law)]["trajectory"]["east"]).max()
                              for law in ("heading", "course")) * 1.3)
         ax.set_xlim(-span, span)
+        wind_arrow(ax, 130.0, "wind 5 m/s (U10)\nfrom 310° (NW),\nblowing to 130°")
     axes[0].set_ylabel("x, north [m]")
-    axes[0].legend(loc="lower left")
-    fig.suptitle("Fig. 4 (reproduced): position, heading and course controller "
-                 "(U10 = 5 m/s, β_w = 130°, 200 s)")
+    legend_below(fig, axes[0], ncol=2)
+    fig.suptitle("Fig. 4 (reproduced): position, heading and course controller\n"
+                 "(U10 = 5 m/s, β_w = 130°: the wind blows towards 130°, 200 s)")
     return save_figure(fig, out / "fig4_position.png")
 
 
@@ -215,7 +217,7 @@ def figure_course(results: dict, out: Path, plt) -> Path:
         ax.set_title(WORLDS[world])
         ax.set_ylim(-10, 10)
     axes[-1].set_xlabel("time [s]")
-    axes[0].legend(loc="lower right", ncol=2)
+    legend_below(fig, axes[0], ncol=2)
     fig.suptitle("Fig. 5 (reproduced): course, heading and course controller")
     return save_figure(fig, out / "fig5_course.png")
 

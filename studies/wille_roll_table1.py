@@ -45,6 +45,7 @@ import pandas as pd
 from sailmujoco.controllers.wille_roll import PHI_D, build_sail_tables
 
 from sailmujoco import sweep
+from sailmujoco.figures import legend_below, moment_unit
 from sailmujoco.params import get_boat
 
 from .common import Report, save_figure, setup_matplotlib, timer
@@ -340,7 +341,7 @@ def figure_series(r: Results, out, plt, column, sims, number, title, ylabel) -> 
             ax.axhline(10.0, color="k", lw=0.7, ls="--", label="φ_d = 10°")
         ax.set_ylabel(ylabel)
         ax.set_title(f"{label}, seed {seed}", fontsize=10)
-    axes[0].legend(loc="upper left", ncol=2, fontsize=7)
+    legend_below(fig, axes[0], ncol=2, fontsize=7)
     axes[-1].set_xlabel("time [s]")
     fig.suptitle(f"Fig. {number} (reproduced): {title}\nbeam reach, U10 = {WIND:g} m/s, last {WINDOW:g} s "
                  "of 300 s", fontsize=11)
@@ -363,7 +364,7 @@ def figure_seeds(r: Results, out, plt) -> Path:
         ax.set_title(f"seed {seed}: wind at the sail {n1['wind_ce']:.1f} m/s (window mean), "
                      f"sim 1 mean heel {n1['mean_heel']:.1f}°", fontsize=8)
         ax.set_ylabel("φ [deg]")
-    axes[0].legend(loc="upper left", ncol=3, fontsize=7)
+    legend_below(fig, axes[0], ncol=3, fontsize=7)
     axes[-1].set_xlabel("time [s]")
     fig.suptitle("Roll angle by gust realisation, paper world (last 50 s)", fontsize=11)
     return save_figure(fig, out / "fig5_seeds.png")
@@ -412,15 +413,18 @@ def figure_realisations(r: Results, out, plt) -> Path:
 
 def figure_moments(r: Results, out, plt) -> Path:
     fig, axes = plt.subplots(1, 2, figsize=(11, 4), sharey=True)
+    largest = max(float(np.nanmax(np.abs(r.raw[("shares", world, "sim1", 0)]["trajectory"][f"K_{term}"])))
+                  for world in WORLDS for term in TERMS)
+    scale, unit = moment_unit(largest)
     for ax, world in zip(axes, WORLDS, strict=True):
         traj = r.raw[("shares", world, "sim1", 0)]["trajectory"]
         for term in TERMS:
-            ax.plot(traj["t"], traj[f"K_{term}"] / 1e3, label=term.replace("_", " "))
+            ax.plot(traj["t"], traj[f"K_{term}"] / scale, label=term.replace("_", " "))
         ax.set_xlabel("time [s]")
         ax.set_title(WORLDS[world] + (" (restoring = buoyancy + weight)" if world == "mujoco" else ""),
                      fontsize=10)
-    axes[0].set_ylabel("roll moment about CO [kN m]")
-    axes[0].legend(ncol=3, fontsize=7)
+    axes[0].set_ylabel(f"roll moment about CO [{unit}]")
+    legend_below(fig, axes[0], ncol=6, fontsize=7)
     fig.suptitle(f"Fig. 3 (reproduced): moments in roll while beam reaching, U10 = {SHARES_WIND:g} m/s, "
                  "roll control off")
     return save_figure(fig, out / "fig3_moments.png")
@@ -444,8 +448,9 @@ def figure_fig8(tables, switch, out, plt) -> Path:
                     label=f"paper world, sail x{SAIL_FACTOR:g}, U10 = {wind:g} m/s")
     for wind, heel in PAPER_OPTIMUM_DEG.items():
         ax.axvline(heel, color=colours[wind], lw=0.8, alpha=0.5)
-    ax.text(35.3, 0.97, "paper's optima\n34° (13 m/s), 35° (16 m/s)", fontsize=7, va="top",
-            transform=ax.get_xaxis_transform())
+    ax.text(0.99, 0.02, "vertical lines: the paper's optima,\n34° (13 m/s, blue), 35° (16 m/s, red)",
+            fontsize=7, ha="right", va="bottom", transform=ax.transAxes,
+            bbox=dict(facecolor="white", edgecolor="0.8", alpha=0.9))
     ax.set_xlabel("desired heel φ_d [deg]")
     ax.set_ylabel("top speed in surge u [m/s] (mean of the last 50 s)")
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5))

@@ -1,0 +1,61 @@
+"""`study all` says where it is (study k of n, elapsed, ETA) and ends with the time each study
+took; where output is not a terminal, progress is plain lines, never carriage returns."""
+
+import io
+import time
+from types import SimpleNamespace
+
+from sailmujoco.studies.common import Progress, parallel_map
+
+from sailmujoco import cli
+
+
+def _fake_study(seconds):
+    def run(out, smoke=False, workers=None, progress=True, video=False):
+        time.sleep(seconds)
+        return {"answer": 42}
+    return SimpleNamespace(load=lambda: run, module=__name__)
+
+
+def test_study_all_prints_progress_eta_and_a_timing_table(monkeypatch, tmp_path, capsys):
+    monkeypatch.setattr(cli, "_studies", lambda: {"fast_a": _fake_study(0.0), "fast_b": _fake_study(0.05)})
+    assert cli.main(["study", "all", "--smoke", "--out", str(tmp_path)]) == 0
+    out = capsys.readouterr().out
+    lines = out.splitlines()
+    assert "\r" not in out
+    # per study: a start line and a done line; then the table (header, rule, 2 rows, total), the end
+    assert len(lines) == 2 * 2 + 5 + 1
+    assert lines[0].startswith("[1/2] study fast_a (smoke)") and "ETA after the first study" in lines[0]
+    assert lines[2].startswith("[2/2] study fast_b (smoke)") and "ETA 0:00:00 (1 left" in lines[2]
+    table = lines[4:9]
+    assert table[0].split() == ["study", "time", "[s]", "share"]
+    assert [row.split()[0] for row in table[2:4]] == ["fast_a", "fast_b"]
+    assert float(table[3].split()[1]) >= 0.05  # fast_b slept 0.05 s
+    assert table[4].startswith("total (wall)")
+    assert lines[-1].startswith("all done in")
+
+
+def test_progress_off_a_terminal_is_a_plain_line_per_tenth():
+    stream = io.StringIO()  # not a terminal
+    bar = Progress(40, "sims", True, stream=stream)
+    for _ in range(40):
+        bar.step()
+    bar.close()
+    text = stream.getvalue()
+    assert "\r" not in text
+    lines = text.splitlines()
+    assert len(lines) == 10
+    assert "sims: 4/40 (10 %)" in lines[0] and "sims: 40/40 (100 %)" in lines[-1]
+    silent = io.StringIO()
+    quiet = Progress(40, "sims", False, stream=silent)
+    quiet.step(40)
+    assert silent.getvalue() == ""
+
+
+def test_parallel_map_progress_in_a_log_has_no_carriage_return(capsys):
+    assert parallel_map(abs, [-1, -2, -3], workers=1, progress=True, label="runs") == [1, 2, 3]
+    err = capsys.readouterr().err
+    assert "\r" not in err
+    # 3 items cross a tenth at each: 1/3 (33 %), 2/3 (66 %), 3/3 (100 %)
+    assert [line.split(",")[0].strip() for line in err.splitlines()] == [
+        "runs: 1/3 (33 %)", "runs: 2/3 (66 %)", "runs: 3/3 (100 %)"]
