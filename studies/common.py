@@ -15,12 +15,12 @@ the ``sailmujoco.studies`` entry points, so ``sailmujoco study NAME`` finds it.
 from __future__ import annotations
 
 import math
-import sys
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from sailmujoco import suite, sweep
+from sailmujoco.progress import Progress
 
 
 def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
@@ -104,59 +104,21 @@ def parallel_map(fn, items: list, workers: int | None = None, progress: bool = T
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
     workers = workers or multiprocessing.cpu_count() or 1
-    bar = Progress(len(items), label, progress)
+    bar = Progress(len(items), label, show=progress, unit="sim")
     results = [None] * len(items)
     if workers <= 1 or len(items) <= 1:
         for i, item in enumerate(items):
             results[i] = fn(item)
-            bar.step()
+            bar.update()
     else:
         context = multiprocessing.get_context("spawn")
         with ProcessPoolExecutor(max_workers=min(workers, len(items)), mp_context=context) as pool:
             futures = {pool.submit(fn, item): i for i, item in enumerate(items)}
             for future in as_completed(futures):
                 results[futures[future]] = future.result()
-                bar.step()
+                bar.update()
     bar.close()
     return results
-
-
-class Progress:
-    """Progress over a known number of simulations: a tqdm bar on a terminal; elsewhere (a batch
-    job's log, CI) a plain line at each tenth done, never a carriage return. Silent when
-    ``show`` is False."""
-
-    def __init__(self, total: int, label: str, show: bool = True, stream=None):
-        self.stream = stream or sys.stderr
-        self.total, self.label, self.done = total, label, 0
-        self.show, self.bar, self.start, self.printed = show, None, time.perf_counter(), 0
-        if show and _is_terminal(self.stream):
-            from tqdm import tqdm
-
-            self.bar = tqdm(total=total, desc=label, unit="sim", file=self.stream,
-                            dynamic_ncols=True, leave=False)
-
-    def step(self, n: int = 1) -> None:
-        self.done += n
-        if self.bar is not None:
-            self.bar.update(n)
-        elif self.show and self.total > 0:
-            tenth = 10 * self.done // self.total
-            if tenth > self.printed:
-                self.printed = tenth
-                print(f"      {self.label}: {self.done}/{self.total} ({100 * self.done // self.total} %), "
-                      f"{time.perf_counter() - self.start:.0f} s", file=self.stream, flush=True)
-
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.close()
-
-
-def _is_terminal(stream) -> bool:
-    try:
-        return bool(stream.isatty())
-    except (AttributeError, ValueError):
-        return False
 
 
 def setup_matplotlib():

@@ -162,13 +162,13 @@ def cases(l_phis) -> tuple[list[Case], list[Case]]:
 
 
 def simulate(all_cases, progress: bool):
-    bar = Progress(len(all_cases), "Fig. 6 speed trials", progress)
+    bar = Progress(len(all_cases), "Fig. 6 speed trials", show=progress, unit="sim")
     stats, frames = {}, []
     for case in all_cases:
         series = episode(case)
         stats[case] = segment_stats(series)
         frames.append(series.assign(**case._asdict()))
-        bar.step()
+        bar.update()
     bar.close()
     columns = list(Case._fields) + ["t", "speed", "u", "heel_deg", "heading_deg", "sail_deg",
                                     "rudder_deg", "awa_deg"]

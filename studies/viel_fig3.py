@@ -328,11 +328,11 @@ def _execute(out: Path, sweeps: dict, specs: list[dict], serial: bool, workers: 
         for key, spec in sweeps.items():
             sweep.run(spec, out / "sweeps" / key, scheduler="serial", progress=progress)
         timings["sweeps_s"] = clock()
-        bar = Progress(len(specs), "viel_fig3 switches", progress)
+        bar = Progress(len(specs), "viel_fig3 switches", show=progress, unit="sim")
         results = []
         for spec in specs:
             results.append(simulate(spec))
-            bar.step()
+            bar.update()
         bar.close()
         timings["switches_s"] = clock() - timings["sweeps_s"]
     else:
@@ -351,11 +351,11 @@ def _execute(out: Path, sweeps: dict, specs: list[dict], serial: bool, workers: 
             for key, spec in sweeps.items():
                 sweep.run(spec, out / "sweeps" / key, scheduler=cluster.scheduler_address, progress=progress)
             timings["sweeps_s"] = clock() - timings["cluster_start_s"]
-            bar = Progress(len(specs), "viel_fig3 switches", progress)
+            bar = Progress(len(specs), "viel_fig3 switches", show=progress, unit="sim")
             results = []
             for future in as_completed(futures):
                 results.append(future.result())
-                bar.step()
+                bar.update()
             bar.close()
             timings["switches_s"] = clock() - timings["cluster_start_s"] - timings["sweeps_s"]
         finally:
