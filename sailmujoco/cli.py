@@ -336,9 +336,10 @@ def build_parser() -> argparse.ArgumentParser:
     study.add_argument("--no-progress", action="store_true")
     study.set_defaults(func=_study)
 
-    from . import video
+    from . import video, view
 
     video.add_parser(sub)
+    view.add_parser(sub)
     return parser
 
 

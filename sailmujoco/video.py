@@ -274,6 +274,10 @@ class SceneRenderer:
         First line of the text box (boat, task, controller).
     follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
         Camera settings (module docstring); distances in m, lag in s.
+    offscreen : bool
+        Make the offscreen GL context that :meth:`render` draws with. Without it the display
+        model, :meth:`pose`, :meth:`decorate` and :meth:`text_lines` serve a window that has its
+        own context (``sailmujoco view``).
     """
 
     def __init__(self, params, width: int = 640, height: int = 480, camera: str = "follow",
@@ -281,10 +285,13 @@ class SceneRenderer:
                  target: dict | None = None, labels: str = "",
                  follow_distance: float | None = None, follow_bearing_deg: float = 150.0,
                  follow_elevation_deg: float = -14.0, follow_lag: float = 3.0,
-                 top_center=None, top_extent: float | None = None):
+                 top_center=None, top_extent: float | None = None, offscreen: bool = True):
         if camera not in CAMERAS:
             raise ValueError(f"unknown camera {camera!r}; choose one of {CAMERAS}")
-        mujoco = _import_gl()
+        if offscreen:
+            mujoco = _import_gl()
+        else:
+            import mujoco
         self._mujoco = mujoco
         self.params = params
         self.width, self.height = int(width), int(height)
@@ -317,15 +324,18 @@ class SceneRenderer:
             self._camera.type = mujoco.mjtCamera.mjCAMERA_FREE
         self._option = mujoco.MjvOption()
         self._option.sitegroup[:] = 0  # the force points are drawn as arrows, not as sites
-        self._renderer = _renderer(m, self.width, self.height)  # GL context
-        flags = self._renderer.scene.flags
-        flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
-        flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
         self._font = None
+        self._renderer = None
+        if offscreen:
+            self._renderer = _renderer(m, self.width, self.height)  # GL context
+            flags = self._renderer.scene.flags
+            flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
+            flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
 
     def close(self) -> None:
         """Free the GL context (the renderer cannot draw afterwards)."""
-        self._renderer.close()
+        if self._renderer is not None:
+            self._renderer.close()
 
     def __enter__(self) -> SceneRenderer:
         return self
@@ -385,7 +395,8 @@ class SceneRenderer:
         cam.elevation = elevation_deg
 
     # ---- the scene
-    def _pose(self, snap: Snapshot) -> None:
+    def pose(self, snap: Snapshot) -> None:
+        """Pose the display model (``self.data``) as ``snap``."""
         mujoco = self._mujoco
         m, d = self.model, self.data
         d.qpos[0:3] = snap.position
@@ -419,7 +430,7 @@ class SceneRenderer:
             mujoco.mjv_connector(geom, mujoco.mjtGeom.mjGEOM_ARROW, width, np.asarray(start, float),
                                  np.asarray(start, float) + vector)
 
-    def _decorate(self, scene, snap: Snapshot) -> None:
+    def decorate(self, scene, snap: Snapshot) -> None:
         """Add the wind arrow, force arrows, target and circles to MuJoCo's scene."""
         mujoco, d = self._mujoco, self.data
         wind = np.array([snap.wind[0], snap.wind[1], 0.0])
@@ -462,17 +473,20 @@ class SceneRenderer:
     # ---- a frame
     def render(self, snap: Snapshot, note: str | None = None) -> np.ndarray:
         """One RGB frame (height, width, 3) uint8 of ``snap``; ``note`` adds a red line."""
-        self._pose(snap)
+        if self._renderer is None:
+            raise RuntimeError("this SceneRenderer was made with offscreen=False: no GL context to draw")
+        self.pose(snap)
         self._place_camera(snap)
         renderer = self._renderer
         renderer.update_scene(self.data, self._camera, self._option)
-        self._decorate(renderer.scene, snap)
+        self.decorate(renderer.scene, snap)
         frame = renderer.render()
         if self.show_overlay or note:
             frame = self._text(frame, snap, note)
         return np.ascontiguousarray(frame)
 
-    def _lines(self, snap: Snapshot) -> list[str]:
+    def text_lines(self, snap: Snapshot) -> list[str]:
+        """The text box's lines: labels, time, speed, heel, apparent wind, rudder, sail."""
         lines = [self.labels] if self.labels else []
         lines += [f"t {snap.time:.1f} s    speed {snap.speed:.2f} m/s ({snap.speed / KNOT:.1f} kn)",
                   f"heel {math.degrees(snap.heel):+.1f}°    AWA {math.degrees(snap.awa):+.0f}°    "
@@ -494,7 +508,7 @@ class SceneRenderer:
         size = font.size
         pad, step = size // 2, round(1.3 * size)
         if self.show_overlay:  # a box in the upper left: the lines, then the colour legend
-            lines = self._lines(snap)
+            lines = self.text_lines(snap)
             legend = [(name, COLOURS[name]) for name in FORCES] if self.show_forces else []
             legend.append(("wind", COLOURS["wind"]))
             entries = [size + draw.textlength(name, font=font) + size for name, _ in legend]
