@@ -69,6 +69,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .progress import Progress
+
 CAMERAS = ("follow", "top", "side")
 FORCES = ("sail", "keel", "rudder")
 FORCE_SITES = {"sail": "sail_ce", "keel": "keel_cp", "rudder": "rudder_cp"}
@@ -624,7 +626,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     quality : float
         imageio-ffmpeg quality, 1-10 (6: x264 CRF 20).
     progress : bool
-        A tqdm bar over frames on stderr.
+        Progress over frames on stderr: a bar on a terminal, a plain line per tenth elsewhere.
     follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
         Camera settings, see :class:`SceneRenderer`.
     options
@@ -652,6 +654,14 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     if seconds is not None and not (math.isfinite(seconds) and seconds > 0):
         raise ValueError(f"seconds must be a positive number of simulated seconds, got {seconds!r}")
     width, height = _even("width", width), _even("height", height)
+    if follow_distance is not None and not (math.isfinite(follow_distance) and follow_distance > 0):
+        raise ValueError(f"follow_distance (--distance) must be a number > 0 m, got {follow_distance!r}")
+    if not math.isfinite(follow_bearing_deg):
+        raise ValueError(f"follow_bearing_deg (--bearing) must be a finite angle in degrees, "
+                         f"got {follow_bearing_deg!r}")
+    for key, option in (("time_limit", "seconds (--seconds)"), ("seed", "seed (--seed)")):
+        if key in options:
+            raise ValueError(f"{key} is set by the argument {option}, not as an environment option")
     if not 1 <= quality <= 10:
         raise ValueError(f"quality must be between 1 and 10, got {quality!r}")
     _import_gl()
@@ -700,11 +710,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
                                          ffmpeg_log_level="error",
                                          output_params=["-preset", "faster", "-movflags", "+faststart"])
     writer.send(None)
-    bar = None
-    if progress:
-        from tqdm import tqdm
-
-        bar = tqdm(total=n_frames, unit="frame", file=sys.stderr, dynamic_ncols=True)
+    bar = Progress(n_frames, "video", show=progress, unit="frame")
     state = {"count": 0, "last": None}
 
     def due() -> float | None:
@@ -715,8 +721,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
         writer.send(frame)
         state["count"] += 1
         state["last"] = (snap, frame)
-        if bar is not None:
-            bar.update(1)
+        bar.update()
 
     ok = False
     try:
@@ -749,8 +754,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     finally:
         writer.close()
         renderer.close()
-        if bar is not None:
-            bar.close()
+        bar.close()
         if ok:
             os.replace(partial, out_path)
         else:
@@ -831,6 +835,9 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 def run_cli(args) -> int:
     """The ``video`` sub-command."""
+    for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
+        if key in dict(args.set):
+            raise ValueError(f"--set {key}=... is the option {option}")
     out = Path(args.out)
     if out.is_dir():
         raise ValueError(f"--out {args.out!r} is a folder; give a file name such as "

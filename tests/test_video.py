@@ -150,9 +150,27 @@ def test_cli_makes_the_missing_folders_of_out(tmp_path, capsys):
     out = tmp_path / "not" / "yet" / "run.mp4"
     code = video.main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
                        "--out", str(out), "--fps", "10", "--width", "32", "--height", "24",
-                       "--camera", "side", "--no-progress"])
+                       "--camera", "side"])
     assert code == 0 and out.stat().st_size > 0
-    assert f"wrote {out}: 2 frames" in capsys.readouterr().out
+    captured = capsys.readouterr()
+    assert f"wrote {out}: 2 frames" in captured.out
+    # progress into a captured (non-terminal) stream: plain lines, no carriage-return bar
+    assert "\r" not in captured.err
+    assert captured.err.splitlines()[-1].startswith("video: 2/2 (100 %)")
+
+
+@pytest.mark.parametrize("argument, message", [
+    (["--distance", "-3"], "--distance) must be a number > 0 m"),
+    (["--camera", "top", "--bearing", "nan"], "--bearing) must be a finite angle"),
+    (["--set", "seed=3"], "--set seed=... is the option --seed"),
+    (["--set", "time_limit=3"], "--set time_limit=... is the option --seconds"),
+])
+def test_cli_bad_camera_and_episode_arguments_are_one_line(tmp_path, capsys, argument, message):
+    code = video.main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
+                       "--out", str(tmp_path / "x.mp4"), *argument])
+    err = capsys.readouterr().err
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1
+    assert not (tmp_path / "x.mp4").exists()
 
 
 def test_study_scenario_goes_to_the_study_folder(tmp_path):
