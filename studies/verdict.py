@@ -98,14 +98,18 @@ def range_of(diffs: list[Difference], fmt: str = "{:+.1f}") -> str:
     differ, or the reference within its floor of zero) apart in their unit, each with its count."""
     rel = [d.value for d in diffs if d.finite and d.relative]
     ab = [d.value for d in diffs if d.finite and not d.relative]
+    def count(n):
+        return f"{n} point" + ("s" if n != 1 else "")
+
     parts = []
     if rel:
-        parts.append(f"{value_range(rel, 100, fmt)} % ({len(rel)} points)")
+        parts.append(f"{value_range(rel, 100, fmt)} % ({count(len(rel))})")
     if ab:
         unit = next(d.unit for d in diffs if d.finite and not d.relative)
         floor = next(d.floor for d in diffs if d.finite and not d.relative)
-        parts.append(f"{value_range(ab, 1.0, '{:+.3g}')} {unit} where the reference is below "
-                     f"{floor:g} {unit} ({len(ab)} points)".replace("  ", " "))
+        span = f"{ab[0]:+.3g}" if len(ab) == 1 else value_range(ab, 1.0, "{:+.3g}")
+        parts.append(f"{span} {unit} where the reference is below {floor:g} {unit} "
+                     f"({count(len(ab))})".replace("  ", " "))
     return "; ".join(parts) if parts else "—"
 
 
