@@ -71,6 +71,7 @@ class Report:
             flag = " ⚠" if diff.finite and diff.beyond(verdict.TOLERANCE) else ""
             table.append({**row, "difference": diff.text() + flag})
         self.table(table, ["quantity", "world", "paper", "ours", "difference", "cause"])
+        self.paragraph(verdict.DIFFERENCE_NOTE)
 
     def figure(self, path: Path, caption: str) -> None:
         self.parts.append(f"![{caption}]({Path(path).name})\n\n*{caption}*\n")

@@ -25,6 +25,9 @@ from dataclasses import dataclass
 import numpy as np
 
 TOLERANCE = 0.10  # a difference beyond 10 % is flagged in the comparison tables
+DIFFERENCE_NOTE = ("*difference*: ours against the paper as a change in size, (|ours| − |paper|) / |paper|, when "
+                   "both have the same sign; the absolute difference, in the quantity's unit, when the signs "
+                   "differ or the paper's number is 0; ⚠ beyond 10 %.")
 
 
 @dataclass(frozen=True)

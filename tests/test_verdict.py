@@ -100,6 +100,7 @@ def test_comparison_table_takes_its_difference_from_the_function():
     assert "| — |" in lines[4]
     assert "| +3 m (signs differ) ⚠ |" in lines[5]
     assert not math.isnan(verdict.difference(2.0, -1.0).value)
+    assert report.parts[1].strip() == verdict.DIFFERENCE_NOTE  # the table says how it is computed
 
 
 def test_combined_holds_only_when_every_criterion_holds():
