@@ -10,6 +10,14 @@ from pathlib import Path
 
 import numpy as np
 
+CHECK_LEGEND = """\
+  max|heel|  largest heel over the run (deg)
+  mean u     mean surge speed (m/s)
+  V/V0       submerged hull volume at the run's last step over the design displacement volume
+             (geometric hydrostatics only, '-' for paper; 1 = floating at its design weight,
+             it swings about 1 while the boat heaves)
+  us/step    wall time per physics sub-step (microseconds)"""
+
 
 def _check(args) -> int:
     """Load every boat in both hydrostatic modes, sail it in gusty wind, report health."""
@@ -24,6 +32,7 @@ def _check(args) -> int:
           f"random commands every 0.5 s, seed {args.seed}")
     header = (f"{'boat':12s} {'hydrostatics':12s} {'status':8s} {'max|heel|':>9s} "
               f"{'mean u':>7s} {'V/V0':>7s} {'us/step':>8s}")
+    print(CHECK_LEGEND)
     print(header)
     print("-" * len(header))
     for boat in boats:
@@ -57,7 +66,8 @@ def _check(args) -> int:
             ratio = physics.submerged_volume() / params.displaced_volume if mode == "geometric" \
                 else float("nan")
             print(f"{boat:12s} {mode:12s} {status:8s} {np.degrees(np.max(np.abs(heels))):8.1f}° "
-                  f"{np.mean(speeds):7.2f} {ratio:7.3f} {1e6 * elapsed / max(steps, 1):8.1f}")
+                  f"{np.mean(speeds):7.2f} {'-' if math.isnan(ratio) else f'{ratio:.3f}':>7s} "
+                  f"{1e6 * elapsed / max(steps, 1):8.1f}")
         small = math.radians(2.0)
         moment = stability.righting_moment(params, small)
         expected = params.rho_water * 9.81 * params.displaced_volume * params.gm_t * small
@@ -206,6 +216,34 @@ STUDY_ORDER = ("saoud_fig3_fig4", "saoud_fig6", "saoud_fig7", "wille_course_tabl
                "wille_roll_table1", "viel_fig3", "assumptions")
 
 
+def study_titles() -> dict[str, str]:
+    """name -> the study's TITLE, read from its source without importing it (``--help`` stays fast)."""
+    import ast
+    import importlib.util
+
+    titles = {}
+    studies = _studies()
+    for name in [n for n in STUDY_ORDER if n in studies] + sorted(set(studies) - set(STUDY_ORDER)):
+        title = ""
+        spec = importlib.util.find_spec(studies[name].module)
+        if spec is not None and spec.origin and spec.origin.endswith(".py"):
+            tree = ast.parse(Path(spec.origin).read_text(encoding="utf-8"))
+            for node in tree.body:
+                named = any(getattr(target, "id", None) == "TITLE" for target in getattr(node, "targets", []))
+                if named and isinstance(node.value, ast.Constant):
+                    title = str(node.value.value)
+        titles[name] = title
+    return titles
+
+
+def _study_epilog() -> str:
+    titles = study_titles()
+    width = max((len(n) for n in titles), default=0)
+    return ("studies (each writes results/<name>/report.md, CSV data and PNG figures):\n"
+            + "\n".join(f"  {n:{width}s}  {t}" for n, t in titles.items())
+            + f"\n  {'all':{width}s}  every study above, in this order")
+
+
 def _record_study_video(entry_point, out: Path, smoke: bool) -> None:
     """Record the study's main scenario (its module's VIDEO dict) into its results folder."""
     import importlib
@@ -286,7 +324,9 @@ def build_parser() -> argparse.ArgumentParser:
         prog="sailmujoco",
         description="A MuJoCo 6-DOF testbed for autonomous sailboat control laws.")
     sub = parser.add_subparsers(dest="command", required=True)
-    check = sub.add_parser("check", help="load every boat, sail it, print a health report")
+    check = sub.add_parser("check", help="load every boat, sail it, print a health report",
+                           epilog="columns of the report:\n" + CHECK_LEGEND,
+                           formatter_class=argparse.RawDescriptionHelpFormatter)
     check.add_argument("--boat", action="append", help="only this boat (repeatable)")
     check.add_argument("--seconds", type=POSITIVE_SECONDS, default=20.0, help="simulated time per run (s)")
     check.add_argument("--wind", type=_number(0.0, low_open=False, unit="m/s"), default=10.0,
@@ -327,8 +367,9 @@ def build_parser() -> argparse.ArgumentParser:
     polar.add_argument("--no-progress", action="store_true")
     polar.set_defaults(func=_polar)
 
-    study = sub.add_parser("study", help="regenerate a paper's figures and tables (or 'all')")
-    study.add_argument("name", help="study name, or 'all'")
+    study = sub.add_parser("study", help="regenerate a paper's figures and tables (or 'all')",
+                           epilog=_study_epilog(), formatter_class=argparse.RawDescriptionHelpFormatter)
+    study.add_argument("name", help="study name (listed below), or 'all'")
     study.add_argument("--smoke", action="store_true", help="short runs (under a minute)")
     study.add_argument("--out", default="results", help="results root (default results/)")
     study.add_argument("--workers", type=WORKERS, help="worker processes for the sweeps (0: all cores)")

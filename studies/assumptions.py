@@ -29,6 +29,7 @@ from sailmujoco import frames, stability, sweep
 from sailmujoco.figures import robust_limits
 from sailmujoco.params import get_boat
 
+from . import verdict
 from .common import Progress, Report, run_episode, save_figure, setup_matplotlib
 
 NAME = "assumptions"
@@ -59,6 +60,8 @@ BUILT = (
 CONFIGS.update({name: options for name, options, _, _ in BUILT})
 SPEED_HOLDS = 0.05  # an assumption "holds" where it changes the steady speed by less than 5 %
 HEEL_HOLDS_DEG = 1.0  # ... and the steady heel by less than 1 deg
+SPEED_FLOOR = 0.3  # m/s: below it the as-built boat is stalled (in irons, or its heading lost) and
+#                    a speed change is given in m/s, not in % of ~0 (studies.verdict.difference)
 FROUDE_WALL = 0.45  # the displacement hull's wave-making wall (Larsson & Eliasson, ch. 5)
 
 
@@ -93,6 +96,38 @@ def _delta(data, boat, config, value):
     base = _pivot(data, boat, "baseline", value)
     other = _pivot(data, boat, config, value)
     return other - base
+
+
+def speed_effects(data: pd.DataFrame, boat: str, config: str) -> pd.DataFrame:
+    """Point by point over the wind plane: steady speed and heel as built and with ``config``;
+    the speed change as :func:`studies.verdict.difference` gives it (relative, or in m/s where the
+    boat as built makes less than SPEED_FLOOR). These rows are ``effects.csv``."""
+    keys, cols = ["tws", "twa"], ["steady_speed", "steady_heel"]
+    sel = data[data["boat"] == boat]
+    built = sel[sel["config"] == "baseline"][keys + cols]
+    other = sel[sel["config"] == config][keys + cols]
+    m = built.merge(other, on=keys, suffixes=("_built", "_switched"), how="outer").sort_values(keys)
+    diffs = verdict.differences(m["steady_speed_switched"], m["steady_speed_built"], floor=SPEED_FLOOR,
+                                unit="m/s")
+    m.insert(0, "config", config)
+    m.insert(0, "boat", boat)
+    m["speed_change_pct"] = [100 * d.value if d.relative else np.nan for d in diffs]
+    m["speed_change_ms"] = m["steady_speed_switched"] - m["steady_speed_built"]
+    m["heel_change_deg"] = np.degrees(m["steady_heel_switched"] - m["steady_heel_built"])
+    m.attrs["diffs"] = diffs
+    return m.reset_index(drop=True)
+
+
+def _pitch_summary(g: pd.DataFrame) -> str:
+    """One boat's pitch amplitude (with where it is largest), trim (mean pitch, bow up +) and
+    heave amplitude over the wind plane, as built."""
+    if g.empty or not np.isfinite(g["pitch_amplitude"]).any():
+        return "—"
+    top = g.loc[g["pitch_amplitude"].idxmax()]
+    return (f"{g['boat'].iloc[0]}: pitch amplitude up to {math.degrees(top['pitch_amplitude']):.1f}° "
+            f"({top['tws']:g} m/s, {top['twa']:g}°, at {top['steady_speed']:.1f} m/s), trim (bow up +) "
+            f"{verdict.value_range(g['mean_pitch'], 180 / math.pi, '{:+.1f}')}°, heave amplitude up to "
+            f"{100 * np.nanmax(g['heave_amplitude']):.1f} cm")
 
 
 def heatmap(plt, grid: pd.DataFrame, ax, title, unit, holds=None):
@@ -280,32 +315,40 @@ def restoring_errors(data: pd.DataFrame) -> dict:
     return out
 
 
-def built_row(data, effect, rng_, config, title, paper_form) -> dict:
+def built_row(effects: dict, config, title, paper_form) -> dict:
     """A row for one difference between the boat as built and the papers' boat: its effect on
-    steady speed and heel over the wind plane when the papers' form is switched back on."""
-    speed = {b: effect(b, config) for b in BOATS}
-    heel = {b: _delta(data, b, config, "steady_heel").to_numpy(dtype=float).ravel() for b in BOATS}
-    both_speed = np.concatenate(list(speed.values()))
-    both_heel = np.degrees(np.concatenate(list(heel.values())))
-    both_heel = both_heel[np.isfinite(both_heel)]
-    holds = (both_speed.size > 0 and np.max(np.abs(both_speed)) < SPEED_HOLDS
-             and (not both_heel.size or np.max(np.abs(both_heel)) < HEEL_HOLDS_DEG))
-    def summary(values, scale, unit, limit):
-        v = np.asarray(values, dtype=float) * scale
-        v = v[np.isfinite(v)]
+    steady speed and heel over the wind plane when the papers' form is switched back on
+    (``effects[(boat, config)]``: :func:`speed_effects`)."""
+    speed = {b: effects[(b, config)].attrs["diffs"] for b in BOATS}
+    heel = {b: effects[(b, config)]["heel_change_deg"].to_numpy(dtype=float) for b in BOATS}
+    judged_speed = verdict.judge_differences(sum(speed.values(), []), SPEED_HOLDS)
+    judged_heel = verdict.judge(np.concatenate(list(heel.values())), below=HEEL_HOLDS_DEG, magnitude=True)
+    holds = judged_speed.holds and judged_heel.holds
+
+    def speed_summary(diffs):
+        rel = [d.value for d in diffs if d.finite and d.relative]
+        median = f"median {100 * np.median(rel):+.1f} %, " if rel else ""
+        return (f"{median}{verdict.range_of(diffs)}; "
+                f"{verdict.judge_differences(diffs, SPEED_HOLDS).beyond} of {len(diffs)} points beyond ±"
+                f"{100 * SPEED_HOLDS:g} %")
+
+    def heel_summary(values):
+        v = verdict.finite(values)
         if not v.size:
             return "—"
-        beyond = int(np.count_nonzero(np.abs(v) >= limit))
-        return (f"median {np.median(v):+.1f}{unit} ({rng_(v, 1.0, '{:+.1f}')}{unit}; "
-                f"{beyond} of {v.size} points beyond ±{limit:g}{unit})")
+        return (f"median {np.median(v):+.1f}° ({verdict.value_range(v, 1.0, '{:+.1f}')}°; "
+                f"{verdict.judge(values, below=HEEL_HOLDS_DEG, magnitude=True).beyond} of {len(values)} points "
+                f"beyond ±{HEEL_HOLDS_DEG:g}°)")
 
     return {"assumption": f"{title} ({paper_form})",
             "scenarios": "both boats, wind plane",
             "metric": "steady speed and heel, the papers' form minus as built",
-            "range": "; ".join(f"{b}: speed {summary(speed[b], 100, ' %', 100 * SPEED_HOLDS)}, heel "
-                               f"{summary(heel[b], 180 / math.pi, '°', HEEL_HOLDS_DEG)}" for b in BOATS),
-            "threshold": f"|speed| < {100 * SPEED_HOLDS:.0f} %, |heel| < {HEEL_HOLDS_DEG:g} deg",
-            "verdict": "holds" if holds else "breaks at some points",
+            "range": "; ".join(f"{b}: speed {speed_summary(speed[b])}, heel {heel_summary(heel[b])}"
+                               for b in BOATS),
+            "threshold": f"|speed| < {100 * SPEED_HOLDS:.0f} % (below {SPEED_FLOOR:g} m/s as built: "
+                         f"< {SPEED_HOLDS * SPEED_FLOOR:g} m/s), |heel| < {HEEL_HOLDS_DEG:g} deg",
+            "verdict": ("holds" if holds else "breaks") + f" (speed: {judged_speed.text()}; heel: "
+                       f"{judged_heel.text()})",
             "effect": "speed and heel, as the range (the extremes are points where one of the two "
                       "boats loses its heading or stalls)"}
 
@@ -334,46 +377,49 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
     base = data[data["config"] == "baseline"]
     rows, headline = [], {}
 
-    def rng_(values, scale=1.0, fmt="{:.3g}"):
-        v = np.asarray(values, dtype=float) * scale
-        v = v[np.isfinite(v)]
-        return "—" if not v.size else f"{fmt.format(v.min())} … {fmt.format(v.max())}"
+    rng_ = verdict.value_range
+    effects = {(b, c): speed_effects(data, b, c) for b in BOATS for c in CONFIGS
+               if c != "baseline" and (data[(data["boat"] == b) & (data["config"] == c)]).size}
+    pd.concat(effects.values(), ignore_index=True).to_csv(out / "effects.csv", index=False)
 
-    def effect(boat, config):
-        """Relative speed change where the baseline boat sails (> 0.3 m/s); stalled points (a
-        boat in irons, or one the heading controller lost) would divide by ~0."""
-        base_speed = _pivot(data, boat, "baseline", "steady_speed")
-        d = _delta(data, boat, config, "steady_speed") / base_speed.where(base_speed > 0.3)
-        v = d.to_numpy(dtype=float)
-        v = v[np.isfinite(v)]
-        return v
+    def effect(boat, config) -> list:
+        """The speed changes of ``config`` against the boat as built, point by point (the rows
+        of effects.csv), as :class:`studies.verdict.Difference`."""
+        return effects[(boat, config)].attrs["diffs"]
+
+    def largest(diffs) -> float:
+        rel = [abs(d.value) for d in diffs if d.finite and d.relative]
+        return max(rel) if rel else float("nan")
 
     # 1. C_T << C_N
     robot = base[base["boat"] == "saoud_robot"]
     ct = robot["ct_cn_ratio"].to_numpy(dtype=float)
     ct_effect = effect("saoud_robot", "ct_off")
     headline["ct_cn_max"] = float(np.nanmax(ct)) if np.isfinite(ct).any() else float("nan")
-    headline["ct_speed_effect_max"] = float(np.max(np.abs(ct_effect))) if ct_effect.size else float("nan")
+    headline["ct_speed_effect_max"] = largest(ct_effect)
     rows.append({"assumption": "Tangential sail force negligible, C_T ≪ C_N (Saoud Assumption 4)",
                  "scenarios": "robot, wind plane", "metric": "|C_T|/|C_N| at steady state",
-                 "range": rng_(ct), "threshold": "< 0.10",
-                 "verdict": "holds" if np.nanmax(ct) < 0.1 else "breaks at some points",
-                 "effect": f"steady speed with C_T off vs on: {rng_(ct_effect, 100, '{:+.1f}')} %"})
+                 "range": rng_(ct), "threshold": f"< 0.10; speed with C_T off within {100 * SPEED_HOLDS:g} %",
+                 "verdict": verdict.combined({"ratio": verdict.judge(ct, below=0.1),
+                                              "speed": verdict.judge_differences(ct_effect, SPEED_HOLDS)}),
+                 "effect": f"steady speed with C_T off vs on: {verdict.range_of(ct_effect)}"})
     # 2. pitch and heave small
     pitch = base["pitch_amplitude"].to_numpy(dtype=float)
     heave = base["heave_amplitude"].to_numpy(dtype=float)
-    four = np.concatenate([effect(b, "four_dof") for b in BOATS])
-    heel4 = np.concatenate([_delta(data, b, "four_dof", "steady_heel").to_numpy(dtype=float).ravel()
-                            for b in BOATS])
+    four = sum((effect(b, "four_dof") for b in BOATS), [])
+    heel4 = np.concatenate([effects[(b, "four_dof")]["heel_change_deg"].to_numpy(dtype=float) for b in BOATS])
     headline["pitch_amplitude_max_deg"] = float(np.degrees(np.nanmax(pitch)))
-    headline["four_dof_speed_effect_max"] = float(np.nanmax(np.abs(four))) if four.size else float("nan")
+    headline["four_dof_speed_effect_max"] = largest(four)
     rows.append({"assumption": "Pitch and heave small: 4 DOF suffice (Saoud Assumption 1; Wille §2.1)",
                  "scenarios": "both boats, wind plane",
                  "metric": "pitch / heave amplitude at steady state",
-                 "range": f"{rng_(pitch, 180 / math.pi)} deg / {rng_(heave, 100)} cm",
-                 "threshold": "pitch < 2 deg", "verdict": "holds" if np.nanmax(pitch) < math.radians(2) else "breaks",
-                 "effect": f"speed, heave+pitch held vs free: {rng_(four, 100, '{:+.1f}')} %; "
-                           f"heel {rng_(heel4, 180 / math.pi, '{:+.2f}')} deg"})
+                 "range": f"{rng_(pitch, 180 / math.pi)} deg / {rng_(heave, 100)} cm; "
+                          + "; ".join(_pitch_summary(base[base["boat"] == b]) for b in BOATS),
+                 "threshold": f"pitch < 2 deg; speed with heave and pitch held within {100 * SPEED_HOLDS:g} %",
+                 "verdict": verdict.combined({"pitch": verdict.judge(np.degrees(pitch), below=2.0),
+                                              "speed": verdict.judge_differences(four, SPEED_HOLDS)}),
+                 "effect": f"speed, heave+pitch held vs free: {verdict.range_of(four)}; "
+                           f"heel {rng_(heel4, 1.0, '{:+.2f}')} deg"})
     # 3. roll faster than yaw; omega3^2 tan(phi) term
     om = base["omega3_ratio"].to_numpy(dtype=float)
     headline["omega3_ratio_max"] = float(np.nanmax(om))
@@ -387,8 +433,10 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                                     f"ω_roll τ_yaw = {speed_ratio[b]:.1f}" for b, v in tc.items())
                           + f"; term ratio {rng_(om)}",
                  "threshold": "ω_roll τ_yaw > 5 (much faster); term ratio < 0.10",
-                 "verdict": ("term negligible; roll only " + ", ".join(f"{r:.1f}×" for r in speed_ratio.values())
-                             + " faster than yaw" if np.nanmax(om) < 0.1 else "breaks"),
+                 "verdict": (f"term ratio < 0.10: {verdict.judge(om, below=0.1).text()}; ω_roll τ_yaw > 5: "
+                             + verdict.judge(list(speed_ratio.values()), above=5.0).text("boats")
+                             + " (roll only " + ", ".join(f"{r:.1f}×" for r in speed_ratio.values())
+                             + " faster than yaw)"),
                  "effect": "the neglected term changes the roll balance by < "
                            f"{100 * np.nanmax(om):.1f} %"})
     # 4. rudder, keel, hull roll moments negligible
@@ -400,18 +448,21 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "scenarios": "both boats, wind plane",
                  "metric": "share of |roll moment|: keel; keel + rudder + hull",
                  "range": f"{rng_(keel, 100)} %; {rng_(others, 100)} % (Wille 2016b Fig. 3: keel ≈ 8 %)",
-                 "threshold": "< 10 %", "verdict": "holds" if np.nanmax(others) < 0.1 else "breaks",
+                 "threshold": "keel + rudder + hull < 10 %", "verdict": verdict.judge(others, below=0.1).text(),
                  "effect": "enters φ* (row 8)"})
     # 5. fully actuated vs sheeted
     sheet = effect("saoud_robot", "sheeted")
-    sheet_heel = _delta(data, "saoud_robot", "sheeted", "steady_heel").to_numpy(dtype=float)
-    headline["sheeted_speed_effect_min"] = float(np.min(sheet)) if sheet.size else float("nan")
+    sheet_heel = effects[("saoud_robot", "sheeted")]["heel_change_deg"].to_numpy(dtype=float)
+    sheet_rel = [d.value for d in sheet if d.finite and d.relative]
+    headline["sheeted_speed_effect_min"] = min(sheet_rel) if sheet_rel else float("nan")
+    # a loss beyond 5 %: judged as a change beyond -5 % of max(speed as built, SPEED_FLOOR)
+    sheet_loss = [d.value if d.relative else d.value / max(abs(d.reference), SPEED_FLOOR) for d in sheet]
     rows.append({"assumption": "Sail fully actuated, δs free (Saoud Assumption 5) vs sheeted (Wille 2016b §2.1)",
                  "scenarios": "robot with Saoud's optimum, wind plane",
                  "metric": "steady speed and heel, sheeted minus actuated",
-                 "range": f"speed {rng_(sheet, 100, '{:+.1f}')} %, heel {rng_(sheet_heel, 180 / math.pi, '{:+.2f}')} deg",
-                 "threshold": "|speed loss| < 5 %",
-                 "verdict": "holds" if sheet.size and np.min(sheet) > -0.05 else "breaks",
+                 "range": f"speed {verdict.range_of(sheet)}, heel {rng_(sheet_heel, 1.0, '{:+.2f}')} deg",
+                 "threshold": "speed loss < 5 %",
+                 "verdict": verdict.judge(sheet_loss, above=-SPEED_HOLDS).text(),
                  "effect": "speed, as the range"})
     # 6. small drift, linear lift
     yacht = base[base["boat"] == "wille_yacht"]
@@ -424,7 +475,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "range": f"drift {rng_(drift_deg)} deg; keel α {rng_(aoa_deg)} deg; "
                           f"β_b {math.degrees(course['beta_b']):.2f} vs drift {math.degrees(course['drift']):.2f} deg",
                  "threshold": "keel |α| < 10 deg",
-                 "verdict": "holds" if np.nanmax(aoa_deg) < 10 else "breaks at some points",
+                 "verdict": verdict.judge(aoa_deg, below=10.0, magnitude=True).text(),
                  "effect": f"course error left by the correction: {math.degrees(course['drift_error']):.2f} deg "
                            f"(β_b − drift = {math.degrees(course['beta_b'] - course['drift']):+.2f} deg)"})
     # 7. restoring
@@ -434,8 +485,8 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "range": "; ".join(f"{b}: {v['paper_formula_error'] * 100:.0f} %, {v['eq66_error'] * 100:.0f} % "
                                     f"(to {v['heel_reached_deg']:.0f} deg)" for b, v in restoring.items()),
                  "threshold": "< 10 %",
-                 "verdict": "holds" if all(v["paper_formula_error"] < 0.1 for v in restoring.values())
-                 else "breaks for one boat",
+                 "verdict": "eq. 20 / Saoud eq. 4: " + verdict.judge(
+                     [v["paper_formula_error"] for v in restoring.values()], below=0.1).text("boats"),
                  "effect": "heel and heading in 6-DOF, geometric vs Saoud eq. 4 (saoud_fig6 and saoud_fig7 checks)"})
     headline.update({f"{b}_restoring_error": v["paper_formula_error"] for b, v in restoring.items()})
     # 8. Saoud steady state (where the robot sails: a stalled boat has no steady apparent wind)
@@ -446,7 +497,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "scenarios": "robot, 3-7 m/s, 60-120 deg, l_φ 0.1 and 1 m",
                  "metric": f"steady heel − φ* (deg), {len(sailing)} of {len(steady)} runs sailing",
                  "range": rng_(err), "threshold": "< 2 deg",
-                 "verdict": "holds" if err.size and np.nanmax(np.abs(err)) < 2 else "breaks",
+                 "verdict": verdict.judge(err, below=2.0, magnitude=True).text("runs"),
                  "effect": "the roll limit φ_max is not what the boat sails at"})
     # 9. lateral drift in position keeping
     headline["lateral_speed_6dof"] = drift["mujoco"]
@@ -455,14 +506,13 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
                  "metric": "mean |lateral speed| (m/s)",
                  "range": f"3-DOF {drift['paper']:.3f}, 6-DOF {drift['mujoco']:.3f} (max {drift['mujoco_max']:.2f})",
                  "threshold": "6-DOF within 0.05 m/s of 3-DOF",
-                 "verdict": "holds" if abs(drift["mujoco"] - drift["paper"]) < 0.05 else "breaks",
+                 "verdict": verdict.judge([drift["mujoco"] - drift["paper"]], below=0.05, magnitude=True).text("runs"),
                  "effect": "see viel_fig3 for the distance to target"})
 
     # 10-14. the boat as built: each difference from the papers' boat switched off in turn
     for config, _, title, paper_form in BUILT:
-        rows.append(built_row(data, effect, rng_, config, title, paper_form))
-        both = np.concatenate([effect(b, config) for b in BOATS])
-        headline[f"{config}_speed_effect_max"] = float(np.max(np.abs(both))) if both.size else float("nan")
+        rows.append(built_row(effects, config, title, paper_form))
+        headline[f"{config}_speed_effect_max"] = largest(sum((effect(b, config) for b in BOATS), []))
     # the resistance row also reports the Froude numbers and Wille's Table 1
     yacht_length = get_boat("wille_yacht").hull.length
     froude = {c: _pivot(data, "wille_yacht", c, "steady_speed").to_numpy(dtype=float)

@@ -22,6 +22,8 @@ from pathlib import Path
 from sailmujoco import suite, sweep
 from sailmujoco.progress import Progress
 
+from . import verdict
+
 
 def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
                 controller_options: dict | None = None, **options):
@@ -37,15 +39,6 @@ def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
         policy = controller(env)
     trajectory = suite.rollout(env, policy)
     return env.task.metrics(), trajectory, env
-
-
-def relative_difference(ours, paper) -> float:
-    """(ours - paper) / |paper|; nan when either is not a number or the paper's is 0."""
-    if not isinstance(paper, (int, float)) or not isinstance(ours, (int, float)):
-        return float("nan")
-    if paper == 0 or not math.isfinite(paper) or not math.isfinite(ours):
-        return float("nan")
-    return (ours - paper) / abs(paper)
 
 
 @dataclass
@@ -68,14 +61,17 @@ class Report:
         self.parts.append("\n".join(lines) + "\n")
 
     def comparison(self, rows: list[dict]) -> None:
-        """Rows of quantity / paper / world / ours / cause, with the relative difference."""
+        """Rows of quantity / paper / world / ours / cause, with the difference of
+        :func:`studies.verdict.difference` (a row may give its ``floor`` and ``unit``), flagged ⚠
+        beyond 10 %."""
         table = []
         for row in rows:
-            diff = relative_difference(row["ours"], row.get("paper"))
-            flag = "" if not math.isfinite(diff) or abs(diff) <= 0.10 else " ⚠"
-            table.append({**row, "difference": "—" if not math.isfinite(diff)
-                          else f"{100 * diff:+.0f} %{flag}"})
+            diff = verdict.difference(row["ours"], row.get("paper"), floor=row.get("floor", 0.0),
+                                      unit=row.get("unit", ""))
+            flag = " ⚠" if diff.finite and diff.beyond(verdict.TOLERANCE) else ""
+            table.append({**row, "difference": diff.text() + flag})
         self.table(table, ["quantity", "world", "paper", "ours", "difference", "cause"])
+        self.paragraph(verdict.DIFFERENCE_NOTE)
 
     def figure(self, path: Path, caption: str) -> None:
         self.parts.append(f"![{caption}]({Path(path).name})\n\n*{caption}*\n")

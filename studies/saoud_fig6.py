@@ -31,6 +31,7 @@ from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import get_boat
 from sailmujoco.tasks.sailing import SpeedTrial
 
+from . import verdict
 from .common import Progress, Report, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "saoud_fig6"
@@ -387,7 +388,8 @@ def _cause(world: str, l_phi: float, a: float, headline: dict) -> str:
         return ("not comparable: off heading 0 (S, Bm or both: the note column; the heeled sail's "
                 "weather helm beyond the rudder, see the checks)")
     if a == 10.0:
-        return "agrees (within 10 %)" if abs(ratio - 1.0) <= 0.10 else "S and Bm differ downwind"
+        return ("agrees (within 10 %)" if not verdict.difference(ratio, 1.0).beyond(verdict.TOLERANCE)
+                else "S and Bm differ downwind")
     if ratio >= 1.0:
         return "S faster, as in the paper"
     return "Bm faster"

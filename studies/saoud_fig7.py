@@ -31,6 +31,7 @@ import pandas as pd
 from sailmujoco import polar, sweep
 from sailmujoco.figures import legend_below
 
+from . import verdict
 from .common import Report, parallel_map, run_episode, save_figure, setup_matplotlib, timer
 from .saoud_fig6 import (
     BOAT,
@@ -405,7 +406,7 @@ def _cause_s(table, world, l_phi) -> str:
     if not math.isfinite(worst["S"]) or (math.isfinite(psi) and math.degrees(psi) > HELD_DEG):
         return (f"worst at {worst['angle']:g}°: S does not hold heading 0 (rounds up or capsizes) with "
                 "the geometric hull; eq. 4 righting switched in: see the checks and the Fig. 6 report")
-    if worst["S_over_vel_max"] >= 0.9:
+    if verdict.judge(g["S_over_vel_max"], above=0.9 - 1e-12).holds:
         return f"within 10 % everywhere (worst at {worst['angle']:g}°)"
     heel = abs(math.degrees(worst["heel_vel_max"]))
     if heel > PHI_MAX_DEG + 1.0:

@@ -41,7 +41,8 @@ from sailmujoco.tasks.base import SailEnvironment
 from sailmujoco.tasks.position import CASES as WIND_CASES
 from sailmujoco.tasks.position import PositionKeeping, VielPhysics
 
-from .common import Progress, Report, relative_difference, run_episode, save_figure, setup_matplotlib, timer
+from . import verdict
+from .common import Progress, Report, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "viel_fig3"
 TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, four worlds"
@@ -774,7 +775,7 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
     rows = []
     for key in WORLDS:
         for _, r in main[main["world"] == key].iterrows():
-            diff = relative_difference(float(r["max_after_stop"]), PAPER_MAX_M)
+            diff = verdict.difference(float(r["max_after_stop"]), PAPER_MAX_M, unit="m")
             cause = (_paper_cause(r, variants) if key == "paper" else _viel_boat_cause(r, variants)
                      if key == "viel_boat" else _boat_cause(r, variants, capability))
             rows.append({"case": int(r["case"]), "world": LABELS[key], "entered at (s)": _fmt(r["entered_at"]),
@@ -783,7 +784,7 @@ def _write_report(out, main, variants, grid, capability, figures, timings, wall,
                          "max after stop (m)": _fmt(r["max_after_stop"], 2),
                          "mean after entry (m)": _fmt(r["mean_distance_after_entry"], 2),
                          "paper (m)": f"< {PAPER_MAX_M}",
-                         "difference": "—" if not math.isfinite(diff) else f"{100 * diff:+.0f} %",
+                         "difference": diff.text(),
                          "cause": cause})
     report.table(rows)
     report.figure(figures["paper"], "Paper world: trajectories (target area green, pre-arrival area between "

@@ -31,7 +31,7 @@ from sailmujoco import suite, sweep
 from sailmujoco.figures import legend_below, wind_arrow
 from sailmujoco.params import get_boat
 
-from .common import Report, parallel_map, relative_difference, save_figure, setup_matplotlib, timer
+from .common import Report, parallel_map, save_figure, setup_matplotlib, timer
 
 NAME = "wille_course_table2"
 TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
@@ -82,11 +82,6 @@ def run_jobs(simulate, jobs: list[dict], workers: int | None, progress: bool, la
     """``{job["key"]: simulate(job)}`` over worker processes (:func:`common.parallel_map`)."""
     return dict(zip([job["key"] for job in jobs],
                     parallel_map(simulate, jobs, workers, progress, label), strict=True))
-
-
-def percent(ours: float, paper: float) -> str:
-    diff = relative_difference(float(ours), float(paper))
-    return "—" if not math.isfinite(diff) else f"{100 * diff:+.0f} %"
 
 
 # ----------------------------------------------------------------------------- simulations
@@ -275,12 +270,12 @@ def _table2_rows(main, reduction, results, smoke) -> list[dict]:
     for world, label in WORLDS.items():
         for law in ("heading", "course"):
             ours = main[(world, law)]
-            for key, name in (("east", "x, east (cross-track) [m]"), ("north", "y, north [m]"),
-                              ("error_deg", "error |atan(x/y)| [deg]")):
+            for key, name, unit in (("east", "x, east (cross-track) [m]", "m"), ("north", "y, north [m]", "m"),
+                                    ("error_deg", "error |atan(x/y)| [deg]", "deg")):
                 if smoke and key != "error_deg":  # distances of a short run: not the paper's
                     continue
                 rows.append({"quantity": f"{LAWS[law]}: {name}", "world": label,
-                             "paper": PAPER[law][key], "ours": ours[key],
+                             "paper": PAPER[law][key], "ours": ours[key], "unit": unit,
                              "cause": causes.get((world, law, key), "")})
         rows.append({"quantity": "error reduction, course vs heading controller", "world": label,
                      "paper": PAPER_REDUCTION, "ours": reduction[world],

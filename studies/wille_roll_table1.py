@@ -48,6 +48,7 @@ from sailmujoco import sweep
 from sailmujoco.figures import legend_below, moment_unit
 from sailmujoco.params import get_boat
 
+from . import verdict
 from .common import Report, save_figure, setup_matplotlib, timer
 from .wille_course_table2 import BOAT, make_env, run_jobs
 
@@ -587,8 +588,7 @@ def _table1_rows(r: Results, smoke) -> list[dict]:
 def _cause(r: Results, world, sim, key) -> str:
     """The modelling difference behind a Table 1 miss, with the switch that shows it."""
     paper = PAPER_TABLE1[paper_sim(sim)][key]
-    diff = abs(r.mean(world, sim)[key] / paper - 1.0)
-    if diff <= 0.10:
+    if not verdict.difference(r.mean(world, sim)[key], paper).beyond(verdict.TOLERANCE):
         return ""
     switched = sim if sim in SWITCH_SIMS else paper_sim(sim)  # the switches rerun SWITCH_SIMS only
     s0, sail0 = r.get("main", world, sim, 0), r.get("sail", world, switched, 0)
