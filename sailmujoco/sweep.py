@@ -576,8 +576,10 @@ def _run_dask(todo, store, bar, client, workers, retries):
     _quiet_dask()
     cluster = own = None
     if client is None:
+        # dashboard_address=None still serves on 8787 and warns when that port is taken
+        # (distributed 2026.8); ':0' takes any free port, silently.
         cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                               processes=True, dashboard_address=None)
+                               processes=True, dashboard_address=":0")
         client = own = Client(cluster)
     try:
         attempts = {}

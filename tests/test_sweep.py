@@ -4,6 +4,7 @@ import json
 import os
 import re
 import signal
+import socket
 import subprocess
 import sys
 import threading
@@ -43,9 +44,19 @@ def test_expand_crosses_grid_and_zips_axes():
     assert pairs == {(60.0, 0.8), (120.0, 1.2)}  # zipped, not crossed
 
 
-def test_dask_local_cluster_equals_serial(tmp_path):
+def test_dask_local_cluster_equals_serial(tmp_path, recwarn):
     serial = sweep.run(SPEC, tmp_path / "serial", scheduler="serial", progress=False)
-    parallel = sweep.run(SPEC, tmp_path / "dask", workers=2, progress=False)
+    busy = socket.socket()  # Dask's default dashboard port taken, as by a second sweep
+    try:
+        busy.bind(("127.0.0.1", 8787))
+        busy.listen()
+    except OSError:  # already taken by someone else: the case under test all the same
+        pass
+    try:
+        parallel = sweep.run(SPEC, tmp_path / "dask", workers=2, progress=False)
+    finally:
+        busy.close()
+    assert not [w for w in recwarn if "8787" in str(w.message)]  # no dashboard warning in the log
     assert len(serial) == len(parallel) == 8
     assert (serial["status"] == "ok").all() and (parallel["status"] == "ok").all()
     pd.testing.assert_frame_equal(_metrics(serial), _metrics(parallel))  # bit for bit
