@@ -27,6 +27,7 @@ def _check(args) -> int:
     from .physics import BoatPhysics, ForceSwitches, SimulationStopped
 
     boats = args.boat or sorted(BOATS)
+    plots = _out_folder(args.plots) if args.plots else None  # a bad folder fails before the runs
     failures = 0
     print(f"sailmujoco check: {args.seconds:g} s in {args.wind:g} m/s gusty wind, "
           f"random commands every 0.5 s, seed {args.seed}")
@@ -73,11 +74,9 @@ def _check(args) -> int:
         expected = params.rho_water * 9.81 * params.displaced_volume * params.gm_t * small
         print(f"{'':12s} geometric righting moment at 2°: {moment:.4g} N m, "
               f"rho g V GM phi = {expected:.4g} N m ({100 * (moment / expected - 1):+.2f} %)")
-    if args.plots:
-        out = Path(args.plots)
-        out.mkdir(parents=True, exist_ok=True)
+    if plots:
         for boat in boats:
-            path = out / f"righting_curve_{boat}.png"
+            path = plots / f"righting_curve_{boat}.png"
             _plot_righting_curve(get_boat(boat), path)
             print(f"wrote {path}")
     print("health: OK" if failures == 0 else f"health: {failures} run(s) stopped early")
@@ -118,9 +117,16 @@ def _sweep(args) -> int:
     where = args.scheduler or f"embedded Dask cluster, {args.workers or 'all'} worker(s)"
     print(f"sweep {spec['name']!r} ({sweep.sweep_id(spec)}): {len(runs)} runs ({spec['boat']}, "
           f"{spec['task']}, {spec['world']}, {spec['controller']}) on {where} -> {out}", flush=True)
-    table = sweep.run(spec, out, scheduler=args.scheduler, workers=args.workers,
-                      resume=args.resume, retries=args.retries, progress=not args.no_progress,
-                      exclusive=True)
+    try:
+        table = sweep.run(spec, out, scheduler=args.scheduler, workers=args.workers,
+                          resume=args.resume, retries=args.retries, progress=not args.no_progress,
+                          exclusive=True)
+    except KeyboardInterrupt:
+        saved = len(list((out / "runs").glob("*.json")))
+        print(f"sailmujoco sweep: interrupted; {saved} of {len(runs)} runs are saved in {out} "
+              f"(results.parquet holds them); 'sailmujoco sweep {args.file} --out {out} --resume' "
+              "runs the rest", file=sys.stderr)
+        return INTERRUPTED
     counts = {"ok": 0, "stopped": 0, "failed": 0, **table["status"].value_counts().to_dict()}
     print("status: " + ", ".join(f"{k} {v}" for k, v in counts.items())
           + (" (stopped: the simulation ended early, e.g. a capsize; see the error column)"
@@ -138,6 +144,8 @@ def _out_folder(path) -> Path:
         path.mkdir(parents=True, exist_ok=True)
     except (FileExistsError, NotADirectoryError):
         raise ValueError(f"--out {str(path)!r} is (or lies under) a file; give a folder") from None
+    except OSError as err:  # no permission, a read-only or virtual file system
+        raise ValueError(f"cannot make the folder {str(path)!r}: {err.strerror}") from None
     return path
 
 
@@ -159,6 +167,7 @@ def _number(low: float, *, low_open: bool, unit: str, integer: bool = False):
 
 
 POSITIVE_SECONDS = _number(0.0, low_open=True, unit="s")
+SEED = _number(0, low_open=False, unit="", integer=True)
 WORKERS = _number(0, low_open=False, unit="(0: all cores)", integer=True)
 
 
@@ -331,7 +340,7 @@ def build_parser() -> argparse.ArgumentParser:
     check.add_argument("--seconds", type=POSITIVE_SECONDS, default=20.0, help="simulated time per run (s)")
     check.add_argument("--wind", type=_number(0.0, low_open=False, unit="m/s"), default=10.0,
                        help="mean wind at 10 m (m/s)")
-    check.add_argument("--seed", type=int, default=0)
+    check.add_argument("--seed", type=SEED, default=0)
     check.add_argument("--plots", nargs="?", const="results/check", default=None,
                        metavar="DIR", help="write righting-curve plots (default results/check)")
     check.set_defaults(func=_check)
@@ -384,6 +393,9 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+INTERRUPTED = 130  # the shell's status for a command ended by Ctrl-C (128 + SIGINT)
+
+
 def main(argv=None) -> int:
     parser = build_parser()
     args = parser.parse_args(argv)
@@ -392,6 +404,9 @@ def main(argv=None) -> int:
     except ValueError as err:  # bad input: one clear line, exit 2
         print(f"sailmujoco: error: {err}", file=sys.stderr)
         return 2
+    except KeyboardInterrupt:  # Ctrl-C: one line, not the traceback of wherever it landed
+        print(f"sailmujoco {args.command}: interrupted", file=sys.stderr)
+        return INTERRUPTED
 
 
 if __name__ == "__main__":

@@ -5,7 +5,7 @@ A sweep is a TOML file (or the same dict in Python)::
     name = "lphi_vs_wind"
     boat = "saoud_robot"
     task = "heading_hold"
-    world = "mujoco"
+    world = "mujoco"           # or "paper" (default: mujoco)
     controller = "pid"
     duration = 60.0            # s per run (default: the task's)
     seeds = [0, 1]
@@ -63,6 +63,7 @@ import hashlib
 import inspect
 import itertools
 import json
+import logging
 import math
 import numbers
 import os
@@ -143,13 +144,14 @@ def validate(spec: dict) -> dict:
     unknown = set(spec) - TOP_KEYS
     if unknown:
         raise SweepError(f"unknown key(s) {sorted(unknown)}; allowed: {sorted(TOP_KEYS)}")
-    for key in ("boat", "task", "world", "controller"):
-        if key not in spec:
-            raise SweepError(f"missing key {key!r}")
-        if not isinstance(spec[key], str):
-            raise SweepError(f"{key} must be a string, got {spec[key]!r}")
     choices = {"boat": sorted(BOATS), "task": list(TASKS), "world": list(WORLDS),
                "controller": sorted(controller_factories())}
+    spec = {"world": "mujoco", **spec}  # as suite.load: the MuJoCo world unless said
+    for key in ("boat", "task", "world", "controller"):
+        if key not in spec:
+            raise SweepError(f"missing key {key!r} (one of: {', '.join(choices[key])})")
+        if not isinstance(spec[key], str):
+            raise SweepError(f"{key} must be a string, got {spec[key]!r}")
     for key, allowed in choices.items():
         if spec[key] not in allowed:
             raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}")
@@ -399,6 +401,9 @@ class ResultStore:
         except (FileExistsError, NotADirectoryError):
             raise SweepError(f"results folder {str(self.out)!r} is (or lies under) a file, "
                              "not a folder") from None
+        except OSError as err:  # no permission, a read-only or virtual file system
+            raise SweepError(f"cannot make the results folder {str(self.out)!r}: "
+                             f"{err.strerror}") from None
 
     def path(self, rid: str) -> Path:
         return self.runs_dir / f"{rid}.json"
@@ -489,6 +494,7 @@ def run(spec, out, *, scheduler: str | None = None, workers: int | None = None,
     if exclusive:
         check_folder(spec, out)
     client = _connect(scheduler) if scheduler not in (None, "serial") else None
+    bar = None
     try:
         store = ResultStore(out)
         runs = expand(spec)
@@ -514,6 +520,11 @@ def run(spec, out, *, scheduler: str | None = None, workers: int | None = None,
         elif todo:
             _run_dask(todo, store, bar, client, workers, retries)
         bar.close()
+    except KeyboardInterrupt:  # Ctrl-C: the table holds the runs that finished; --resume the rest
+        if bar is not None:
+            bar.close()
+            store.consolidate(spec.get("metrics"), [r["run_id"] for r in runs])
+        raise
     finally:
         if client is not None:
             client.close()
@@ -552,8 +563,6 @@ def _connect(address: str):
 
 
 def _quiet_dask() -> None:
-    import logging
-
     for name in ("distributed", "distributed.scheduler", "distributed.nanny", "distributed.worker",
                  "distributed.client", "distributed.core", "distributed.comm"):
         logging.getLogger(name).setLevel(logging.ERROR)
@@ -576,10 +585,19 @@ def _run_dask(todo, store, bar, client, workers, retries):
     _quiet_dask()
     cluster = own = None
     if client is None:
-        # dashboard_address=None still serves on 8787 and warns when that port is taken
-        # (distributed 2026.8); ':0' takes any free port, silently.
-        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                               processes=True, dashboard_address=":0")
+        # Ctrl-C reaches every process of the terminal's group: the worker processes are started
+        # with SIGINT ignored (a child keeps an ignored signal, and Python then installs no
+        # KeyboardInterrupt handler), so only this process stops, closes the cluster and says so
+        # in one line instead of each worker printing its traceback. The scheduler's HTTP
+        # server takes a free port (":0"), not 8787, which a second cluster on the machine holds.
+        previous = _ignore_sigint()
+        try:
+            cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                                   processes=True, dashboard_address=None,
+                                   scheduler_kwargs={"dashboard_address": ":0"},
+                                   silence_logs=logging.ERROR)
+        finally:
+            _restore_sigint(previous)
         client = own = Client(cluster)
     try:
         attempts = {}
@@ -614,6 +632,23 @@ def _run_dask(todo, store, bar, client, workers, retries):
             own.close()
         if cluster is not None:
             cluster.close()
+
+
+def _ignore_sigint():
+    """Ignore SIGINT (in the main thread only; elsewhere nothing); return what to restore."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _restore_sigint(previous) -> None:
+    import signal
+
+    if previous is not None:
+        signal.signal(signal.SIGINT, previous)
 
 
 def summarise(table, metric: str) -> str:

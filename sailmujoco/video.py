@@ -804,6 +804,8 @@ def _setting(text: str) -> tuple[str, object]:
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``video`` to the ``sailmujoco`` sub-commands; returns its parser."""
+    from .cli import SEED
+
     parser = subparsers.add_parser(
         "video", help="record a task run as an mp4 (offscreen MuJoCo rendering)",
         description="Run TASK on BOAT under a controller and write an H.264 mp4. Needs an OpenGL "
@@ -823,7 +825,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                         help="follow camera bearing from the bow, deg counter-clockwise (150)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
     parser.add_argument("--no-overlay", action="store_true", help="no text box")
-    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--seed", type=SEED, default=0)
     parser.add_argument("--still", help="also write the last frame as this PNG")
     parser.add_argument("--set", type=_setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper "

@@ -420,7 +420,7 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
 # ----------------------------------------------------------------------------- command line
 def add_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view`` to the ``sailmujoco`` sub-commands; returns its parser."""
-    from .cli import POSITIVE_SECONDS, _number
+    from .cli import POSITIVE_SECONDS, SEED, _number
     from .video import _setting
 
     parser = subparsers.add_parser(
@@ -443,7 +443,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--paused", action="store_true", help="start paused (space runs)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
     parser.add_argument("--no-overlay", action="store_true", help="no text")
-    parser.add_argument("--seed", type=int, default=0)
+    parser.add_argument("--seed", type=SEED, default=0)
     parser.add_argument("--screenshot", metavar="PATH",
                         help="at the end, save the window as this PNG (X11 displays)")
     parser.add_argument("--set", type=_setting, action="append", default=[], metavar="KEY=VALUE",

@@ -2,6 +2,7 @@
 
 import subprocess
 import sys
+import time
 
 import pytest
 
@@ -93,3 +94,29 @@ def test_video_out_at_a_folder_exits_2_in_one_line(tmp_path, capsys):
     assert main(["video", "saoud_robot", "heading_hold", "--controller", "pid",
                  "--out", str(tmp_path)]) == 2
     assert f"--out {str(tmp_path)!r} is a folder; give a file name" in _one_line(capsys)
+
+
+@pytest.mark.parametrize("argv", [["check"], ["video", "saoud_robot", "heading_hold", "--controller",
+                                              "pid", "--out", "v.mp4"],
+                                  ["view", "saoud_robot", "heading_hold", "--controller", "pid"]])
+def test_a_negative_seed_exits_2_naming_the_option(argv, capsys):
+    with pytest.raises(SystemExit) as err:
+        main([*argv, "--seed", "-1"])
+    assert err.value.code == 2
+    lines = capsys.readouterr().err.strip().splitlines()
+    assert lines[-1].endswith("error: argument --seed: must be an integer >= 0, got '-1'")
+    assert not any("Traceback" in line for line in lines)
+
+
+@pytest.mark.parametrize("argv", [["check", "--boat", "saoud_robot", "--plots", "OUT"],
+                                  ["study", "saoud_fig6", "--smoke", "--out", "OUT"],
+                                  ["sweep", "SWEEP", "--out", "OUT", "--scheduler", "serial"]])
+def test_an_out_folder_that_cannot_be_made_exits_2_in_one_line(argv, tmp_path, capsys):
+    out = "/proc/sailmujoco_cannot_be_made"  # /proc takes no new folders, even for root
+    argv = [out if a == "OUT" else str(_tiny_sweep(tmp_path)) if a == "SWEEP" else a for a in argv]
+    start = time.perf_counter()
+    assert main(argv) == 2
+    assert time.perf_counter() - start < 10  # refused before any run
+    err = _one_line(capsys)
+    assert f"cannot make the {'results ' if argv[0] == 'sweep' else ''}folder {out!r}: " in err
+    assert "No such file or directory" in err

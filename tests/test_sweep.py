@@ -211,3 +211,11 @@ def test_the_library_checks_workers_and_retries(tmp_path):
         with pytest.raises(sweep.SweepError, match=re.escape(message)):
             sweep.run(dict(SPEC, duration=1.0), tmp_path / "o", **kwargs)
     assert not (tmp_path / "o").exists()
+
+
+def test_a_sweep_without_world_runs_in_mujoco_and_a_missing_key_lists_the_choices():
+    spec = {"boat": "saoud_robot", "task": "heading_hold", "controller": "pid", "duration": 1.0}
+    assert sweep.validate(spec)["world"] == "mujoco"
+    with pytest.raises(sweep.SweepError,
+                       match=r"^missing key 'boat' \(one of: saoud_robot, viel_boat, wille_yacht\)$"):
+        sweep.validate({"task": "heading_hold", "controller": "pid"})
