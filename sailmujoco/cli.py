@@ -10,6 +10,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .sweep import MAX_LOCAL_WORKERS
+
 CHECK_LEGEND = """\
   max|heel|  largest heel over the run (deg)
   mean u     mean surge speed (m/s)
@@ -149,26 +151,30 @@ def _out_folder(path) -> Path:
     return path
 
 
-def _number(low: float, *, low_open: bool, unit: str, integer: bool = False):
-    """An argparse type: a finite number above ``low`` (or at least ``low``), else exit 2 with
-    one line naming the range."""
+def _number(low: float, *, low_open: bool, unit: str, integer: bool = False,
+            high: float | None = None):
+    """An argparse type: a finite number above ``low`` (or at least ``low``) and at most
+    ``high``, else exit 2 with one line naming the range."""
     def parse(text: str):
         try:
             value = int(text) if integer else float(text)
         except ValueError:
             value = None
-        if value is None or not math.isfinite(value) or (value <= low if low_open else value < low):
+        if (value is None or not math.isfinite(value) or (value <= low if low_open else value < low)
+                or (high is not None and value > high)):
             kind = "an integer" if integer else "a number"
+            upper = f" and <= {high:g}" if high is not None else ""
             raise argparse.ArgumentTypeError(
-                f"must be {kind} {'>' if low_open else '>='} {low:g}{' ' + unit if unit else ''}, "
-                f"got {text!r}")
+                f"must be {kind} {'>' if low_open else '>='} {low:g}{upper}"
+                f"{' ' + unit if unit else ''}, got {text!r}")
         return value
     return parse
 
 
 POSITIVE_SECONDS = _number(0.0, low_open=True, unit="s")
 SEED = _number(0, low_open=False, unit="", integer=True)
-WORKERS = _number(0, low_open=False, unit="(0: all cores)", integer=True)
+WORKERS = _number(0, low_open=False, unit="(0: all cores)", integer=True,
+                  high=MAX_LOCAL_WORKERS)
 
 
 def _floats(text: str) -> list[float]:

@@ -133,6 +133,11 @@ class ForceSwitches:
     keel_downwash: bool = True
     windage: bool = True
 
+    def __post_init__(self):
+        for name, value in vars(self).items():
+            if isinstance(getattr(type(self), name), bool) and not isinstance(value, bool | np.bool_):
+                raise ValueError(f"{name} must be True or False, got {value!r}")
+
 
 def _entry_point(dispatcher):
     """The compiled entry point of a one-signature kernel (skips numba's type dispatch).

@@ -87,6 +87,9 @@ ENV_OPTIONS = ("hydrostatics", "sail_mode", "dofs", "control_timestep", "paper_m
                "resistance", "foils", "keel_downwash", "windage")
 ENTRY_POINTS = "sailmujoco.controllers"
 CONNECT_TIMEOUT_S = 3.0  # to reach a Dask scheduler given by address
+# worker processes of an embedded cluster: more than a few per core only queue for the cores and
+# cost memory (--workers 100000 tried to start as many processes and hung)
+MAX_LOCAL_WORKERS = 4 * (os.cpu_count() or 1)
 
 
 class SweepError(ValueError):
@@ -485,7 +488,7 @@ def run(spec, out, *, scheduler: str | None = None, workers: int | None = None,
         Refuse ``out`` if it holds a sweep with another description (the command line's
         behaviour); by default sweeps may share a folder.
     """
-    _check_count("workers", workers, "(0: all cores)", none_ok=True)
+    _check_count("workers", workers, "(0: all cores)", none_ok=True, high=MAX_LOCAL_WORKERS)
     _check_count("retries", retries, "")
     spec = load_spec(spec) if isinstance(spec, (str, Path)) else validate(spec)
     if scheduler is not None and not isinstance(scheduler, str):
@@ -541,11 +544,14 @@ def lost(record: dict) -> bool:
     return bool(record.get("lost")) or str(record.get("error") or "").startswith("KilledWorker")
 
 
-def _check_count(name: str, value, unit: str, none_ok: bool = False) -> None:
+def _check_count(name: str, value, unit: str, none_ok: bool = False, high: int | None = None) -> None:
     if value is None and none_ok:
         return
-    if isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0:
-        raise SweepError(f"{name} must be an integer >= 0{' ' + unit if unit else ''}, got {value!r}")
+    if (isinstance(value, bool) or not isinstance(value, numbers.Integral) or value < 0
+            or (high is not None and value > high)):
+        upper = f" and <= {high}" if high is not None else ""
+        raise SweepError(f"{name} must be an integer >= 0{upper}{' ' + unit if unit else ''}, "
+                         f"got {value!r}")
 
 
 def _connect(address: str):

@@ -789,6 +789,9 @@ def record_study_scenario(out, boat: str, task: str, controller, *, seconds: flo
 
 # ----------------------------------------------------------------------------- command line
 def _value(text: str):
+    """A ``--set`` value: a Python literal, TOML's true/false, or else the text itself."""
+    if text.lower() in ("true", "false"):
+        return text.lower() == "true"
     try:
         return ast.literal_eval(text)
     except (ValueError, SyntaxError):
@@ -835,19 +838,31 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     return parser
 
 
+def _file_argument(option: str, text: str, example: str) -> None:
+    """A file to write, its missing folders made; a folder there, a file among its parents or a
+    folder that cannot be made is one line."""
+    path = Path(text)
+    if path.is_dir():
+        raise ValueError(f"{option} {text!r} is a folder; give a file name such as "
+                         f"{str(path / example)!r}")
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+    except (FileExistsError, NotADirectoryError):
+        raise ValueError(f"{option} {text!r}: {str(path.parent)!r} is (or lies under) a file, "
+                         f"not a folder") from None
+    except OSError as err:  # no permission, a read-only or virtual file system
+        raise ValueError(f"{option} {text!r}: cannot make the folder {str(path.parent)!r}: "
+                         f"{err.strerror}") from None
+
+
 def run_cli(args) -> int:
     """The ``video`` sub-command."""
     for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
         if key in dict(args.set):
             raise ValueError(f"--set {key}=... is the option {option}")
-    out = Path(args.out)
-    if out.is_dir():
-        raise ValueError(f"--out {args.out!r} is a folder; give a file name such as "
-                         f"{str(out / 'run.mp4')!r}")
-    try:  # a missing folder is made
-        out.parent.mkdir(parents=True, exist_ok=True)
-    except (FileExistsError, NotADirectoryError):
-        raise ValueError(f"--out {args.out!r}: {str(out.parent)!r} is a file, not a folder") from None
+    _file_argument("--out", args.out, "run.mp4")
+    if args.still:
+        _file_argument("--still", args.still, "last.png")
     try:
         rec = record(args.boat, args.task, args.controller, args.out, seconds=args.seconds,
                      world=args.world, fps=args.fps, width=args.width, height=args.height,

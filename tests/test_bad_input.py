@@ -166,3 +166,21 @@ def test_terminal_observation_after_a_capsize_is_the_state_it_stopped_in():
     observation = timestep.observation
     assert float(observation["true_state"]["time"]) == pytest.approx(env.physics.data.time, abs=1e-12)
     assert abs(math.degrees(float(observation["heel"]))) > 80.0  # heeled over, not last step's heel
+
+
+@pytest.mark.parametrize("option, value", [("keel_downwash", "no"), ("windage", 1), ("sail_tangential", "off")])
+def test_on_off_force_switches_take_true_or_false_only(option, value):
+    """'no' used to end in numpy's "could not convert string to float: 'no'"."""
+    from sailmujoco import suite
+
+    with pytest.raises(ValueError) as err:
+        suite.load("saoud_robot", "heading_hold", **{option: value})
+    assert str(err.value) == f"{option} must be True or False, got {value!r}"
+
+
+def test_set_takes_tomls_true_and_false():
+    from sailmujoco.video import _setting
+
+    assert _setting("windage=false") == ("windage", False)
+    assert _setting("keel_downwash=True") == ("keel_downwash", True)
+    assert _setting("case=3") == ("case", 3)

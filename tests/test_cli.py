@@ -1,5 +1,7 @@
+
 """The command line: help, the health check, bad input exits 2."""
 
+import os
 import subprocess
 import sys
 import time
@@ -29,14 +31,20 @@ def test_check_unknown_boat_exits_2(capsys):
     assert "unknown boat 'dinghy'" in capsys.readouterr().err
 
 
+FOUR_PER_CORE = 4 * (os.cpu_count() or 1)  # local worker processes beyond this only queue
+
+
 @pytest.mark.parametrize("argv,message", [
     (["check", "--seconds", "-1"], "argument --seconds: must be a number > 0 s, got '-1'"),
     (["check", "--seconds", "nan"], "argument --seconds: must be a number > 0 s, got 'nan'"),
     (["check", "--wind", "-3"], "argument --wind: must be a number >= 0 m/s, got '-3'"),
     (["sweep", "x.toml", "--workers", "-1"],
-     "argument --workers: must be an integer >= 0 (0: all cores), got '-1'"),
+     f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), got '-1'"),
     (["study", "all", "--workers", "two"],
-     "argument --workers: must be an integer >= 0 (0: all cores), got 'two'"),
+     f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), got 'two'"),
+    (["sweep", "x.toml", "--workers", "100000"],  # used to start 100000 processes and hang
+     f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), "
+     "got '100000'"),
 ])
 def test_bad_numbers_exit_2_with_one_line(argv, message, capsys):
     from sailmujoco import cli
@@ -94,6 +102,20 @@ def test_video_out_at_a_folder_exits_2_in_one_line(tmp_path, capsys):
     assert main(["video", "saoud_robot", "heading_hold", "--controller", "pid",
                  "--out", str(tmp_path)]) == 2
     assert f"--out {str(tmp_path)!r} is a folder; give a file name" in _one_line(capsys)
+
+
+@pytest.mark.parametrize("option", ["--out", "--still"])
+def test_video_file_under_a_file_exits_2_in_one_line(tmp_path, capsys, option):
+    a_file = tmp_path / "notes.txt"
+    a_file.write_text("x")
+    files = {"--out": str(tmp_path / "v.mp4"), "--still": None}
+    files[option] = str(a_file / "x.png")
+    argv = ["video", "saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
+            "--out", files["--out"]] + (["--still", files["--still"]] if files["--still"] else [])
+    assert main(argv) == 2
+    assert f"{option} {str(a_file / 'x.png')!r}: {str(a_file)!r} is (or lies under) a file" in \
+        _one_line(capsys)
+    assert not (tmp_path / "v.mp4").exists()
 
 
 @pytest.mark.parametrize("argv", [["check"], ["video", "saoud_robot", "heading_hold", "--controller",

@@ -205,7 +205,10 @@ def test_bad_sweep_files_exit_2_with_one_clear_message(tmp_path, capsys, body, m
 
 
 def test_the_library_checks_workers_and_retries(tmp_path):
-    for kwargs, message in [({"workers": -1}, "workers must be an integer >= 0 (0: all cores), got -1"),
+    most = 4 * (os.cpu_count() or 1)
+    for kwargs, message in [({"workers": -1}, f"workers must be an integer >= 0 and <= {most} (0: all "
+                                              "cores), got -1"),
+                            ({"workers": 10**5}, f"and <= {most} (0: all cores), got 100000"),
                             ({"workers": 1.5}, "workers must be an integer >= 0"),
                             ({"retries": -1}, "retries must be an integer >= 0, got -1")]:
         with pytest.raises(sweep.SweepError, match=re.escape(message)):
