@@ -67,6 +67,7 @@ import logging
 import math
 import numbers
 import os
+import re
 import sys
 import time
 import traceback
@@ -160,6 +161,10 @@ def validate(spec: dict) -> dict:
             raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}")
     out = dict(spec)
     out.setdefault("name", "sweep")
+    # the name is a folder under results/sweeps/: one plain name, never a path out of it
+    if not isinstance(out["name"], str) or not re.fullmatch(r"[A-Za-z0-9_][A-Za-z0-9_.+-]*", out["name"]):
+        raise SweepError(f"name must be letters, digits and _ . + - (a folder name, not a path), "
+                         f"got {out['name']!r}")
     seeds = out.setdefault("seeds", [0])
     if not isinstance(seeds, list) or not seeds or not all(isinstance(s, int) and not isinstance(s, bool)
                                                            for s in seeds):

@@ -457,6 +457,10 @@ def run_cli(args) -> int:
     for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
         if key in dict(args.set):
             raise ValueError(f"--set {key}=... is the option {option}")
+    from .sweep import validate
+
+    # names first, so that without a display the suggested video command is one that runs
+    validate({"boat": args.boat, "task": args.task, "world": args.world, "controller": args.controller})
     try:
         result = watch(args.boat, args.task, args.controller, world=args.world, seconds=args.seconds,
                        seed=args.seed, fps=args.fps, forces=not args.no_forces,

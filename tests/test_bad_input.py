@@ -168,7 +168,8 @@ def test_terminal_observation_after_a_capsize_is_the_state_it_stopped_in():
     assert abs(math.degrees(float(observation["heel"]))) > 80.0  # heeled over, not last step's heel
 
 
-@pytest.mark.parametrize("option, value", [("keel_downwash", "no"), ("windage", 1), ("sail_tangential", "off")])
+@pytest.mark.parametrize("option, value",
+                         [("keel_downwash", "no"), ("windage", 1), ("sail_tangential", "off")])
 def test_on_off_force_switches_take_true_or_false_only(option, value):
     """'no' used to end in numpy's "could not convert string to float: 'no'"."""
     from sailmujoco import suite

@@ -222,3 +222,12 @@ def test_a_sweep_without_world_runs_in_mujoco_and_a_missing_key_lists_the_choice
     with pytest.raises(sweep.SweepError,
                        match=r"^missing key 'boat' \(one of: saoud_robot, viel_boat, wille_yacht\)$"):
         sweep.validate({"task": "heading_hold", "controller": "pid"})
+
+
+@pytest.mark.parametrize("name", ["../../etc", "a/b", ".hidden", "", "two words"])
+def test_a_sweep_name_is_a_folder_name_not_a_path(name):
+    """The name becomes results/sweeps/<name>; '../../etc' used to write outside results/."""
+    spec = {"name": name, "boat": "saoud_robot", "task": "heading_hold", "controller": "pid"}
+    with pytest.raises(sweep.SweepError, match=re.escape(f"(a folder name, not a path), got {name!r}")):
+        sweep.validate(spec)
+    assert sweep.validate(dict(spec, name="lphi_0.1-v2"))["name"] == "lphi_0.1-v2"

@@ -92,6 +92,16 @@ def test_without_a_display_one_line_points_to_video(display):
     assert "Traceback" not in out.stderr and out.stdout == ""
 
 
+def test_without_a_display_a_bad_name_is_named_not_passed_on_to_video(capsys):
+    """The video command suggested without a display must be one that runs: names first."""
+    from sailmujoco.cli import main
+
+    assert main(["view", "wille_yacht", "heading_hold", "--controller", "nope"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "controller = 'nope' is not one of: " in err[0] and "pid" in err[0]
+    assert "sailmujoco video" not in err[0]
+
+
 def test_space_pauses_and_right_arrow_steps_once_per_press():
     keys = Keys()
     assert keys.may_step() and keys.may_step()  # running: every step
