@@ -213,7 +213,15 @@ def _polar(args) -> int:
     if len(frames) > 1:
         compare = out / "compare.png"
         polar.plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
-        print(f"wrote {compare}")
+        table = polar.comparison_table(frames)
+        table.to_csv(out / "compare.csv", index=False)
+        command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
+        settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
+                    f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.duration:g} s per point")
+        summary = polar.ratio_summary(table)
+        (out / "compare.md").write_text(polar.comparison_markdown(table, summary, command, settings),
+                                        encoding="utf-8")
+        print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")
     return 0
 
 

@@ -21,10 +21,11 @@ from . import sweep
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
 BEST_SAIL_DEG = tuple(range(5, 91, 5))
+STEADY_WINDOW_S = 20.0  # s, a point's speed is the mean over the last this many seconds
 
 
 def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
-               duration: float = 60.0, steady_window: float = 20.0, controller_grid=None,
+               duration: float = 60.0, steady_window: float = STEADY_WINDOW_S, controller_grid=None,
                options: dict | None = None) -> dict:
     """The sweep description of one polar (TWS x TWA, heading north)."""
     tws_axis, twa_axis = [], []
@@ -128,3 +129,84 @@ def plot_comparison(frames: dict, path, title: str) -> None:
     figures.legend_below(fig, axes[0][0], ncol=len(frames))
     fig.suptitle(title)
     figures.save(fig, path, dpi=120)
+
+
+# TWA bands of the comparison's summary: label, from TWA (included) to TWA (excluded), deg.
+TWA_BANDS = (("close-hauled", 0.0, 60.0), ("close reach", 60.0, 90.0), ("beam to broad reach", 90.0, 135.0),
+             ("running", 135.0, math.inf))
+
+
+def comparison_table(frames: dict):
+    """One row per (TWS, TWA): each controller's steady speed [m/s] and, when ``best`` is among
+    ``frames``, each other controller's ratio to it (``<name>/best``: speed / best speed, a plain
+    ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller did not finish is
+    missing (NaN) in its columns."""
+    table = None
+    for name, frame in frames.items():
+        part = frame[["tws", "twa", "speed"]].rename(columns={"speed": name})
+        table = part if table is None else table.merge(part, on=["tws", "twa"], how="outer")
+    if "best" in frames:
+        for name in frames:
+            if name != "best":
+                table[f"{name}/best"] = table[name] / table["best"]
+    return table.sort_values(["tws", "twa"]).reset_index(drop=True)
+
+
+def ratio_summary(table, bands=TWA_BANDS):
+    """Per controller and TWA band (``bands``: label, from TWA included to TWA excluded, deg): the
+    lowest and highest ``<name>/best`` ratio over every TWS in the band, and where each is (TWS,
+    TWA, the controller's and the best speed). Empty when the table has no ratio columns."""
+    import pandas as pd
+
+    rows = []
+    for column in [c for c in table.columns if str(c).endswith("/best")]:
+        name = column[: -len("/best")]
+        for label, low, high in bands:
+            band = table[(table["twa"] >= low) & (table["twa"] < high)].dropna(subset=[column])
+            if band.empty:
+                continue
+            lo, hi = band.loc[band[column].idxmin()], band.loc[band[column].idxmax()]
+            rows.append({"controller": name, "band": label, "twa_low": float(band["twa"].min()),
+                         "twa_high": float(band["twa"].max()), "ratio_min": float(lo[column]),
+                         "ratio_max": float(hi[column]), "min_tws": float(lo["tws"]),
+                         "min_twa": float(lo["twa"]), "min_speed": float(lo[name]),
+                         "min_best": float(lo["best"]), "max_tws": float(hi["tws"]),
+                         "max_twa": float(hi["twa"]), "max_speed": float(hi[name]),
+                         "max_best": float(hi["best"])})
+    return pd.DataFrame(rows)
+
+
+def comparison_markdown(table, summary, command: str = "", settings: str = "") -> str:
+    """``compare.md``: the summary by TWA band, then the full table (speeds in m/s)."""
+    lines = ["# Steady speed by sail law", ""]
+    if command:
+        lines += [f"Made by `{command}`" + (f" ({settings})" if settings else "") + ". *speed*: the "
+                  f"mean speed over ground in the last {STEADY_WINDOW_S:g} s of each run, "
+                  "wind steady, no gusts.", ""]
+    if len(summary):
+        lines += ["*ratio*: the controller's steady speed / the best fixed sail's (`best`, brute force "
+                  f"over sail angles {BEST_SAIL_DEG[0]}-{BEST_SAIL_DEG[-1]}° in "
+                  f"{BEST_SAIL_DEG[1] - BEST_SAIL_DEG[0]}° steps), a plain ratio: 0.90 is 10 % slower, "
+                  "1.02 is 2 % faster.", "",
+                  "| controller | TWA band | TWA [deg] | ratio min (TWS, TWA: speed / best) "
+                  "| ratio max (TWS, TWA: speed / best) |", "|---|---|---|---|---|"]
+        for r in summary.itertuples():
+            low = f"{r.min_tws:g} m/s, {r.min_twa:g}°: {r.min_speed:.2f} / {r.min_best:.2f} m/s"
+            high = f"{r.max_tws:g} m/s, {r.max_twa:g}°: {r.max_speed:.2f} / {r.max_best:.2f} m/s"
+            lines.append(f"| {r.controller} | {r.band} | {r.twa_low:g}-{r.twa_high:g} "
+                         f"| {r.ratio_min:.2f} ({low}) | {r.ratio_max:.2f} ({high}) |")
+        lines.append("")
+    speeds = [c for c in table.columns if c not in ("tws", "twa") and not str(c).endswith("/best")]
+    ratios = [c for c in table.columns if str(c).endswith("/best")]
+    lines += ["| TWS [m/s] | TWA [deg] | " + " | ".join(f"{c} [m/s]" for c in speeds)
+              + "".join(f" | {c}" for c in ratios) + " |",
+              "|" + "---|" * (2 + len(speeds) + len(ratios))]
+    for _, row in table.iterrows():
+        cells = [f"{row['tws']:g}", f"{row['twa']:g}"] + [_cell(row[c], 2) for c in speeds]
+        cells += [_cell(row[c], 2) for c in ratios]
+        lines.append("| " + " | ".join(cells) + " |")
+    return "\n".join(lines) + "\n"
+
+
+def _cell(value, digits: int) -> str:
+    return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
