@@ -248,7 +248,11 @@ def study_titles() -> dict[str, str]:
     studies = _studies()
     for name in [n for n in STUDY_ORDER if n in studies] + sorted(set(studies) - set(STUDY_ORDER)):
         title = ""
-        spec = importlib.util.find_spec(studies[name].module)
+        try:  # run from a source tree (python -m sailmujoco.cli in the repository root), the
+            # studies are not yet the installed sailmujoco.studies: the list goes without titles
+            spec = importlib.util.find_spec(studies[name].module)
+        except (ImportError, ValueError):
+            spec = None
         if spec is not None and spec.origin and spec.origin.endswith(".py"):
             tree = ast.parse(Path(spec.origin).read_text(encoding="utf-8"))
             for node in tree.body:

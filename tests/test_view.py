@@ -54,6 +54,7 @@ def _env(**changes):
 def test_view_sails_the_boat_at_real_time_and_saves_the_window(xvfb, tmp_path):
     shot = tmp_path / "view.png"
     out = subprocess.run(VIEW + ["--seconds", "2", "--screenshot", str(shot)], env=_env(DISPLAY=xvfb),
+                         cwd=tmp_path,  # the installed package, not a source tree in the working folder
                          capture_output=True, text=True, timeout=180)
     assert out.returncode == 0, out.stderr[-2000:]
     found = RESULT.search(out.stdout)
@@ -78,11 +79,11 @@ def test_view_sails_the_boat_at_real_time_and_saves_the_window(xvfb, tmp_path):
 
 
 @pytest.mark.parametrize("display", [None, ":987"], ids=["no DISPLAY", "display not served"])
-def test_without_a_display_one_line_points_to_video(display):
+def test_without_a_display_one_line_points_to_video(display, tmp_path):
     if display is not None and Path(f"/tmp/.X11-unix/X{display[1:]}").exists():
         pytest.fail(f"display {display} is served here: pick another for this test")
     env = _env(**({"DISPLAY": display} if display else {}))
-    out = subprocess.run(VIEW + ["--seconds", "2"], env=env, capture_output=True, text=True,
+    out = subprocess.run(VIEW + ["--seconds", "2"], env=env, capture_output=True, text=True, cwd=tmp_path,
                          timeout=120)
     assert out.returncode == 2
     lines = out.stderr.strip().splitlines()
