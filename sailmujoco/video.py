@@ -590,6 +590,26 @@ def _even(name: str, value: int) -> int:
     return value
 
 
+def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | None]:
+    """What a scene of ``env`` draws: (whether it is the MuJoCo world, the boat's parameters,
+    the sail mode, the task's target area or None). A paper world is drawn as the named boat
+    with an actuated sail."""
+    from .params import get_boat
+    from .physics import BoatPhysics
+
+    physics = env.physics
+    mujoco_world = isinstance(physics, BoatPhysics)
+    if mujoco_world:
+        params, sail_mode = physics.params, physics.sail_mode
+    else:
+        params, sail_mode = get_boat(boat, **(options.get("boat_options") or {})), "actuated"
+    target = None
+    if getattr(env.task, "target", None) is not None:
+        target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
+                  "radii": (env.task.d_target, env.task.d_prearrival)}
+    return mujoco_world, params, sail_mode, target
+
+
 def record(boat: str, task: str, controller, out_path, seconds: float | None = None,
            world: str = "mujoco", fps: float = 25, width: int = 640, height: int = 480,
            camera: str = "follow", overlay: bool = True, forces: bool = True, seed: int = 0, *,
@@ -669,8 +689,6 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
         import imageio_ffmpeg
     except ImportError as err:
         raise ImportError("video needs imageio-ffmpeg: pip install imageio-ffmpeg") from err
-    from .params import get_boat
-    from .physics import BoatPhysics
     from .suite import load
     from .sweep import make_controller
 
@@ -685,17 +703,9 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     if hasattr(policy, "reset"):
         policy.reset(seed)
     physics = env.physics
-    mujoco_world = isinstance(physics, BoatPhysics)
-    if mujoco_world:
-        params, sail_mode = physics.params, physics.sail_mode
-    else:
-        params, sail_mode = get_boat(boat, **(options.get("boat_options") or {})), "actuated"
+    mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     duration = float(seconds) if seconds is not None else float(env.task.duration)
     n_frames = max(1, round(duration * fps))
-    target = None
-    if getattr(env.task, "target", None) is not None:
-        target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
-                  "radii": (env.task.d_target, env.task.d_prearrival)}
     renderer = SceneRenderer(params, width, height, camera, forces=forces, overlay=overlay,
                              sail_mode=sail_mode, target=target,
                              labels=f"{boat} · {task} · {name} ({world})",

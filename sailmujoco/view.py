@@ -284,8 +284,6 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     import mujoco
     import mujoco.viewer
 
-    from .params import get_boat
-    from .physics import BoatPhysics
     from .suite import load
     from .sweep import make_controller
     from .video import (
@@ -293,6 +291,7 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
         _frames_between_substeps,
         _no_hook,
         _yaw_of,
+        scene_of,
         snapshot_observation,
         snapshot_physics,
     )
@@ -302,15 +301,7 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     if hasattr(policy, "reset"):
         policy.reset(seed)
     physics = env.physics
-    mujoco_world = isinstance(physics, BoatPhysics)
-    if mujoco_world:
-        params, sail_mode = physics.params, physics.sail_mode
-    else:
-        params, sail_mode = get_boat(boat, **(options.get("boat_options") or {})), "actuated"
-    target = None
-    if getattr(env.task, "target", None) is not None:
-        target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
-                  "radii": (env.task.d_target, env.task.d_prearrival)}
+    mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
                           labels=f"{boat} · {task} · {controller} ({world})", offscreen=False)
     timestep = env.reset()
