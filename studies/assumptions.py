@@ -539,15 +539,18 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
             "robot: |C_T|/|C_N| (✓ < 0.1)", "-", lambda v: v < 0.1)
     heatmap(plt, 100 * _delta(data, "saoud_robot", "ct_off", "steady_speed")
             / _pivot(data, "saoud_robot", "baseline", "steady_speed"), axes[0, 1],
-            "robot: speed change with C_T off (✓ |Δ| < 2 %)", "%", lambda v: abs(v) < 2)
+            f"robot: speed change with C_T off (✓ |Δ| < {100 * SPEED_HOLDS:g} %)", "%",
+            lambda v: abs(v) < 100 * SPEED_HOLDS)
     heatmap(plt, 100 * _delta(data, "saoud_robot", "sheeted", "steady_speed")
             / _pivot(data, "saoud_robot", "baseline", "steady_speed"), axes[0, 2],
-            "robot: speed, sheeted vs actuated (✓ > −5 %)", "%", lambda v: v > -5)
+            f"robot: speed, sheeted vs actuated (✓ > −{100 * SPEED_HOLDS:g} %)", "%",
+            lambda v: v > -100 * SPEED_HOLDS)
     heatmap(plt, np.degrees(_pivot(data, "wille_yacht", "baseline", "pitch_amplitude")), axes[1, 0],
             "yacht: pitch amplitude (✓ < 2°)", "deg", lambda v: v < 2)
     heatmap(plt, 100 * _delta(data, "wille_yacht", "four_dof", "steady_speed")
             / _pivot(data, "wille_yacht", "baseline", "steady_speed"), axes[1, 1],
-            "yacht: speed, heave+pitch held vs free (✓ |Δ| < 2 %)", "%", lambda v: abs(v) < 2)
+            f"yacht: speed, heave+pitch held vs free (✓ |Δ| < {100 * SPEED_HOLDS:g} %)", "%",
+            lambda v: abs(v) < 100 * SPEED_HOLDS)
     heatmap(plt, np.degrees(_pivot(data, "wille_yacht", "baseline", "keel_aoa")), axes[1, 2],
             "yacht: keel |α| (✓ < 10°, linear lift)", "deg", lambda v: v < 10)
     fig.suptitle("Where the assumptions hold over the wind plane (× = capsized / no data)")
