@@ -848,6 +848,13 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     return parser
 
 
+def check_settings(settings) -> None:
+    """``--set`` of ``video`` and ``view``: the episode's seed and length have options of their own."""
+    for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
+        if key in dict(settings):
+            raise ValueError(f"--set {key}=... is the option {option}")
+
+
 def _file_argument(option: str, text: str, example: str) -> None:
     """A file to write, its missing folders made; a folder there, a file among its parents or a
     folder that cannot be made is one line."""
@@ -867,9 +874,7 @@ def _file_argument(option: str, text: str, example: str) -> None:
 
 def run_cli(args) -> int:
     """The ``video`` sub-command."""
-    for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
-        if key in dict(args.set):
-            raise ValueError(f"--set {key}=... is the option {option}")
+    check_settings(args.set)
     _file_argument("--out", args.out, "run.mp4")
     if args.still:
         _file_argument("--still", args.still, "last.png")

@@ -445,10 +445,10 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 def run_cli(args) -> int:
     """The ``view`` sub-command."""
-    for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
-        if key in dict(args.set):
-            raise ValueError(f"--set {key}=... is the option {option}")
     from .sweep import validate
+    from .video import check_settings
+
+    check_settings(args.set)
 
     # names first, so that without a display the suggested video command is one that runs
     validate({"boat": args.boat, "task": args.task, "world": args.world, "controller": args.controller})

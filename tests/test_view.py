@@ -116,3 +116,12 @@ def test_space_pauses_and_right_arrow_steps_once_per_press():
     assert not keys.paused and keys.may_step()
     keys.press(ord("A"))  # other keys (MuJoCo's own) change nothing
     assert not keys.paused
+
+
+@pytest.mark.parametrize("setting, option", [("seed=3", "--seed"), ("time_limit=5", "--seconds")])
+def test_episode_seed_and_length_are_options_not_settings(setting, option, capsys):
+    from sailmujoco.cli import main
+
+    assert main(["view", "wille_yacht", "heading_hold", "--controller", "pid", "--set", setting]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert err == [f"sailmujoco: error: --set {setting.split('=')[0]}=... is the option {option}"]
