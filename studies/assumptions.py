@@ -262,7 +262,9 @@ def saoud_steady_state(smoke: bool) -> pd.DataFrame:
             steady = phis[phis[:, 0] > 30.0][:, 1] if phis.size else np.array([np.nan])
             # Saoud's body frame is FLU like ours: his phi is our heel (positive starboard down)
             rows.append({"l_phi": boat_l_phi, "tws": wind, "twa": angle,
-                         "phi_star_deg": math.degrees(float(np.mean(steady))),
+                         # no optimum logged after 30 s (the run stopped): no value, and no
+                         # numpy "Mean of empty slice" warning in the log
+                         "phi_star_deg": math.degrees(float(np.mean(steady))) if steady.size else math.nan,
                          "heel_deg": math.degrees(metrics["steady_heel"]),
                          "speed": metrics["steady_speed"]})
     frame = pd.DataFrame(rows)
