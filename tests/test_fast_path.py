@@ -77,3 +77,36 @@ def test_compiled_equals_interpreted(boat, hydrostatics, switches, tmp_path):
     terms = np.abs(np.array(fast["terms"])).max(axis=(0, 2))
     idle = {kernels.T_EXT} | (set() if switches["windage"] else {kernels.T_WINDAGE})
     assert np.all(terms[[k for k in range(len(kernels.TERMS)) if k not in idle]] > 0.0)
+
+
+FAST_PATH_CHECK = """
+import itertools, json
+from sailmujoco.forces import boat as kernels
+from sailmujoco.params import BOATS
+from sailmujoco.physics import BoatPhysics, ForceSwitches
+entries = []
+for boat, hydrostatics, forms, sail_mode in itertools.product(
+        sorted(BOATS), ("geometric", "paper"), ("built", "paper"), ("actuated", "sheeted")):
+    switches = ({} if forms == "built" else
+                dict(resistance="friction", foils="paper", keel_downwash=False, windage=False))
+    physics = BoatPhysics.load(boat, sail_mode=sail_mode,
+                               forces=ForceSwitches(hydrostatics=hydrostatics, **switches))
+    physics.step(3)
+    entries.append(physics._kernel._entry is not None)
+print(json.dumps({"signatures": len(kernels.boat_forces.signatures), "entries": entries}))
+"""
+
+
+def test_the_compiled_kernel_stays_on_its_fast_path():
+    """Every boat, both hydrostatics, both force forms and both sail modes call the force kernel
+    with one numba signature, so each physics calls its compiled entry point directly. A second
+    signature (an int where a float was, a new array type) would silently put every step back
+    through numba's type dispatch, about 4x slower (issue 18): this test fails instead. It runs
+    in a fresh process so that no other test's calls are counted."""
+    out = subprocess.run([sys.executable, "-c", FAST_PATH_CHECK], capture_output=True, text=True,
+                         timeout=600, env={k: v for k, v in os.environ.items()
+                                           if k != "NUMBA_DISABLE_JIT"})
+    assert out.returncode == 0, out.stderr[-2000:]
+    result = json.loads(out.stdout.strip().splitlines()[-1])
+    assert result["signatures"] == 1
+    assert len(result["entries"]) == 24 and all(result["entries"])
