@@ -239,8 +239,11 @@ class callback_installed:
             if _USERS[0] == 0:
                 # put back what was there; the compiled stage callback may stay where there was
                 # none (it leaves MjData that is not stepping alone, and setting it costs 1 us a
-                # step), a Python one may not (MuJoCo calls it on MjData the bindings do not know)
-                if _USERS[2] is not None or self.callback is not _STAGE[0]:
+                # step), a Python one may not (MuJoCo calls it on MjData the bindings do not know,
+                # e.g. while compiling the next model, and fails). _STAGE is empty in a process
+                # where only the 4-DOF model has stepped.
+                ours = bool(_STAGE) and self.callback is _STAGE[0]
+                if _USERS[2] is not None or not ours:
                     mujoco.set_mjcb_control(_USERS[2])
                 _USERS[1] = _USERS[2] = None
                 _CHANGED.notify_all()

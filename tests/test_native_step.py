@@ -9,6 +9,8 @@ compiled loop calls the same C functions and the same kernel on the same arrays.
 from __future__ import annotations
 
 import math
+import subprocess
+import sys
 
 import mujoco
 import numpy as np
@@ -94,6 +96,26 @@ def test_the_control_callback_found_before_a_step_is_there_after_it():
         assert calls == [0.0]  # the bare MjData still gets the user's callback
     finally:
         mujoco.set_mjcb_control(None)
+
+
+def test_a_4dof_step_first_in_a_process_leaves_no_callback_behind():
+    """In a fresh process (a sweep worker) whose first job is the 4-DOF model, its Python stage
+    callback is put back to none after the step; left installed, the next model's compilation
+    fails inside MuJoCo ("Python exception raised"). A fresh interpreter, because this process has
+    compiled our stage callback already."""
+    script = ("import mujoco\n"
+              "from sailmujoco.physics import BoatPhysics\n"
+              "four = BoatPhysics.load('wille_yacht', dofs=4)\n"
+              "four.step(3)\n"
+              "assert mujoco.get_mjcb_control() is None, mujoco.get_mjcb_control()\n"
+              "six = BoatPhysics.load('wille_yacht')\n"
+              "six.step(3)\n"
+              "four.step(3)\n"
+              "print(six.data.time / six.model.opt.timestep, four.data.time / four.model.opt.timestep)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert [round(float(x), 9) for x in done.stdout.split()] == [3.0, 6.0]  # both kept stepping
 
 
 def test_a_bare_model_stepped_while_a_boat_steps_is_untouched():
