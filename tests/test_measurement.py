@@ -1,4 +1,5 @@
-"""The lean observation of a MuJoCo boat equals the accessor-built one, bit for bit.
+"""The lean observation of a MuJoCo boat, and of Wille's paper world, equals the accessor-built
+one, bit for bit.
 
 :func:`sailmujoco.tasks.measurement.measure_boat` (one rotation, the physics' arrays) against
 :func:`sailmujoco.tasks.base.measure` (the named accessors, the definition of the observation)
@@ -15,8 +16,9 @@ import pytest
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
+from sailmujoco.reference.wille import Wille4DOF
 from sailmujoco.tasks.base import PaperPhysics, measure
-from sailmujoco.tasks.measurement import measure_boat
+from sailmujoco.tasks.measurement import measure_boat, measure_wille
 
 
 def assert_identical(new, ref, path="observation"):
@@ -108,12 +110,46 @@ def test_every_scalar_is_its_own_array():
     assert len({id(v) for v in scalars}) == len(scalars) == 22
 
 
-def test_paper_world_keeps_the_accessor_path():
-    """A paper world is measured by its accessors, as before."""
-    env = suite.load("wille_yacht", "heading_hold", world="paper", seed=0)
+@pytest.mark.parametrize("boat,model", [("wille_yacht", "paper"), ("wille_yacht", "rigid"),
+                                        ("saoud_robot", "paper")])
+def test_wille_paper_world_states(boat, model):
+    """Wille's 4-DOF world (heeled, turning, in a gusty wandering wind over a current, with an
+    external wrench): measure_wille against the accessors of the world behind PaperPhysics."""
+    wind = WindConfig(speed=11.0, direction_from=math.radians(70.0), seed=3, current_east=0.4,
+                      current_north=-0.25)
+    world = Wille4DOF(boat, wind=wind, model=model)
+    world.place((3.0, -2.0), 0.7, 1.5)
+    world.external[:] = [20.0, -15.0, 30.0, -10.0]
+    low, high = world.action_bounds()
+    rng = np.random.default_rng(7)
+    physics = PaperPhysics(world)
+    heels = []
+    for k in range(41):
+        if k:
+            world.set_control(rng.uniform(low, high))
+            world.step(int(rng.integers(1, 30)))
+        observation, record = measure_wille(world)
+        assert_identical(observation, measure(physics))
+        assert_identical(record, accessor_record(physics), "record")
+        heels.append(abs(world.heel()))
+    assert max(heels) > math.radians(3.0)  # heeled states, not only upright ones
+    assert world.speed_over_ground() > 0.3
+    assert np.any(observation["true_state"]["sail_wrench"] != 0.0)
+
+
+@pytest.mark.parametrize("task", ["heading_hold", "beam_reach_roll"])
+def test_wille_paper_world_episodes(task):
+    """Each step's observation and record through suite.load(..., world='paper').step()."""
+    env = suite.load("wille_yacht", task, world="paper", seed=2)
     assert isinstance(env.physics, PaperPhysics)
-    timestep = env.step(np.array([0.05, 0.3]))
-    timestep = env.step(np.array([0.05, 0.3]))
-    reference = measure(env.physics)
-    reference["desired_heading"] = np.asarray(env.task.desired_heading, dtype=np.float64)
-    assert_identical(timestep.observation, reference)
+    env.reset()
+    rng = np.random.default_rng(1)
+    spec = env.action_spec()
+    for _ in range(25):
+        timestep = env.step(rng.uniform(spec.minimum, spec.maximum))
+        physics = env.physics
+        reference = measure(physics)
+        for key, value in env.task.references(physics).items():
+            reference[key] = np.asarray(value, dtype=np.float64)
+        assert_identical(timestep.observation, reference)
+        assert_identical(env.task._records[-1], accessor_record(physics), "record")

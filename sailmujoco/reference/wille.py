@@ -204,19 +204,24 @@ class Wille4DOF:
 
         M, the pitch moment, is not in the paper's model; only ``model="rigid"`` uses it.
         """
-        self.wind.ensure(t + 1.0)
-        terms = np.zeros((len(TERMS), 5))
-        if not wille_model.force_terms(float(t), np.ascontiguousarray(state, dtype=float), *self._model(),
-                                       np.zeros((7, 6)), terms):
-            raise ValueError(DOMAIN_ERROR)
-        return dict(zip(TERMS, terms, strict=True))
+        return dict(zip(TERMS, self.terms_and_sail_flow(t, state)[0], strict=True))
 
     def _sail_flow(self, t: float, state) -> tuple[float, float]:
         """V_ws, the air velocity relative to the sail CE in FRD, eq. 26 (wind at eq. 42's height)."""
+        return self.terms_and_sail_flow(t, state, terms=False)[1]
+
+    def terms_and_sail_flow(self, t: float, state, terms: bool = True):
+        """(the (len(TERMS), 5) array of :meth:`forces` or None, :meth:`_sail_flow`) at (t, state):
+        one packing of the kernels' arguments for both (the task's measurement needs both)."""
         self.wind.ensure(t + 1.0)
         model = self._model()
-        return wille_model.sail_flow(float(t), np.ascontiguousarray(state, dtype=float), model[0], model[2],
-                                     np.zeros(3), *model[13:])
+        t, state = float(t), np.ascontiguousarray(state, dtype=float)
+        out = None
+        if terms:
+            out = np.zeros((len(TERMS), 5))
+            if not wille_model.force_terms(t, state, *model, np.zeros((7, 6)), out):
+                raise ValueError(DOMAIN_ERROR)
+        return out, wille_model.sail_flow(t, state, model[0], model[2], np.zeros(3), *model[13:])
 
     def _saturated_commands(self):
         """The commands after the actuator saturations |sigma| <= sigma_sat, |lambda| <= lambda_sat."""
@@ -325,11 +330,15 @@ class Wille4DOF:
 
     def apparent_wind_masthead(self) -> np.ndarray:
         """Air velocity relative to the masthead in body FLU (x, y, z), m/s (4-DOF kinematics)."""
+        return self.masthead_flow(self.rotation(), self.body_velocity(), self.angular_velocity())
+
+    def masthead_flow(self, rot, body, rates) -> np.ndarray:
+        """:meth:`apparent_wind_masthead` from this state's :meth:`rotation`, :meth:`body_velocity`
+        and :meth:`angular_velocity` (the task's measurement has them already)."""
         p = self.params
-        rot = self.rotation()
         top = np.array([p.sail.mast_x, 0.0, p.sail.masthead_height])
-        (wx, wy, wz), (tx, _, tz) = self.angular_velocity(), top
-        vel = rot @ (self.body_velocity() + np.array([wy * tz, wz * tx - wx * tz, -wy * tx]))  # v + w x r
+        (wx, wy, wz), (tx, _, tz) = rates, top
+        vel = rot @ (body + np.array([wy * tz, wz * tx - wx * tz, -wy * tx]))  # v + w x r
         air = self.true_wind(float((rot @ top)[2])) - vel
         return rot.T @ air
 

@@ -23,7 +23,8 @@ from dm_env import specs
 
 from .. import frames
 from ..physics import BoatPhysics, SimulationStopped
-from .measurement import WRENCH_KEYS, WRENCH_NAMES, measure_boat
+from ..reference.wille import Wille4DOF
+from .measurement import WRENCH_KEYS, WRENCH_NAMES, measure_boat, measure_wille
 
 
 def _scalar(x) -> np.ndarray:
@@ -35,7 +36,8 @@ def measure(world) -> OrderedDict:
 
     The definition of the observation, and its path for worlds other than a MuJoCo boat; a
     :class:`~sailmujoco.physics.BoatPhysics` is measured by the equal, faster
-    :func:`~sailmujoco.tasks.measurement.measure_boat`."""
+    :func:`~sailmujoco.tasks.measurement.measure_boat`, Wille's paper world by
+    :func:`~sailmujoco.tasks.measurement.measure_wille`."""
     rot = world.rotation()
     body = world.body_velocity()
     rates = world.angular_velocity()
@@ -268,7 +270,7 @@ class SailTask(control.Task):
     def record(self, physics) -> dict:
         """What ``summarise`` needs from one step (our frames, SI)."""
         row = self.measurement(physics)[1]
-        if row is not None:  # a MuJoCo boat: measured with the observation
+        if row is not None:  # a MuJoCo boat or Wille's paper world: measured with the observation
             return dict(row)
         body = physics.body_velocity()
         return {"t": physics.time(), "position": np.array(physics.position()[:2]),
@@ -295,7 +297,9 @@ class SailTask(control.Task):
             return measured[1], measured[2]  # nothing moved since
         if isinstance(physics, BoatPhysics):
             obs, row = measure_boat(physics)
-        else:
+        elif isinstance(physics, PaperPhysics) and isinstance(physics.world, Wille4DOF):
+            obs, row = measure_wille(physics.world)
+        else:  # a world with an observation of its own (Viel's), or the accessors
             obs = physics.observation() if hasattr(physics, "observation") else measure(physics)
             row = None
         for key, value in self.references(physics).items():
