@@ -400,7 +400,10 @@ class BoatPhysics(engine.Physics):
         heel = float(self.data.ptr.qpos[3])
         righting = float(np.interp(heel, table.heel, table.righting))
         force_b = p.mass * self._P[kernels.P_G] * rot[2, :]  # the weight, world vertical, body axes
-        wrench = np.concatenate([force_b, np.cross((p.cg_x, 0.0, p.cg_z), force_b)])
+        # (cg_x, 0, cg_z) x force_b, the products and differences np.cross forms (bit for bit;
+        # np.cross itself costs 10 us, a third of this stage)
+        (fx, fy, fz), cx, cz = force_b, p.cg_x, p.cg_z
+        wrench = np.array([fx, fy, fz, 0.0 * fz - cz * fy, cz * fx - cx * fz, cx * fy - 0.0 * fx])
         wrench[3] -= righting
         self._terms[kernels.T_HYDRO] = wrench
         self._qfrc8[0:3] += rot @ force_b
