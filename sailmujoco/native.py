@@ -27,6 +27,7 @@ the force kernel itself comes from numba's cache) and not cached on disk.
 from __future__ import annotations
 
 import ctypes
+import math
 import threading
 from pathlib import Path
 
@@ -345,15 +346,14 @@ _OK = kernels.STATUS_OK
 
 
 @numba.njit(inline="always", cache=True)
-def _forces(row, t):
-    """The force kernel on the registered arrays, adding the added mass to M.
+def _forces(row, t, add_mass):
+    """The force kernel on the registered arrays, adding the added mass to M if ``add_mass``.
 
-    ``add_mass`` is a value known only at run time (the qpos address is never 0): a literal
-    True would compile the kernel a second time for the type Literal[bool], and a second
-    signature takes every Python call of the kernel off its direct entry point
-    (tests/test_fast_path.py).
+    ``add_mass`` must be a value known only at run time (``row[R_FIRST] != 0``: the qpos
+    address is never 0): a literal True would compile the kernel a second time for the type
+    Literal[bool], and a second signature takes every Python call of the kernel off its direct
+    entry point (tests/test_fast_path.py).
     """
-    add_mass = row[R_FIRST] != 0
     return _boat_forces(
         t, _vector(row, 0), _vector(row, 1), _ints(row, 2), _vector(row, 3), _matrix(row, 4),
         _matrix(row, 5), _vector(row, 6), _vector(row, 7), _matrix(row, 8), _matrix(row, 9),
@@ -380,7 +380,7 @@ def _stage(m, d):
         if found == key:
             row = registry[slot]
             t = numba.carray(_pointer(key + _offset()), (1,), np.float64)[0]
-            status = _forces(row, t)
+            status = _forces(row, t, row[R_FIRST] != 0)
             row[R_COUNT] += 1
             if status != _OK and row[R_COUNT] == 1:
                 row[R_STATUS] = status
@@ -440,7 +440,7 @@ def _split_one(model_address, data_address, nstep, row):
     before = _warning_count(row)
     for step in range(nstep):
         _mj_step1(m, d)
-        status = _forces(row, time[0])
+        status = _forces(row, time[0], row[R_FIRST] != 0)
         if status != _OK:
             return status, step, _warning_count(row) != before
         _mj_factorM(m, d)
@@ -487,3 +487,76 @@ def batch_steps(models, datas, nstep, slots, rk4, saved, status, done, warned):
         else:
             s, k, w = _split_one(models[i], datas[i], nstep, row)
         status[i], done[i], warned[i] = s, k, w
+
+
+# ---- the 4-DOF model's forces ----------------------------------------------------------------
+_T_HYDRO, _P_G = kernels.T_HYDRO, kernels.P_G
+
+
+@numba.njit(nogil=True, cache=True)
+def forces_4dof(t, row, qpos, qvel, qfrc, mass_csr, a_diag, csr4, weight_arm, floating_heel,
+                floating_righting, add_mass):
+    """The forces of the 4-DOF boat (heave and pitch held) on its x, y, yaw and roll joints,
+    and with ``add_mass`` its added mass in ``mass_csr`` (MuJoCo's M); returns the kernel status.
+
+    :meth:`sailmujoco.physics.BoatPhysics._forces_4dof_python` compiled, operation for
+    operation (the same products, sums and library calls in the same order, numpy's BLAS for
+    the matrix products), so bit for bit (tests/test_native_step.py). The force kernel sees the
+    hull as if free: ``row`` (:func:`registry_row`) holds its pseudo free-joint qpos and qvel,
+    filled here from MuJoCo's ``qpos``/``qvel``, and its forces ``qfrc8``, mapped here onto
+    ``qfrc`` (MuJoCo's qfrc_applied). ``weight_arm``: (mass, cg_x, cg_z); ``floating_heel``/
+    ``floating_righting``: the geometric mode's floating table (empty otherwise); ``csr4``:
+    rows (i, j, address in M) of the lower triangle of the four hull joints.
+    """
+    q7, v6 = _vector(row, A_QPOS), _vector(row, A_QVEL)
+    # the hull's pose and velocity in free-joint layout (BoatPhysics._fill_pseudo)
+    x, y, yaw, roll = qpos[0], qpos[1], qpos[2], qpos[3]
+    xd, yd, yawd, rolld = qvel[0], qvel[1], qvel[2], qvel[3]
+    cy, sy, cr, sr = math.cos(yaw), math.sin(yaw), math.cos(roll), math.sin(roll)
+    rot = np.empty((3, 3))
+    rot[0, 0], rot[0, 1], rot[0, 2] = cy, -sy * cr, sy * sr
+    rot[1, 0], rot[1, 1], rot[1, 2] = sy, cy * cr, -cy * sr
+    rot[2, 0], rot[2, 1], rot[2, 2] = 0.0, sr, cr
+    q7[0], q7[1], q7[2] = x, y, 0.0
+    c2, s2, cr2, sr2 = math.cos(yaw / 2), math.sin(yaw / 2), math.cos(roll / 2), math.sin(roll / 2)
+    q7[3], q7[4], q7[5], q7[6] = c2 * cr2, c2 * sr2, s2 * sr2, s2 * cr2
+    q7[7], q7[8] = qpos[4], qpos[5]
+    v6[0], v6[1], v6[2] = xd, yd, 0.0
+    spin = np.zeros(3)
+    spin[2] = yawd
+    omega = rot.T @ spin
+    v6[3], v6[4], v6[5] = omega[0] + rolld, omega[1] + 0.0, omega[2] + 0.0
+    v6[6], v6[7] = qvel[4], qvel[5]
+
+    status = _forces(row, t, row[R_FIRST] == 0)  # no added mass from the kernel (False)
+    if status != _OK:
+        return status
+    f = _vector(row, 20)  # qfrc8
+    if floating_heel.shape[0] > 0:  # BoatPhysics._floating_hydrostatics
+        righting = np.interp(qpos[3], floating_heel, floating_righting)
+        force_b = weight_arm[0] * _vector(row, 3)[_P_G] * rot[2, :]
+        fx, fy, fz, cx, cz = force_b[0], force_b[1], force_b[2], weight_arm[1], weight_arm[2]
+        terms = _matrix(row, 18)
+        terms[_T_HYDRO, 0], terms[_T_HYDRO, 1], terms[_T_HYDRO, 2] = fx, fy, fz
+        terms[_T_HYDRO, 3] = (0.0 * fz - cz * fy) - righting
+        terms[_T_HYDRO, 4] = cz * fx - cx * fz
+        terms[_T_HYDRO, 5] = cx * fy - 0.0 * fx
+        push = rot @ force_b
+        for k in range(3):
+            f[k] += push[k]
+            f[3 + k] += terms[_T_HYDRO, 3 + k]
+    torque_world = rot @ f[3:6].copy()
+    qfrc[0], qfrc[1], qfrc[2], qfrc[3] = f[0], f[1], torque_world[2], f[3]
+    qfrc[4], qfrc[5] = f[6], f[7]
+    if a_diag[4] != a_diag[5]:  # the rotational added-mass rate term (see _forces_4dof_python)
+        heel = qpos[3]
+        qfrc[2] += (a_diag[5] - a_diag[4]) * math.sin(heel) * math.cos(heel) * qvel[3] * qvel[2]
+    if add_mass:
+        jac = np.zeros((6, 4))
+        jac[0:3, 0:2] = rot.T[:, 0:2]
+        jac[3:6, 2] = rot.T[:, 2]
+        jac[3, 3] = 1.0
+        added = jac.T @ (a_diag.reshape((6, 1)) * jac)
+        for k in range(csr4.shape[0]):
+            mass_csr[csr4[k, 2]] += added[csr4[k, 0], csr4[k, 1]]
+    return status

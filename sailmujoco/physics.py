@@ -64,8 +64,9 @@ def _csr(m, i: int, j: int) -> int:
 
 # MuJoCo's control callback is one per process. A 6-DOF boat steps in compiled code with a
 # compiled callback (sailmujoco/native.py); the 4-DOF model, whose forces are mapped onto its
-# joints in Python, installs this one while it steps with RK4 (native.callback_installed counts
-# the users and puts back what it found). It finds the stepping boat by its MjData.
+# joints by a compiled function called from Python (native.forces_4dof), installs this one while
+# it steps with RK4 (native.callback_installed counts the users and puts back what it found). It
+# finds the stepping boat by its MjData.
 _RK4 = int(mujoco.mjtIntegrator.mjINT_RK4)  # an int: comparing with the enum costs 0.6 us
 _RK4_STEPPING: dict = {}  # MjData address -> the stepping boat's stage function
 
@@ -82,7 +83,7 @@ def _rk4_stage(m, d) -> None:
 
 
 # per-instance attributes bound to one MjData or one process: rebuilt, never copied
-_REBUILT = ("_kernel", "_args", "_bound", "_bound_wander", "_row")
+_REBUILT = ("_kernel", "_args", "_bound", "_bound_wander", "_row", "_bound_4dof")
 
 
 class SimulationStopped(RuntimeError):
@@ -166,6 +167,7 @@ class _LazyEntry:
 # the compiled control steps, called past numba's type dispatch (one signature each)
 _RK4_STEPS = _entry_point(native.rk4_steps)
 _SPLIT_STEPS = _entry_point(native.split_steps)
+_FORCES_4DOF = _entry_point(native.forces_4dof)
 
 
 class BoatPhysics(engine.Physics):
@@ -296,8 +298,16 @@ class BoatPhysics(engine.Physics):
                       w.log_z,
                       w.wander, w.gust_cos, self._external, self._terms, self._diag, qfrc,
                       self._madd, d.M, self._csr_addr, self._work)
-        self._row = (native.registry_row(self._args, d.act, self._warnings)
-                     if self.dofs == 6 else None)
+        self._row = native.registry_row(self._args, d.act, self._warnings)
+        if self.dofs == 4:  # the rest of native.forces_4dof's arguments
+            table = self._floating
+            empty = np.zeros(0)
+            self._bound_4dof = (
+                d.qpos, d.qvel, d.qfrc_applied, d.M, np.ascontiguousarray(self._a_diag, dtype=float),
+                np.array(self._csr4, dtype=np.int64).reshape(-1, 3),
+                np.array([self.params.mass, self.params.cg_x, self.params.cg_z], dtype=float),
+                empty if table is None else np.ascontiguousarray(table.heel, dtype=float),
+                empty if table is None else np.ascontiguousarray(table.righting, dtype=float))
 
     def _prepare(self, horizon: float) -> None:
         """Make sure the wind covers the next ``horizon`` seconds and the arguments are bound."""
@@ -410,7 +420,14 @@ class BoatPhysics(engine.Physics):
         self._qfrc8[3:6] += wrench[3:]
 
     def _forces_4dof(self, add_mass: bool) -> int:
-        """Forces (and added mass) of the heave-and-pitch-held model on its x, y, yaw, roll joints."""
+        """Forces (and added mass) of the heave-and-pitch-held model on its x, y, yaw, roll joints:
+        compiled (native.forces_4dof), or with ``compiled_loop`` False the Python reference."""
+        if not self.compiled_loop:
+            return self._forces_4dof_python(add_mass)
+        return _FORCES_4DOF(self.data.ptr.time, self._row, *self._bound_4dof, add_mass)
+
+    def _forces_4dof_python(self, add_mass: bool) -> int:
+        """The reference of native.forces_4dof: the same operations in Python and numpy."""
         d = self.data.ptr
         rot = self._fill_pseudo()
         status = self._kernel(d.time, *self._args, False)

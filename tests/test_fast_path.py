@@ -93,13 +93,22 @@ for boat, hydrostatics, forms, sail_mode in itertools.product(
                                forces=ForceSwitches(hydrostatics=hydrostatics, **switches))
     physics.step(3)
     entries.append(physics._kernel._entry is not None)
-print(json.dumps({"signatures": len(kernels.boat_forces.signatures), "entries": entries}))
+from sailmujoco import native, physics as physics_module
+for boat, hydrostatics in itertools.product(sorted(BOATS), ("geometric", "paper")):
+    four = BoatPhysics.load(boat, dofs=4, forces=ForceSwitches(hydrostatics=hydrostatics))
+    four.step(3)
+    four.model.opt.integrator = 0  # Euler: the split path calls it too
+    four.step(3)
+entries.append(physics_module._FORCES_4DOF._entry is not None)
+print(json.dumps({"signatures": len(kernels.boat_forces.signatures),
+                  "signatures_4dof": len(native.forces_4dof.signatures), "entries": entries}))
 """
 
 
 def test_the_compiled_kernel_stays_on_its_fast_path():
     """Every boat, both hydrostatics, both force forms and both sail modes call the force kernel
-    with one numba signature, so each physics calls its compiled entry point directly. A second
+    (and the 4-DOF boats the compiled 4-DOF stage) with one numba signature, so each physics
+    calls its compiled entry point directly. A second
     signature (an int where a float was, a new array type) would silently put every step back
     through numba's type dispatch, about 4x slower (issue 18): this test fails instead. It runs
     in a fresh process so that no other test's calls are counted."""
@@ -109,4 +118,5 @@ def test_the_compiled_kernel_stays_on_its_fast_path():
     assert out.returncode == 0, out.stderr[-2000:]
     result = json.loads(out.stdout.strip().splitlines()[-1])
     assert result["signatures"] == 1
-    assert len(result["entries"]) == 24 and all(result["entries"])
+    assert result["signatures_4dof"] == 1  # the compiled 4-DOF stage, every boat and mode
+    assert len(result["entries"]) == 25 and all(result["entries"])
