@@ -421,12 +421,13 @@ class VielWorld:
             raise ValueError(DOMAIN_ERROR)
         return out
 
-    def forces(self, state=None, action=None, t: float | None = None) -> dict:
-        """The terms of eqs. 4-9 (see :func:`model_forces`) for our action [rad]."""
+    def forces(self, state=None, action=None, t: float | None = None, true_wind=None) -> dict:
+        """The terms of eqs. 4-9 (see :func:`model_forces`) for our action [rad]; ``true_wind``:
+        :meth:`true_wind` at ``t`` if the caller has it."""
         state = self._state if state is None else np.asarray(state, dtype=float)
         action = self._action if action is None else self._checked_action(action)
         delta_r, delta_s = viel_from_action(action)
-        a_tw, psi_tw = self.true_wind(t)
+        a_tw, psi_tw = self.true_wind(t) if true_wind is None else true_wind
         out = np.empty(len(FORCE_NAMES))
         if not forces_kernel(self._packed(), np.ascontiguousarray(state, dtype=float), delta_r, delta_s, a_tw,
                              psi_tw, out):
@@ -518,26 +519,28 @@ class VielWorld:
         c, s = math.cos(theta), math.sin(theta)
         return np.array([v * c - u * s, v * s + u * c])
 
-    def apparent_wind(self) -> tuple[float, float]:
-        """(a_aw [m/s], psi_aw [rad], Viel's body blows-towards angle), §2.3."""
-        a_tw, psi_tw = self.true_wind()
+    def apparent_wind(self, true_wind=None) -> tuple[float, float]:
+        """(a_aw [m/s], psi_aw [rad], Viel's body blows-towards angle), §2.3 (``true_wind``:
+        :meth:`true_wind` now, if the caller has it)."""
+        a_tw, psi_tw = self.true_wind() if true_wind is None else true_wind
         return apparent_wind(a_tw, psi_tw, self._state[2], self._state[3])
 
     def wind_direction(self) -> float:
         """Compass bearing the true wind comes from now [rad] (mean, schedule, oscillation, wander)."""
         return float(wrap_angle(self.wind.direction_from(self._time)))
 
-    def wrenches(self) -> dict:
+    def wrenches(self, true_wind=None) -> dict:
         """Body (FLU) wrenches (Fx, Fy, Fz, Mx, My, Mz) [N, N m] of the eq. 4-6 terms, now.
 
         ``sail_wrench``: the sail terms (eq. 4 thrust, eq. 6 moment; eq. 5 has no sail term,
         Viel: "compensated by the keel"); ``rudder_wrench``: the g_rv, g_ru terms;
-        ``damping_wrench``: p2 and p3 frictions; ``hull_wind_wrench``: p1 a_tw^2.
+        ``damping_wrench``: p2 and p3 frictions; ``hull_wind_wrench``: p1 a_tw^2. ``true_wind``:
+        :meth:`true_wind` now, if the caller has it.
         """
-        f = self.forces()
+        a_tw, psi_tw = true_wind = self.true_wind() if true_wind is None else true_wind
+        f = self.forces(true_wind=true_wind)
         p, (_, _, theta, v, u, omega) = self.params, self._state
         delta_r, delta_s = viel_from_action(self._action)
-        a_tw, psi_tw = self.true_wind()
         zero = np.zeros(6)
         sail = np.array([f["g_s"] * math.sin(delta_s), 0, 0, 0, 0,
                          f["g_s"] * (p.p6 - p.p7 * math.cos(delta_s))])
@@ -559,8 +562,8 @@ def observation_from_world(world: VielWorld, target=None) -> dict:
     ``target`` (x east, y north) [m], if given, becomes ``target_position``.
     """
     x, y, theta, v, u, omega = world.state
-    a_tw, psi_tw = world.true_wind()
-    a_aw, psi_aw = world.apparent_wind()
+    a_tw, psi_tw = wind = world.true_wind()  # once: apparent wind and wrenches take it
+    a_aw, psi_aw = world.apparent_wind(wind)
     flow_body = np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)])  # where it blows to
     true_wind = np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)])
     action = world.action
@@ -571,7 +574,7 @@ def observation_from_world(world: VielWorld, target=None) -> dict:
         pitch_rate=np.array(0.0), yaw_rate=np.array(omega), rudder=np.array(action[0]),
         sail=np.array(action[1]), true_wind=true_wind, wind_speed_10=np.array(world.wind.config.speed),
         wind_direction=np.array(world.wind_direction()), apparent_wind_ce=flow_body,
-        current=np.zeros(2), time=np.array(world.time), **world.wrenches())
+        current=np.zeros(2), time=np.array(world.time), **world.wrenches(wind))
     obs = dict(
         position=np.array([x, y]), velocity=world.velocity(), heading=np.array(heading),
         heel=np.array(0.0), roll_rate=np.array(0.0), yaw_rate=np.array(omega),
