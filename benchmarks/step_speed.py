@@ -1,6 +1,7 @@
 """Speed of a physics step with all forces, as a ratio to the bare mj_step of the same model.
 
 Run: python benchmarks/step_speed.py [--steps N] [--integrator rk4|implicitfast|implicit|euler]
+[--dofs 6|4]
 
 Both are measured in this run, on the same compiled MjModel: "bare" is mujoco.mj_step on a
 fresh MjData (no force models, no added mass); "sailmujoco" is BoatPhysics.step, which at
@@ -11,7 +12,10 @@ step(20) is a 10 Hz control loop at the 5 ms physics step. ``--python-loop`` tim
 work called from Python instead (``BoatPhysics.compiled_loop = False``, the path up to
 issue 18) in the same run. ``--integrator`` sets
 MuJoCo's integrator on that model (both columns): the default RK4 runs the force models at
-each of its four stages, the first-order ones once per step.
+each of its four stages, the first-order ones once per step. ``--dofs 4`` times the boats with
+heave and pitch held (the reduced models' assumption, the assumption study's switch): MuJoCo's
+RK4 calls a Python callback at each stage, which calls the compiled 4-DOF stage
+(``native.forces_4dof``); ``--python-loop`` then times that stage in Python.
 """
 
 from __future__ import annotations
@@ -43,9 +47,10 @@ INTEGRATORS = {"rk4": mujoco.mjtIntegrator.mjINT_RK4,
 
 
 def measure(boat: str, hydrostatics: str, steps: int, integrator: str | None = None,
-            python_loop: bool = False) -> dict:
+            python_loop: bool = False, dofs: int = 6) -> dict:
     wind = WindConfig(speed=8.0, direction_from=math.radians(45.0), seed=0)
-    physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics))
+    physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics),
+                               dofs=dofs)
     physics.compiled_loop = not python_loop
     if integrator is not None:
         physics.model.opt.integrator = INTEGRATORS[integrator]
@@ -82,19 +87,21 @@ def main() -> None:
                         help="MuJoCo integrator (default: the model's, RK4)")
     parser.add_argument("--python-loop", action="store_true",
                         help="also time the stage work called from Python (the path up to issue 18)")
+    parser.add_argument("--dofs", type=int, choices=(6, 4), default=6,
+                        help="6 (default), or 4: heave and pitch held")
     args = parser.parse_args()
     print(f"{'boat':12s} {'hydrostatics':12s} {'bare mj_step':>13s} {'step(1)':>9s} "
           f"{'ratio':>6s} {'step(20)':>9s} {'ratio':>6s}")
     for boat in ("wille_yacht", "saoud_robot"):
         for hydrostatics in ("paper", "geometric"):
             for python_loop in ((False, True) if args.python_loop else (False,)):
-                r = measure(boat, hydrostatics, args.steps, args.integrator, python_loop)
+                r = measure(boat, hydrostatics, args.steps, args.integrator, python_loop, args.dofs)
                 label = f"{r['hydrostatics']}{' (py)' if python_loop else ''}"
                 print(f"{r['boat']:12s} {label:12s} {r['bare_us']:10.2f} us "
                       f"{r['step1_us']:6.2f} us {r['step1_us'] / r['bare_us']:6.2f} "
                       f"{r['step20_us']:6.2f} us {r['step20_us'] / r['bare_us']:6.2f}")
     name = args.integrator or "model default"
-    print(f"(integrator {name}; numpy {np.__version__}, mujoco {mujoco.__version__}; "
+    print(f"({args.dofs} DOF; integrator {name}; numpy {np.__version__}, mujoco {mujoco.__version__}; "
           f"ratio = time / bare mj_step)")
 
 

@@ -73,6 +73,18 @@ def _wrap(angle: float) -> float:
     return (angle + _PI) % _TWO_PI - _PI
 
 
+def euler_of(rot) -> tuple[float, float, float]:
+    """frames.euler_from_matrix as floats: (heel, pitch, yaw), the same numpy functions on the
+    same numbers (np.clip keeps a NaN, as this does), without its array handling."""
+    heel = float(np.arctan2(rot[2, 1], rot[2, 2]))
+    sin_pitch = rot[2, 0]
+    if sin_pitch > 1.0:
+        sin_pitch = 1.0
+    elif sin_pitch < -1.0:
+        sin_pitch = -1.0
+    return heel, float(np.arcsin(sin_pitch)), float(np.arctan2(rot[1, 0], rot[0, 0]))
+
+
 def measure_boat(physics) -> tuple[dict, dict]:
     """(observation, record) of a :class:`~sailmujoco.physics.BoatPhysics` now.
 
@@ -92,15 +104,7 @@ def measure_boat(physics) -> tuple[dict, dict]:
     current = wind.current
     current_body = rot_t @ current
     t = d.time
-    # frames.euler_from_matrix: heel, pitch (np.clip keeps a NaN, as this does), yaw
-    heel = float(np.arctan2(rot[2, 1], rot[2, 2]))
-    sin_pitch = rot[2, 0]
-    if sin_pitch > 1.0:
-        sin_pitch = 1.0
-    elif sin_pitch < -1.0:
-        sin_pitch = -1.0
-    pitch = float(np.arcsin(sin_pitch))
-    yaw = float(np.arctan2(rot[1, 0], rot[0, 0]))
+    heel, pitch, yaw = euler_of(rot)
     heading = _wrap(_PI / 2.0 - yaw)  # frames.heading_from_yaw
     idx = physics._idx
     rudder, sail = float(d.qpos[idx[0]]), float(d.qpos[idx[2]])
