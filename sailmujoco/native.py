@@ -13,6 +13,10 @@ runs without Python:
   the same to the last bit (tests/test_native_step.py).
 * :func:`split_steps` does the same for the first-order integrators: ``mj_step1``, the kernel,
   ``mj_factorM``, ``mj_step2``.
+* The 4-DOF boat (heave and pitch held) steps the same way: its row says so (``R_DOFS``), and
+  its stage (:func:`_forces_4dof`) fills the kernel's pseudo free joint from MuJoCo's four hull
+  joints, calls the kernel, adds the floating hydrostatics and maps the forces and the added
+  mass back onto the joints, as ``BoatPhysics._forces_4dof_python`` does in Python.
 
 The registry is one int64 array (:data:`REGISTRY`): a row per boat *while it steps*, holding the
 address of its MjData, a status word, a stage counter and the address and shape of every array
@@ -136,18 +140,31 @@ llvm.add_symbol("sailmujoco_time_offset", _TIME_OFFSET.ctypes.data)
 _time_offset_cell = _symbol_address("sailmujoco_time_offset")
 
 # ---- registry layout ---------------------------------------------------------------------------
-# the kernel's array arguments in order (after t), with their dimensions, then two that are not
-# kernel arguments: the actuator activations (saved and restored with qpos and qvel when a step
-# is undone) and MuJoCo's warning counters (mjData.warning.number, C int)
-ARRAYS = (("qpos", 1), ("qvel", 1), ("idx", 1), ("P", 1), ("columns", 2), ("strips", 2),
-          ("alpha_grid", 1), ("log_re_grid", 1), ("cl_table", 2), ("cd_table", 2),
-          ("oscillation", 1), ("gust_f", 1), ("gust_phase", 1), ("gust_amp", 2), ("log_z", 1),
-          ("wander", 1), ("gust_cos", 1), ("external", 1), ("terms", 2), ("diag", 1), ("qfrc", 1),
-          ("madd", 2), ("mass_csr", 1), ("csr_addr", 1), ("work", 1), ("act", 1), ("warnings", 1))
-INT_ARRAYS = ("idx", "csr_addr")
+# the kernel's array arguments in order (after t), with their dimensions; then MuJoCo's qpos,
+# qvel and qfrc_applied (for a 6-DOF boat the kernel's own qpos, qvel, qfrc; the 4-DOF boat's
+# kernel sees a pseudo free joint instead) and the 4-DOF stage's own arrays (empty for 6 DOF,
+# see forces_4dof); then two that are not kernel arguments: the actuator activations (saved and
+# restored with qpos and qvel when a step is undone) and MuJoCo's warning counters
+# (mjData.warning.number, C int)
+KERNEL_ARRAYS = (
+    ("qpos", 1), ("qvel", 1), ("idx", 1), ("P", 1), ("columns", 2), ("strips", 2),
+    ("alpha_grid", 1), ("log_re_grid", 1), ("cl_table", 2), ("cd_table", 2), ("oscillation", 1),
+    ("gust_f", 1), ("gust_phase", 1), ("gust_amp", 2), ("log_z", 1), ("wander", 1),
+    ("gust_cos", 1), ("external", 1), ("terms", 2), ("diag", 1), ("qfrc", 1), ("madd", 2),
+    ("mass_csr", 1), ("csr_addr", 1), ("work", 1))
+FOUR_DOF_ARRAYS = (("a_diag", 1), ("csr4", 2), ("weight_arm", 1), ("floating_heel", 1),
+                   ("floating_righting", 1))
+ARRAYS = (*KERNEL_ARRAYS, ("data_qpos", 1), ("data_qvel", 1), ("data_qfrc", 1),
+          *FOUR_DOF_ARRAYS, ("act", 1), ("warnings", 1))
+INT_ARRAYS = ("idx", "csr_addr", "csr4")
 A_QPOS, A_QVEL, A_ACT, A_WARNINGS = 0, 1, len(ARRAYS) - 2, len(ARRAYS) - 1
-R_DATA, R_STATUS, R_COUNT = 0, 1, 2
-R_FIRST = 3  # then three words per array: address, shape[0], shape[1] (1 for a vector)
+A_QFRC8, A_TERMS, A_P = 20, 18, 3  # the kernel's qfrc (the 4-DOF pseudo forces), terms, P
+A_DATA_QPOS = len(KERNEL_ARRAYS)
+A_DATA_QVEL, A_DATA_QFRC, A_MASS_CSR = A_DATA_QPOS + 1, A_DATA_QPOS + 2, 22
+A_A_DIAG, A_CSR4, A_WEIGHT_ARM, A_FLOAT_HEEL, A_FLOAT_RIGHTING = range(A_DATA_QPOS + 3,
+                                                                      A_DATA_QPOS + 8)
+R_DATA, R_STATUS, R_COUNT, R_DOFS = 0, 1, 2, 3
+R_FIRST = 4  # then three words per array: address, shape[0], shape[1] (1 for a vector)
 ROW = R_FIRST + 3 * len(ARRAYS)
 # An open-addressed hash table on the MjData address (linear probing): a boat's row is found in
 # O(1) from the callback, also with a thousand boats stepping at once. A row that ends its step
@@ -163,13 +180,24 @@ _IN_TABLE = [0]  # rows in use
 _TOMBSTONES: list[int] = []  # rows freed since the table was last empty
 
 
-def registry_row(args, act, warnings) -> np.ndarray:
+def registry_row(args, act, warnings, data=None, four_dof=None) -> np.ndarray:
     """The registry words of a boat's kernel arguments (``BoatPhysics._args``), its actuator
-    activations ``act`` and warning counters; the MjData word is left 0."""
-    args = (*args, act, warnings)
-    if len(args) != len(ARRAYS):
-        raise ValueError(f"expected {len(ARRAYS) - 2} kernel arrays, got {len(args) - 2}")
+    activations ``act`` and warning counters; the MjData word is left 0.
+
+    A 4-DOF boat also gives ``data``, MuJoCo's (qpos, qvel, qfrc_applied), and ``four_dof``, the
+    arrays of :data:`FOUR_DOF_ARRAYS` in order; a 6-DOF boat's are its kernel's qpos, qvel, qfrc.
+    """
+    if len(args) != len(KERNEL_ARRAYS):
+        raise ValueError(f"expected {len(KERNEL_ARRAYS)} kernel arrays, got {len(args)}")
+    dofs = 6 if four_dof is None else 4
+    if data is None:
+        data = (args[A_QPOS], args[A_QVEL], args[A_QFRC8])
+    if four_dof is None:
+        four_dof = (np.zeros(0), np.zeros((0, 3), dtype=np.int64), np.zeros(0), np.zeros(0),
+                    np.zeros(0))
+    args = (*args, *data, *four_dof, act, warnings)
     row = np.zeros(ROW, dtype=np.int64)
+    row[R_DOFS] = dofs
     for k, ((name, ndim), array) in enumerate(zip(ARRAYS, args, strict=True)):
         if name == "warnings":  # a strided view of the counters in the struct: (address, n, stride)
             if array.dtype != np.intc or array.ndim != 1 or array.strides[0] % array.itemsize:
@@ -336,6 +364,12 @@ def _ints(row, k):
 
 
 @numba.njit(inline="always", cache=True)
+def _ints2(row, k):
+    at = R_FIRST + 3 * k
+    return numba.carray(_pointer(row[at]), (row[at + 1], row[at + 2]), np.int64)
+
+
+@numba.njit(inline="always", cache=True)
 def _matrix(row, k):
     at = R_FIRST + 3 * k
     return numba.carray(_pointer(row[at]), (row[at + 1], row[at + 2]), np.float64)
@@ -380,7 +414,7 @@ def _stage(m, d):
         if found == key:
             row = registry[slot]
             t = numba.carray(_pointer(key + _offset()), (1,), np.float64)[0]
-            status = _forces(row, t, row[R_FIRST] != 0)
+            status = _stage_forces(row, t)
             row[R_COUNT] += 1
             if status != _OK and row[R_COUNT] == 1:
                 row[R_STATUS] = status
@@ -412,7 +446,7 @@ def _warning_count(row):
 def _rk4_one(model_address, data_address, nstep, row, saved):
     m, d = _pointer(model_address), _pointer(data_address)
     time = numba.carray(_pointer(data_address + _offset()), (1,), np.float64)
-    qpos, qvel, act = _vector(row, A_QPOS), _vector(row, A_QVEL), _vector(row, A_ACT)
+    qpos, qvel, act = _vector(row, A_DATA_QPOS), _vector(row, A_DATA_QVEL), _vector(row, A_ACT)
     nq, nv, na = qpos.shape[0], qvel.shape[0], act.shape[0]
     before = _warning_count(row)
     for step in range(nstep):
@@ -440,7 +474,7 @@ def _split_one(model_address, data_address, nstep, row):
     before = _warning_count(row)
     for step in range(nstep):
         _mj_step1(m, d)
-        status = _forces(row, time[0], row[R_FIRST] != 0)
+        status = _stage_forces(row, time[0])
         if status != _OK:
             return status, step, _warning_count(row) != before
         _mj_factorM(m, d)
@@ -494,21 +528,39 @@ _T_HYDRO, _P_G = kernels.T_HYDRO, kernels.P_G
 
 
 @numba.njit(nogil=True, cache=True)
-def forces_4dof(t, row, qpos, qvel, qfrc, mass_csr, a_diag, csr4, weight_arm, floating_heel,
-                floating_righting, add_mass):
-    """The forces of the 4-DOF boat (heave and pitch held) on its x, y, yaw and roll joints,
-    and with ``add_mass`` its added mass in ``mass_csr`` (MuJoCo's M); returns the kernel status.
+def forces_4dof(t, row, add_mass):
+    """The forces of the 4-DOF boat (heave and pitch held) whose registry row is ``row`` on its
+    x, y, yaw and roll joints, and with ``add_mass`` its added mass in MuJoCo's M; returns the
+    kernel status. (Called from Python; in the compiled loop the stage callback does the same.)
+    """
+    return _forces_4dof(row, t, add_mass)
 
-    :meth:`sailmujoco.physics.BoatPhysics._forces_4dof_python` compiled, operation for
+
+@numba.njit(inline="always", cache=True)
+def _stage_forces(row, t):
+    """One stage's forces and added mass, for a 6-DOF or a 4-DOF row (``add_mass`` True, known
+    only at run time: see :func:`_forces`)."""
+    if row[R_DOFS] == 4:
+        return _forces_4dof(row, t, row[R_FIRST] != 0)
+    return _forces(row, t, row[R_FIRST] != 0)
+
+
+@numba.njit(inline="always", cache=True)
+def _forces_4dof(row, t, add_mass):
+    """:meth:`sailmujoco.physics.BoatPhysics._forces_4dof_python` compiled, operation for
     operation (the same products, sums and library calls in the same order, numpy's BLAS for
     the matrix products), so bit for bit (tests/test_native_step.py). The force kernel sees the
-    hull as if free: ``row`` (:func:`registry_row`) holds its pseudo free-joint qpos and qvel,
-    filled here from MuJoCo's ``qpos``/``qvel``, and its forces ``qfrc8``, mapped here onto
-    ``qfrc`` (MuJoCo's qfrc_applied). ``weight_arm``: (mass, cg_x, cg_z); ``floating_heel``/
-    ``floating_righting``: the geometric mode's floating table (empty otherwise); ``csr4``:
-    rows (i, j, address in M) of the lower triangle of the four hull joints.
+    hull as if free: its qpos and qvel (``row``'s first two arrays) are filled here from
+    MuJoCo's, and its forces (the kernel's ``qfrc``) are mapped here onto MuJoCo's
+    qfrc_applied. The row's 4-DOF arrays: ``a_diag`` (added-mass diagonal), ``csr4`` (rows
+    (i, j, address in M) of the lower triangle of the four hull joints), ``weight_arm`` (mass,
+    cg_x, cg_z), ``floating_heel``/``floating_righting`` (the geometric mode's floating table,
+    empty otherwise).
     """
     q7, v6 = _vector(row, A_QPOS), _vector(row, A_QVEL)
+    qpos, qvel, qfrc = _vector(row, A_DATA_QPOS), _vector(row, A_DATA_QVEL), _vector(row, A_DATA_QFRC)
+    a_diag, csr4, weight_arm = _vector(row, A_A_DIAG), _ints2(row, A_CSR4), _vector(row, A_WEIGHT_ARM)
+    floating_heel, floating_righting = _vector(row, A_FLOAT_HEEL), _vector(row, A_FLOAT_RIGHTING)
     # the hull's pose and velocity in free-joint layout (BoatPhysics._fill_pseudo)
     x, y, yaw, roll = qpos[0], qpos[1], qpos[2], qpos[3]
     xd, yd, yawd, rolld = qvel[0], qvel[1], qvel[2], qvel[3]
@@ -531,12 +583,12 @@ def forces_4dof(t, row, qpos, qvel, qfrc, mass_csr, a_diag, csr4, weight_arm, fl
     status = _forces(row, t, row[R_FIRST] == 0)  # no added mass from the kernel (False)
     if status != _OK:
         return status
-    f = _vector(row, 20)  # qfrc8
+    f = _vector(row, A_QFRC8)
     if floating_heel.shape[0] > 0:  # BoatPhysics._floating_hydrostatics
         righting = np.interp(qpos[3], floating_heel, floating_righting)
-        force_b = weight_arm[0] * _vector(row, 3)[_P_G] * rot[2, :]
+        force_b = weight_arm[0] * _vector(row, A_P)[_P_G] * rot[2, :]
         fx, fy, fz, cx, cz = force_b[0], force_b[1], force_b[2], weight_arm[1], weight_arm[2]
-        terms = _matrix(row, 18)
+        terms = _matrix(row, A_TERMS)
         terms[_T_HYDRO, 0], terms[_T_HYDRO, 1], terms[_T_HYDRO, 2] = fx, fy, fz
         terms[_T_HYDRO, 3] = (0.0 * fz - cz * fy) - righting
         terms[_T_HYDRO, 4] = cz * fx - cx * fz
@@ -552,6 +604,7 @@ def forces_4dof(t, row, qpos, qvel, qfrc, mass_csr, a_diag, csr4, weight_arm, fl
         heel = qpos[3]
         qfrc[2] += (a_diag[5] - a_diag[4]) * math.sin(heel) * math.cos(heel) * qvel[3] * qvel[2]
     if add_mass:
+        mass_csr = _vector(row, A_MASS_CSR)
         jac = np.zeros((6, 4))
         jac[0:3, 0:2] = rot.T[:, 0:2]
         jac[3:6, 2] = rot.T[:, 2]

@@ -62,11 +62,10 @@ def _csr(m, i: int, j: int) -> int:
     return int(row + np.nonzero(cols == j)[0][0])
 
 
-# MuJoCo's control callback is one per process. A 6-DOF boat steps in compiled code with a
-# compiled callback (sailmujoco/native.py); the 4-DOF model, whose forces are mapped onto its
-# joints by a compiled function called from Python (native.forces_4dof), installs this one while
-# it steps with RK4 (native.callback_installed counts the users and puts back what it found). It
-# finds the stepping boat by its MjData.
+# MuJoCo's control callback is one per process. A boat steps in compiled code with a compiled
+# callback (sailmujoco/native.py); with compiled_loop False (the Python reference) a boat installs
+# this one while it steps with RK4 (native.callback_installed counts the users and puts back what
+# it found). It finds the stepping boat by its MjData.
 _RK4 = int(mujoco.mjtIntegrator.mjINT_RK4)  # an int: comparing with the enum costs 0.6 us
 _RK4_STEPPING: dict = {}  # MjData address -> the stepping boat's stage function
 
@@ -298,16 +297,18 @@ class BoatPhysics(engine.Physics):
                       w.log_z,
                       w.wander, w.gust_cos, self._external, self._terms, self._diag, qfrc,
                       self._madd, d.M, self._csr_addr, self._work)
-        self._row = native.registry_row(self._args, d.act, self._warnings)
-        if self.dofs == 4:  # the rest of native.forces_4dof's arguments
+        if self.dofs == 6:
+            self._row = native.registry_row(self._args, d.act, self._warnings)
+        else:  # MuJoCo's arrays and the 4-DOF stage's own (native.forces_4dof)
             table = self._floating
-            empty = np.zeros(0)
-            self._bound_4dof = (
-                d.qpos, d.qvel, d.qfrc_applied, d.M, np.ascontiguousarray(self._a_diag, dtype=float),
+            self._bound_4dof = (  # held: the registry row holds only their addresses
+                np.ascontiguousarray(self._a_diag, dtype=float),
                 np.array(self._csr4, dtype=np.int64).reshape(-1, 3),
                 np.array([self.params.mass, self.params.cg_x, self.params.cg_z], dtype=float),
-                empty if table is None else np.ascontiguousarray(table.heel, dtype=float),
-                empty if table is None else np.ascontiguousarray(table.righting, dtype=float))
+                np.zeros(0) if table is None else np.ascontiguousarray(table.heel, dtype=float),
+                np.zeros(0) if table is None else np.ascontiguousarray(table.righting, dtype=float))
+            self._row = native.registry_row(self._args, d.act, self._warnings,
+                                            (d.qpos, d.qvel, d.qfrc_applied), self._bound_4dof)
 
     def _prepare(self, horizon: float) -> None:
         """Make sure the wind covers the next ``horizon`` seconds and the arguments are bound."""
@@ -424,7 +425,7 @@ class BoatPhysics(engine.Physics):
         compiled (native.forces_4dof), or with ``compiled_loop`` False the Python reference."""
         if not self.compiled_loop:
             return self._forces_4dof_python(add_mass)
-        return _FORCES_4DOF(self.data.ptr.time, self._row, *self._bound_4dof, add_mass)
+        return _FORCES_4DOF(self.data.ptr.time, self._row, add_mass)
 
     def _forces_4dof_python(self, add_mass: bool) -> int:
         """The reference of native.forces_4dof: the same operations in Python and numpy."""
@@ -467,7 +468,7 @@ class BoatPhysics(engine.Physics):
             raise SimulationStopped(self.stop_reason, d.time)
         self._prepare(nstep * m.opt.timestep)
         try:
-            if self.dofs == 6 and self.compiled_loop:
+            if self.compiled_loop:
                 self._step_native(nstep, m.opt.integrator == _RK4)
             elif m.opt.integrator == _RK4:
                 self._step_rk4(nstep)
@@ -512,7 +513,7 @@ class BoatPhysics(engine.Physics):
         return engine._INVALID_PHYSICS_STATE.format(warning_names=", ".join(new))
 
     def _step_split(self, nstep: int) -> None:
-        """First-order integrators from Python (the 4-DOF model, or ``compiled_loop`` False):
+        """First-order integrators from Python (``compiled_loop`` False, the reference):
         mj_step1, forces and added mass, mj_step2."""
         m, d = self.model.ptr, self.data.ptr
         kernel, args = self._kernel, self._args
@@ -550,7 +551,7 @@ class BoatPhysics(engine.Physics):
         return stage, count
 
     def _step_rk4(self, nstep: int) -> None:
-        """MuJoCo's RK4 with the stage work in Python (the 4-DOF model, or ``compiled_loop``
+        """MuJoCo's RK4 with the stage work in Python (``compiled_loop``
         False): each stage with that stage's forces and added mass."""
         m, d = self.model.ptr, self.data.ptr
         step, ok = mujoco.mj_step, kernels.STATUS_OK

@@ -95,13 +95,13 @@ def test_the_compiled_first_order_loop_is_the_python_driven_step_bit_for_bit():
     assert np.array_equal(compiled, reference)
 
 
-@pytest.mark.parametrize("integrator", [None, EULER])
-def test_a_capsize_stops_both_paths_in_the_same_state(integrator):
+@pytest.mark.parametrize("integrator,dofs", [(None, 6), (EULER, 6), (None, 4), (EULER, 4)])
+def test_a_capsize_stops_both_paths_in_the_same_state(integrator, dofs):
     """A heeling moment of 20 kN m lays the robot (15 kg) flat within a second: both paths stop
     with the same reason, at the same time, in the state before the offending step."""
     stopped = []
     for compiled in (True, False):
-        physics = BoatPhysics.load("saoud_robot")
+        physics = BoatPhysics.load("saoud_robot", dofs=dofs)
         physics.compiled_loop = compiled
         if integrator is not None:
             physics.model.opt.integrator = integrator
@@ -137,14 +137,16 @@ def test_the_control_callback_found_before_a_step_is_there_after_it():
         mujoco.set_mjcb_control(None)
 
 
-def test_a_4dof_step_first_in_a_process_leaves_no_callback_behind():
-    """In a fresh process (a sweep worker) whose first job is the 4-DOF model, its Python stage
-    callback is put back to none after the step; left installed, the next model's compilation
-    fails inside MuJoCo ("Python exception raised"). A fresh interpreter, because this process has
-    compiled our stage callback already."""
+def test_a_python_stage_first_in_a_process_leaves_no_callback_behind():
+    """In a fresh process (a sweep worker) whose first step runs the stage in Python (here the
+    4-DOF boat with ``compiled_loop`` False), the Python stage callback is put back to none after
+    the step; left installed, the next model's compilation fails inside MuJoCo ("Python
+    exception raised": it was so for the 4-DOF boat in 'study wille_roll_table1'). A fresh
+    interpreter, because this process has compiled our stage callback already."""
     script = ("import mujoco\n"
               "from sailmujoco.physics import BoatPhysics\n"
               "four = BoatPhysics.load('wille_yacht', dofs=4)\n"
+              "four.compiled_loop = False\n"
               "four.step(3)\n"
               "assert mujoco.get_mjcb_control() is None, mujoco.get_mjcb_control()\n"
               "six = BoatPhysics.load('wille_yacht')\n"
