@@ -1,6 +1,7 @@
 """Cost of one control step through the task API, as a ratio to the bare mj_step of its sub-steps.
 
-Run: python benchmarks/control_step_speed.py [--steps N] [--rounds R]
+Run: python benchmarks/control_step_speed.py [--steps N] [--rounds R] [--world mujoco|paper]
+[--dofs 6|4]
 
 For (saoud_robot, speed_trial, saoud) and (wille_yacht, beam_reach_roll, wille_roll), a 0.1 s
 control step is ``action = controller(timestep); timestep = env.step(action)`` on
@@ -16,7 +17,9 @@ control step is ``action = controller(timestep); timestep = env.step(action)`` o
   step, action checks, reward, termination, the TimeStep, and the clocks themselves).
 
 Ratios are to ``bare``; the issue's target for the total is 2 (3 is the floor). Timings on a
-shared machine are noisy: compare ratios within one run.
+shared machine are noisy: compare ratios within one run. ``--world paper`` runs the same tasks
+and controllers in Wille's 4-DOF paper world (bare: the 6-DOF boat's 20 mj_step, as
+``paper_world_speed.py``); ``--dofs 4`` the MuJoCo boats with heave and pitch held.
 """
 
 from __future__ import annotations
@@ -30,14 +33,16 @@ import numpy as np
 from sailmujoco.controllers import factories
 
 from sailmujoco import suite
+from sailmujoco.physics import BoatPhysics
 
 PAIRS = (("saoud_robot", "speed_trial", "saoud"), ("wille_yacht", "beam_reach_roll", "wille_roll"))
 PARTS = ("physics", "observation", "controller", "recording")
 
 
-def episode(boat: str, task: str, controller: str, seed: int = 0):
+def episode(boat: str, task: str, controller: str, seed: int = 0, world: str = "mujoco",
+            dofs: int = 6):
     """(env, controller, first timestep), warmed up by 30 control steps (JIT, caches)."""
-    env = suite.load(boat, task, seed=seed)
+    env = suite.load(boat, task, world, seed=seed, **({"dofs": dofs} if world == "mujoco" else {}))
     policy = getattr(factories, controller)(env)
     policy.reset(seed)
     timestep = env.reset()
@@ -79,10 +84,11 @@ def instrument(env, policy, totals: dict):
     return Clocked(totals, "controller", policy)
 
 
-def measure(boat: str, task: str, controller: str, steps: int, rounds: int) -> dict:
-    env, policy, timestep = episode(boat, task, controller)
-    env_i, policy_i, timestep_i = episode(boat, task, controller)
-    model = env.physics.model.ptr
+def measure(boat: str, task: str, controller: str, steps: int, rounds: int, world: str = "mujoco",
+            dofs: int = 6) -> dict:
+    env, policy, timestep = episode(boat, task, controller, world=world, dofs=dofs)
+    env_i, policy_i, timestep_i = episode(boat, task, controller, world=world, dofs=dofs)
+    model = (env.physics if world == "mujoco" else BoatPhysics.load(boat)).model.ptr
     bare = mujoco.MjData(model)
     mujoco.mj_resetDataKeyframe(model, bare, 0)
     bare.ctrl[:] = [0.05, 0.4]
@@ -120,15 +126,19 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=200, help="control steps per round")
     parser.add_argument("--rounds", type=int, default=7)
+    parser.add_argument("--world", choices=("mujoco", "paper"), default="mujoco")
+    parser.add_argument("--dofs", type=int, choices=(6, 4), default=6,
+                        help="MuJoCo world: 6 (default) or 4 (heave and pitch held)")
     args = parser.parse_args()
     columns = ("total", *PARTS, "plumbing")
     print(f"{'boat + controller':26s} {'bare 20 mj_step':>16s} "
           + " ".join(f"{c:>16s}" for c in columns))
     for boat, task, controller in PAIRS:
-        r = measure(boat, task, controller, args.steps, args.rounds)
+        r = measure(boat, task, controller, args.steps, args.rounds, args.world, args.dofs)
         cells = " ".join(f"{r[c]:8.1f} us {r[c] / r['bare']:5.2f}" for c in columns)
         print(f"{boat + ' + ' + controller:26s} {r['bare']:13.1f} us {cells}")
-    print(f"(us per control step, median of {args.rounds} interleaved rounds of {args.steps} steps; "
+    print(f"({args.world} world, {args.dofs if args.world == 'mujoco' else 4} DOF; us per control "
+          f"step, median of {args.rounds} interleaved rounds of {args.steps} steps; "
           f"ratio = time / bare; numpy {np.__version__}, mujoco {mujoco.__version__})")
 
 
