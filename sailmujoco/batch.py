@@ -1,7 +1,7 @@
 """Many boats stepped together: one compiled call per control step, on all cores.
 
 :class:`BoatBatch` holds N :class:`~sailmujoco.physics.BoatPhysics` (any boats, seeds, winds
-and force switches, 6 DOF) and steps all of them with :func:`sailmujoco.native.batch_steps`:
+and force switches, 6 or 4 DOF) and steps all of them with :func:`sailmujoco.native.batch_steps`:
 numba threads over the boats, each running MuJoCo's step with the compiled stage callback.
 Each boat's trajectory is the one it has stepped alone, bit for bit (tests/test_batch.py):
 the boats share nothing but the callback, which finds each boat's arrays by its MjData.
@@ -28,15 +28,15 @@ from .physics import _RK4, BoatPhysics
 
 
 class BoatBatch:
-    """N 6-DOF boats stepped in one compiled call (see the module docstring)."""
+    """N boats (6 or 4 DOF) stepped in one compiled call (see the module docstring)."""
 
     def __init__(self, boats: list[BoatPhysics]):
         boats = list(boats)
         if not boats:
             raise ValueError("a batch needs at least one boat")
         for i, boat in enumerate(boats):
-            if not isinstance(boat, BoatPhysics) or boat.dofs != 6:
-                raise ValueError(f"boat {i}: a batch holds 6-DOF BoatPhysics only, got {boat!r}")
+            if not isinstance(boat, BoatPhysics):
+                raise ValueError(f"boat {i}: a batch holds BoatPhysics only, got {boat!r}")
         if len({id(b.data.ptr) for b in boats}) != len(boats):
             raise ValueError("a boat appears twice in the batch")
         if not native.AVAILABLE:
@@ -120,9 +120,9 @@ class BatchEnvironment:
     """N environments of the suite stepped together: ``step(actions)`` gives N TimeSteps.
 
     Each environment is a :class:`~sailmujoco.tasks.base.SailEnvironment` as ``suite.load``
-    builds it (its own seed and options). Their 6-DOF boats step in one compiled call per control
-    step (:class:`BoatBatch`); worlds that cannot (the paper worlds, the 4-DOF model) step one
-    at a time behind the same interface. Every environment gives exactly the TimeSteps it gives
+    builds it (its own seed and options). Their MuJoCo boats (6 or 4 DOF) step in one compiled
+    call per control step (:class:`BoatBatch`); the paper worlds step one at a time behind the
+    same interface. Every environment gives exactly the TimeSteps it gives
     alone (tests/test_batch.py). An environment whose episode ended resets on its next step, as
     dm_env's contract says.
     """
@@ -136,7 +136,7 @@ class BatchEnvironment:
             raise ValueError("every environment of a batch needs the same control_timestep")
         self._n_sub_steps = steps.pop()
         physics = [env.physics for env in self.envs]
-        batched = all(isinstance(p, BoatPhysics) and p.dofs == 6 for p in physics)
+        batched = all(isinstance(p, BoatPhysics) for p in physics)
         self.batch = BoatBatch(physics) if batched and native.AVAILABLE else None
 
     def __len__(self) -> int:

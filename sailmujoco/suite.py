@@ -121,7 +121,7 @@ def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = N
 
     ``seeds``: one seed per environment (default ``range(n)``); ``options``: one dict of
     :func:`load` options per environment (e.g. different winds or force switches), merged over
-    ``common``. In the MuJoCo world (6 DOF) the boats step in one compiled call on all cores;
+    ``common``. In the MuJoCo world (6 or 4 DOF) the boats step in one compiled call on all cores;
     every environment behaves exactly as ``load(boat, task, world, seed=..., **options)``.
     """
     from .batch import BatchEnvironment

@@ -17,12 +17,14 @@ from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 FLEET = [("saoud_robot", "geometric", 0), ("saoud_robot", "paper", 1), ("wille_yacht", "geometric", 2),
-         ("viel_boat", "paper", 3), ("wille_yacht", "paper", 4)]
+         ("viel_boat", "paper", 3), ("wille_yacht", "paper", 4),
+         ("wille_yacht", "geometric", 5, 4), ("saoud_robot", "paper", 6, 4)]  # the last two: 4 DOF
 
 
-def _boat(boat, hydrostatics, seed):
+def _boat(boat, hydrostatics, seed, dofs=6):
     wind = WindConfig(speed=3.0 + seed, direction_from=0.7 * seed, seed=seed)
-    physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics))
+    physics = BoatPhysics.load(boat, wind=wind, forces=ForceSwitches(hydrostatics=hydrostatics),
+                               dofs=dofs)
     physics.place(yaw=0.3 * seed, surge=0.5)
     return physics
 
@@ -81,7 +83,7 @@ def test_a_boat_that_capsizes_stops_alone_and_the_others_go_on():
 
 @pytest.mark.parametrize("boats,message", [
     (lambda: [], "at least one boat"),
-    (lambda: [BoatPhysics.load("saoud_robot", dofs=4)], "6-DOF BoatPhysics only"),
+    (lambda: [BoatPhysics.load("saoud_robot"), object()], "boat 1: a batch holds BoatPhysics only"),
     (lambda: [BoatPhysics.load("saoud_robot")] * 2, "appears twice"),
 ])
 def test_a_batch_refuses_what_it_cannot_step_in_one_line(boats, message):
@@ -116,8 +118,9 @@ def _observations_equal(a, b) -> bool:
     return np.array_equal(np.asarray(a), np.asarray(b))
 
 
-@pytest.mark.parametrize("world,batched", [("mujoco", True), ("paper", False)])
-def test_a_batch_of_environments_gives_each_the_timesteps_it_gives_alone(world, batched):
+@pytest.mark.parametrize("world,common,batched", [("mujoco", {}, True), ("mujoco", {"dofs": 4}, True),
+                                                 ("paper", {}, False)])
+def test_a_batch_of_environments_gives_each_the_timesteps_it_gives_alone(world, common, batched):
     """Four seeds of the robot's speed trial with Saoud's controller, 0.5 s episodes: the batch
     steps past an episode's end (each environment resets on its next step, as alone) and every
     TimeStep (type, reward, discount, observation) equals the solo run's."""
@@ -125,9 +128,9 @@ def test_a_batch_of_environments_gives_each_the_timesteps_it_gives_alone(world, 
 
     seeds, options = [0, 1, 2, 3], [{}, {"wind_speed": 3.0}, {}, {"heading_jitter_deg": 20.0}]
     batch = suite.load_batch("saoud_robot", "speed_trial", world, seeds=seeds, options=options,
-                             time_limit=0.5)
+                             time_limit=0.5, **common)
     assert batch.batched is batched and len(batch) == 4
-    solo = [suite.load("saoud_robot", "speed_trial", world, seed=s, time_limit=0.5, **o)
+    solo = [suite.load("saoud_robot", "speed_trial", world, seed=s, time_limit=0.5, **common, **o)
             for s, o in zip(seeds, options, strict=True)]
     policies = [sweep.make_controller("saoud", env) for env in solo]
     twins = [sweep.make_controller("saoud", env) for env in batch.envs]
