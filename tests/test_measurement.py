@@ -81,11 +81,15 @@ def test_boat_states(boat, dofs, hydrostatics, sail_mode):
 
 @pytest.mark.parametrize("boat,task,options", [
     ("saoud_robot", "speed_trial", {}), ("wille_yacht", "beam_reach_roll", {}),
-    ("wille_yacht", "heading_hold", {"dofs": 4}), ("viel_boat", "position_keeping", {"case": 5})])
+    ("wille_yacht", "heading_hold", {"dofs": 4}), ("viel_boat", "position_keeping", {"case": 5}),
+    ("wille_yacht", "heading_hold", {"world": "paper"}),
+    ("wille_yacht", "beam_reach_roll", {"world": "paper"})])
 def test_task_episodes(boat, task, options):
     """Each step's observation and record through suite.load(...).step() against the accessors
-    (with the task's references)."""
+    (with the task's references), MuJoCo boats and Wille's paper world (measure_wille)."""
     env = suite.load(boat, task, seed=2, **options)
+    if options.get("world") == "paper":
+        assert isinstance(env.physics, PaperPhysics)
     timestep = env.reset()
     rng = np.random.default_rng(1)
     spec = env.action_spec()
@@ -135,21 +139,3 @@ def test_wille_paper_world_states(boat, model):
     assert max(heels) > math.radians(3.0)  # heeled states, not only upright ones
     assert world.speed_over_ground() > 0.3
     assert np.any(observation["true_state"]["sail_wrench"] != 0.0)
-
-
-@pytest.mark.parametrize("task", ["heading_hold", "beam_reach_roll"])
-def test_wille_paper_world_episodes(task):
-    """Each step's observation and record through suite.load(..., world='paper').step()."""
-    env = suite.load("wille_yacht", task, world="paper", seed=2)
-    assert isinstance(env.physics, PaperPhysics)
-    env.reset()
-    rng = np.random.default_rng(1)
-    spec = env.action_spec()
-    for _ in range(25):
-        timestep = env.step(rng.uniform(spec.minimum, spec.maximum))
-        physics = env.physics
-        reference = measure(physics)
-        for key, value in env.task.references(physics).items():
-            reference[key] = np.asarray(value, dtype=np.float64)
-        assert_identical(timestep.observation, reference)
-        assert_identical(env.task._records[-1], accessor_record(physics), "record")
