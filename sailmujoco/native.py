@@ -157,12 +157,12 @@ FOUR_DOF_ARRAYS = (("a_diag", 1), ("csr4", 2), ("weight_arm", 1), ("floating_hee
 ARRAYS = (*KERNEL_ARRAYS, ("data_qpos", 1), ("data_qvel", 1), ("data_qfrc", 1),
           *FOUR_DOF_ARRAYS, ("act", 1), ("warnings", 1))
 INT_ARRAYS = ("idx", "csr_addr", "csr4")
-A_QPOS, A_QVEL, A_ACT, A_WARNINGS = 0, 1, len(ARRAYS) - 2, len(ARRAYS) - 1
-A_QFRC8, A_TERMS, A_P = 20, 18, 3  # the kernel's qfrc (the 4-DOF pseudo forces), terms, P
-A_DATA_QPOS = len(KERNEL_ARRAYS)
-A_DATA_QVEL, A_DATA_QFRC, A_MASS_CSR = A_DATA_QPOS + 1, A_DATA_QPOS + 2, 22
-A_A_DIAG, A_CSR4, A_WEIGHT_ARM, A_FLOAT_HEEL, A_FLOAT_RIGHTING = range(A_DATA_QPOS + 3,
-                                                                      A_DATA_QPOS + 8)
+_AT = {name: k for k, (name, _) in enumerate(ARRAYS)}  # an array's place in a row, by name
+A_QPOS, A_QVEL, A_P, A_TERMS, A_QFRC8, A_MASS_CSR = (
+    _AT[name] for name in ("qpos", "qvel", "P", "terms", "qfrc", "mass_csr"))  # qfrc: 4 DOF's pseudo
+A_DATA_QPOS, A_DATA_QVEL, A_DATA_QFRC = _AT["data_qpos"], _AT["data_qvel"], _AT["data_qfrc"]
+A_A_DIAG, A_CSR4, A_WEIGHT_ARM, A_FLOAT_HEEL, A_FLOAT_RIGHTING = (_AT[name] for name, _ in FOUR_DOF_ARRAYS)
+A_ACT, A_WARNINGS = _AT["act"], _AT["warnings"]
 R_DATA, R_STATUS, R_COUNT, R_DOFS = 0, 1, 2, 3
 R_FIRST = 4  # then three words per array: address, shape[0], shape[1] (1 for a vector)
 ROW = R_FIRST + 3 * len(ARRAYS)
