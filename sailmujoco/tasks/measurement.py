@@ -73,6 +73,14 @@ def _wrap(angle: float) -> float:
     return (angle + _PI) % _TWO_PI - _PI
 
 
+def rotation_of(qpos) -> np.ndarray:
+    """BoatPhysics.rotation() from the hull's free-joint qpos (``physics._free_state()[0]``)
+    already in hand: the same MuJoCo call on the same quaternion."""
+    out = np.empty(9)
+    mujoco.mju_quat2Mat(out, qpos[3:7])
+    return out.reshape(3, 3)
+
+
 def euler_of(rot) -> tuple[float, float, float]:
     """frames.euler_from_matrix as floats: (heel, pitch, yaw), the same numpy functions on the
     same numbers (np.clip keeps a NaN, as this does), without its array handling."""
@@ -94,9 +102,7 @@ def measure_boat(physics) -> tuple[dict, dict]:
     """
     d = physics.data.ptr
     qpos, qvel = physics._free_state()
-    out = np.empty(9)
-    mujoco.mju_quat2Mat(out, qpos[3:7])  # rotation()
-    rot = out.reshape(3, 3)
+    rot = rotation_of(qpos)
     rot_t = rot.T
     body = rot_t @ qvel[0:3]  # body_velocity()
     rates = qvel[3:6]  # angular_velocity(), read before _ensure_fresh refills it (4 DOF): same values

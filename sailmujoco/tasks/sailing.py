@@ -29,7 +29,7 @@ from .. import frames
 from ..forces import boat as kernels
 from ..forces.wind import WindConfig
 from .base import SailTask, amplitude, check_number, wrap
-from .measurement import euler_of
+from .measurement import euler_of, rotation_of
 
 MAX_WIND = 60.0  # m/s, U10: above a hurricane's; the force models are not meant for more
 
@@ -110,7 +110,7 @@ def diagnostic_record(physics) -> dict:
     qpos, qvel = physics._free_state()
     rates = qvel[3:6]
     ixx, iyy, izz = p.inertia
-    rot = physics.rotation()
+    rot = rotation_of(qpos)  # rotation(), without filling the 4-DOF pseudo state again
     heel, pitch, _ = euler_of(rot)
     # MuJoCo applies the weight itself, at the CG: its roll moment about CO completes the
     # restoring moment (buoyancy + weight) that the papers' g(eta) stands for
