@@ -86,3 +86,42 @@ def test_bad_wind_file_gives_one_clear_error(tmp_path):
     assert WindConfig.from_toml(good).direction_from == pytest.approx(math.radians(130))
     with pytest.raises(ValueError, match="does not exist"):
         WindConfig.from_toml(tmp_path / "missing.toml")
+
+
+def test_wind_at_three_heights_is_each_height_alone():
+    """The kernel's one evaluation for the sail, topsides and mast (issue 18) gives, for each
+    height, the bits of the one-height evaluation, and both agree with eqs. 39-41 written out
+    here with numpy (mean log profile + sum of cosines with amplitudes linear in ln z)."""
+    from sailmujoco.forces.wind import WANDER_DT, wind_velocities, wind_velocity
+
+    config = WindConfig(speed=7.0, direction_from=0.6, seed=3, speed_oscillation=1.5,
+                        direction_oscillation=0.2, oscillation_frequency=0.05)
+    field = WindField(config)
+    field.ensure(40.0)
+    args = (config.speed, config.direction_from, field.oscillation, field.gust_frequency,
+            field.gust_phase, field.gust_amplitude, field.log_z, WANDER_DT, field.wander)
+    rng = np.random.default_rng(5)
+    heights = [0.001, 0.05, 0.4, 1.3, 3.0, 9.0, 25.0, 400.0]  # from below z0 to above the table
+    for _ in range(60):
+        t = float(rng.uniform(0.0, 35.0))
+        picked = rng.choice(heights, 3) if rng.random() < 0.5 else rng.uniform(0.1, 12.0, 3)
+        zs = [float(z) for z in picked]
+        alone = np.zeros((3, 3))
+        for i, z in enumerate(zs):
+            wind_velocity(t, z, *args, alone[i])
+        for count in (1, 2, 3):
+            together = np.zeros(9)
+            cache = np.full(field.gust_frequency.size + 1, np.nan)
+            wind_velocities(t, zs[0], zs[1], zs[2], count, *args, cache, together)
+            assert np.array_equal(together[:3 * count], alone[:count].ravel())
+        for i, z in enumerate(zs):  # eqs. 39-41 by hand
+            s = math.sin(2.0 * math.pi * field.oscillation[2] * t)
+            mean = (config.speed + field.oscillation[0] * s) * float(log_profile(z, 1.0))
+            lz = np.clip(math.log(z), field.log_z[0], field.log_z[-1])
+            amp = np.array([np.interp(lz, field.log_z, field.gust_amplitude[:, k])
+                            for k in range(field.gust_frequency.size)])
+            gust = np.sum(amp * np.cos(2.0 * math.pi * field.gust_frequency * t + field.gust_phase))
+            bearing = field.direction_from(t)
+            speed = mean + gust
+            expected = [-speed * math.sin(bearing), -speed * math.cos(bearing), 0.0]
+            np.testing.assert_allclose(alone[i], expected, rtol=1e-10, atol=1e-10)

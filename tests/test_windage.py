@@ -88,3 +88,20 @@ def test_switch_off_is_zero_and_changes_nothing_else():
     physics_off, _ = windage_at_rest("wille_yacht", 0.0, on=False)
     for name in ("sail", "keel", "rudder", "hydrostatics", "damping"):
         assert np.array_equal(physics_on.force_terms()[name], physics_off.force_terms()[name])
+
+
+def test_windage_without_the_sail_is_the_same_force():
+    """The kernel evaluates the wind for the sail and the windage points in one call (issue 18):
+    with the sail switched off (topsides and mast only) the windage is the same to the bit, in
+    gusty, wandering wind on a heeled, moving boat."""
+    wind = WindConfig(speed=9.0, direction_from=1.1, seed=4)
+    terms = []
+    for sail in (True, False):
+        physics = BoatPhysics.load("wille_yacht", wind=wind, forces=ForceSwitches(sail=sail))
+        physics.data.qpos[3:7] = [math.cos(0.1), math.sin(0.1), 0.0, 0.0]  # heeled 11.5 deg
+        physics.data.qvel[:6] = [1.5, -0.3, 0.05, 0.1, 0.02, -0.05]
+        physics.data.time = 7.3
+        physics._compute_forces()
+        terms.append(physics.force_terms()["windage"].copy())
+    assert np.any(terms[0] != 0.0)
+    assert np.array_equal(terms[0], terms[1])

@@ -44,7 +44,7 @@ from .foil import (
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .resistance import delft_hull, pack_resistance, residuary_surge_force
-from .wind import wind_velocity_cached
+from .wind import wind_velocities
 from .windage import (
     W_AREA_FRONT,
     W_AREA_SIDE,
@@ -98,7 +98,7 @@ P_SIZE = 165
  D_SAIL_FLOW_X, D_SAIL_FLOW_Y, D_SIZE) = range(17)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
-WORK_SIZE = 64  # scratch floats handed to boat_forces
+WORK_SIZE = 72  # scratch floats handed to boat_forces
 
 
 def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
@@ -270,6 +270,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     chord, normal, force = work[33:36], work[36:39], work[39:42]
     wrench, extra = work[42:48], work[48:51]
     wind_w, wind_b, total = work[51:54], work[54:57], work[57:63]
+    winds = work[63:72]  # the wind at the sail's CE, the topsides and the mast (rows of 3)
     zero3[:] = 0.0
     rotation_from_quat(qpos[3:7], R)
     if R[2, 2] < 0.0:
@@ -310,19 +311,36 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         _accumulate(terms, T_RUDDER, force, point)
         diag[D_ALPHA_RUDDER], diag[D_SPEED_RUDDER] = alpha, speed
 
+    # ---- the wind, at every point that feels it, in one evaluation (forces/wind.py) ----
+    on_sail = P[P_ON_SAIL] > 0.0
+    on_windage = P[P_ON_WINDAGE] > 0.0
+    wb = P_WINDAGE_BLOCK
+    lam = qpos[idx[2]]
+    cl_, sl_ = math.cos(lam), math.sin(lam)
+    arm_x, arm_y = -P[P_CE_AFT] * cl_, P[P_CE_AFT] * sl_  # CE from the mast axis
+    ce_x, ce_y, ce_z = P[P_MAST_X] + arm_x, arm_y, P[P_CE_HEIGHT]
+    z_ce = qpos[2] + R[2, 0] * ce_x + R[2, 1] * ce_y + R[2, 2] * ce_z
+    z_hull = qpos[2] + R[2, 0] * P[wb + W_HULL_X] + R[2, 1] * 0.0 + R[2, 2] * P[wb + W_HULL_Z]
+    z_mast = qpos[2] + R[2, 0] * P[wb + W_MAST_X] + R[2, 1] * 0.0 + R[2, 2] * P[wb + W_MAST_Z]
+    if on_sail and on_windage:
+        wind_velocities(t, z_ce, z_hull, z_mast, 3, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
+                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, winds)
+    elif on_sail:
+        wind_velocities(t, z_ce, z_ce, z_ce, 1, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
+                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, winds)
+    elif on_windage:
+        wind_velocities(t, z_hull, z_mast, z_mast, 2, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
+                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos,
+                        winds[3:9])
+
     # ---- sail: turns by lambda about the mast (-z); flow at its CE (Wille eqs. 25-29) ----
     sail_hinge = 0.0
-    if P[P_ON_SAIL] > 0.0:
-        lam = qpos[idx[2]]
+    if on_sail:
         lam_rate = qvel[idx[3]]
-        cl_, sl_ = math.cos(lam), math.sin(lam)
-        arm_x, arm_y = -P[P_CE_AFT] * cl_, P[P_CE_AFT] * sl_  # CE from the mast axis
-        point[0], point[1], point[2] = P[P_MAST_X] + arm_x, arm_y, P[P_CE_HEIGHT]
+        point[0], point[1], point[2] = ce_x, ce_y, ce_z
         # hinge-rate velocity (-lambda_dot z) x arm = lambda_dot l2 (sin, cos, 0), eq. 26
         extra[0], extra[1], extra[2] = lam_rate * P[P_CE_AFT] * sl_, lam_rate * P[P_CE_AFT] * cl_, 0.0
-        z_ce = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
-        wind_velocity_cached(t, z_ce, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
-                             gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, wind_w)
+        wind_w[0], wind_w[1], wind_w[2] = winds[0], winds[1], winds[2]
         for i in range(3):
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         _point_flow(wind_b, v, w, point, extra, flow)
@@ -341,17 +359,14 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     diag[D_SAIL_HINGE] = sail_hinge
 
     # ---- windage of topsides and mast, each at its centroid in its own wind (forces/windage.py) ----
-    if P[P_ON_WINDAGE] > 0.0:
-        wb = P_WINDAGE_BLOCK
+    if on_windage:
         for element in range(2):
             if element == 0:
                 point[0], point[1], point[2] = P[wb + W_HULL_X], 0.0, P[wb + W_HULL_Z]
             else:
                 point[0], point[1], point[2] = P[wb + W_MAST_X], 0.0, P[wb + W_MAST_Z]
-            z_point = qpos[2] + R[2, 0] * point[0] + R[2, 1] * point[1] + R[2, 2] * point[2]
-            wind_velocity_cached(t, z_point, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
-                                 gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos,
-                                 wind_w)
+            row = 3 + 3 * element
+            wind_w[0], wind_w[1], wind_w[2] = winds[row], winds[row + 1], winds[row + 2]
             for i in range(3):
                 wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
             _point_flow(wind_b, v, w, point, zero3, flow)

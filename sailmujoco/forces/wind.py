@@ -229,23 +229,50 @@ def gust_cosines(t, frequency, phase, cache):
     cache[0] = t
 
 
-@kernel
-def gust_sum(z, cache, amplitude, log_z):
-    """U_g(z, t), eq. 39, from the cosines of :func:`gust_cosines`, amplitudes linear in ln z."""
+@kernel(inline=True)
+def _gust_place(z, log_z):
+    """(j, s): the interval of ``log_z`` holding ln z and the fraction s across it (clamped)."""
     lz = math.log(max(z, 1e-6))
     m = log_z.shape[0]
     if lz <= log_z[0]:
-        j, s = 0, 0.0
-    elif lz >= log_z[m - 1]:
-        j, s = m - 2, 1.0
-    else:
-        j = np.searchsorted(log_z, lz) - 1
-        s = (lz - log_z[j]) / (log_z[j + 1] - log_z[j])
+        return 0, 0.0
+    if lz >= log_z[m - 1]:
+        return m - 2, 1.0
+    j = np.searchsorted(log_z, lz) - 1
+    return j, (lz - log_z[j]) / (log_z[j + 1] - log_z[j])
+
+
+@kernel
+def gust_sum(z, cache, amplitude, log_z):
+    """U_g(z, t), eq. 39, from the cosines of :func:`gust_cosines`, amplitudes linear in ln z."""
+    j, s = _gust_place(z, log_z)
     total = 0.0
     for k in range(amplitude.shape[1]):
         amp = amplitude[j, k] + s * (amplitude[j + 1, k] - amplitude[j, k])
         total += amp * cache[1 + k]
     return total
+
+
+@kernel
+def gust_sums3(z0, z1, z2, cache, amplitude, log_z):
+    """:func:`gust_sum` at three heights in one pass over the components.
+
+    Each height's sum adds the same terms in the same order as :func:`gust_sum`, so each is
+    bit for bit that sum; the three chains of additions run side by side instead of one after
+    the other (the sum is bound by the latency of its additions, issue 18).
+    """
+    j0, s0 = _gust_place(z0, log_z)
+    j1, s1 = _gust_place(z1, log_z)
+    j2, s2 = _gust_place(z2, log_z)
+    t0 = 0.0
+    t1 = 0.0
+    t2 = 0.0
+    for k in range(amplitude.shape[1]):
+        c = cache[1 + k]
+        t0 += (amplitude[j0, k] + s0 * (amplitude[j0 + 1, k] - amplitude[j0, k])) * c
+        t1 += (amplitude[j1, k] + s1 * (amplitude[j1 + 1, k] - amplitude[j1, k])) * c
+        t2 += (amplitude[j2, k] + s2 * (amplitude[j2 + 1, k] - amplitude[j2, k])) * c
+    return t0, t1, t2
 
 
 @kernel
@@ -297,12 +324,44 @@ def wind_velocity(t, z, speed10, direction_from, oscillation, frequency, phase, 
 def wind_velocity_cached(t, z, speed10, direction_from, oscillation, frequency, phase, amplitude,
                          log_z, wander_dt, wander, cache, out):
     """:func:`wind_velocity` with the gust cosines kept in ``cache`` (:func:`gust_cosines`)."""
+    wind_velocities(t, z, z, z, 1, speed10, direction_from, oscillation, frequency, phase,
+                    amplitude, log_z, wander_dt, wander, cache, out)
+
+
+@kernel
+def wind_velocities(t, z0, z1, z2, count, speed10, direction_from, oscillation, frequency, phase,
+                    amplitude, log_z, wander_dt, wander, cache, out):
+    """World wind velocity at time t and ``count`` (1 to 3) heights z0, z1, z2 into
+    ``out[3 i:3 i + 3]``: the boat's sail and windage points in one call.
+
+    What depends on t alone (modulation, direction, the gust cosines) is evaluated once; each
+    height's value is the same expression as for one height alone, so the same bits.
+    """
     s = math.sin(2.0 * math.pi * oscillation[2] * t)
-    u = mean_speed(z, speed10 + oscillation[0] * s)
+    mean10 = speed10 + oscillation[0] * s
+    u0 = mean_speed(z0, mean10)
+    u1 = mean_speed(z1, mean10) if count > 1 else 0.0
+    u2 = mean_speed(z2, mean10) if count > 2 else 0.0
     if speed10 > 0.0:
         gust_cosines(t, frequency, phase, cache)
-        u += gust_sum(z, cache, amplitude, log_z)
+        if count == 1:
+            u0 += gust_sum(z0, cache, amplitude, log_z)
+        else:
+            g0, g1, g2 = gust_sums3(z0, z1, z2, cache, amplitude, log_z)
+            u0 += g0
+            u1 += g1
+            u2 += g2
     bearing = direction_from + wander_angle(t, wander_dt, wander) + oscillation[1] * s
-    out[0] = -u * math.sin(bearing)
-    out[1] = -u * math.cos(bearing)
+    sb = math.sin(bearing)
+    cb = math.cos(bearing)
+    out[0] = -u0 * sb
+    out[1] = -u0 * cb
     out[2] = 0.0
+    if count > 1:
+        out[3] = -u1 * sb
+        out[4] = -u1 * cb
+        out[5] = 0.0
+    if count > 2:
+        out[6] = -u2 * sb
+        out[7] = -u2 * cb
+        out[8] = 0.0
