@@ -147,7 +147,7 @@ class Wille4DOF:
 
     def set_control(self, control) -> None:
         control = np.asarray(control, dtype=float)
-        if control.shape != (2,) or not np.all(np.isfinite(control)):
+        if control.shape != (2,) or not np.isfinite(control).all():
             raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
         self.control = control.copy()
         p = self.params

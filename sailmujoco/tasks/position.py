@@ -136,7 +136,7 @@ class VielPhysics:
 
     def set_control(self, control):
         control = np.asarray(control, dtype=float)
-        if control.shape != (2,) or not np.all(np.isfinite(control)):
+        if control.shape != (2,) or not np.isfinite(control).all():
             raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
         self._control = control.copy()
 
