@@ -322,16 +322,13 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     z_ce = qpos[2] + R[2, 0] * ce_x + R[2, 1] * ce_y + R[2, 2] * ce_z
     z_hull = qpos[2] + R[2, 0] * P[wb + W_HULL_X] + R[2, 1] * 0.0 + R[2, 2] * P[wb + W_HULL_Z]
     z_mast = qpos[2] + R[2, 0] * P[wb + W_MAST_X] + R[2, 1] * 0.0 + R[2, 2] * P[wb + W_MAST_Z]
-    if on_sail and on_windage:
-        wind_velocities(t, z_ce, z_hull, z_mast, 3, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
-                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, winds)
-    elif on_sail:
-        wind_velocities(t, z_ce, z_ce, z_ce, 1, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
-                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, winds)
-    elif on_windage:
-        wind_velocities(t, z_hull, z_mast, z_mast, 2, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation,
-                        gust_f, gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos,
-                        winds[3:9])
+    if on_sail or on_windage:  # sail: row 0; topsides, mast: rows 1 and 2 of ``winds``
+        if on_sail:
+            z0, z1, z2, count, out = z_ce, z_hull, z_mast, (3 if on_windage else 1), winds
+        else:
+            z0, z1, z2, count, out = z_hull, z_mast, z_mast, 2, winds[3:9]
+        wind_velocities(t, z0, z1, z2, count, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
+                        gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, out)
 
     # ---- sail: turns by lambda about the mast (-z); flow at its CE (Wille eqs. 25-29) ----
     sail_hinge = 0.0

@@ -316,16 +316,8 @@ def wind_velocity(t, z, speed10, direction_from, oscillation, frequency, phase, 
     sinusoidal modulation of the mean wind.
     """
     cache = np.full(frequency.shape[0] + 1, np.nan)
-    wind_velocity_cached(t, z, speed10, direction_from, oscillation, frequency, phase, amplitude,
-                         log_z, wander_dt, wander, cache, out)
-
-
-@kernel
-def wind_velocity_cached(t, z, speed10, direction_from, oscillation, frequency, phase, amplitude,
-                         log_z, wander_dt, wander, cache, out):
-    """:func:`wind_velocity` with the gust cosines kept in ``cache`` (:func:`gust_cosines`)."""
-    wind_velocities(t, z, z, z, 1, speed10, direction_from, oscillation, frequency, phase,
-                    amplitude, log_z, wander_dt, wander, cache, out)
+    wind_velocities(t, z, z, z, 1, speed10, direction_from, oscillation, frequency, phase, amplitude,
+                    log_z, wander_dt, wander, cache, out)
 
 
 @kernel
