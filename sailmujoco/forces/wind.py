@@ -242,14 +242,19 @@ def _gust_place(z, log_z):
     return j, (lz - log_z[j]) / (log_z[j + 1] - log_z[j])
 
 
+@kernel(inline=True)
+def _gust_amplitude(amplitude, j, s, k):
+    """Component k's amplitude at the height of (j, s) (:func:`_gust_place`), linear in ln z."""
+    return amplitude[j, k] + s * (amplitude[j + 1, k] - amplitude[j, k])
+
+
 @kernel
 def gust_sum(z, cache, amplitude, log_z):
     """U_g(z, t), eq. 39, from the cosines of :func:`gust_cosines`, amplitudes linear in ln z."""
     j, s = _gust_place(z, log_z)
     total = 0.0
     for k in range(amplitude.shape[1]):
-        amp = amplitude[j, k] + s * (amplitude[j + 1, k] - amplitude[j, k])
-        total += amp * cache[1 + k]
+        total += _gust_amplitude(amplitude, j, s, k) * cache[1 + k]
     return total
 
 
@@ -269,9 +274,9 @@ def gust_sums3(z0, z1, z2, cache, amplitude, log_z):
     t2 = 0.0
     for k in range(amplitude.shape[1]):
         c = cache[1 + k]
-        t0 += (amplitude[j0, k] + s0 * (amplitude[j0 + 1, k] - amplitude[j0, k])) * c
-        t1 += (amplitude[j1, k] + s1 * (amplitude[j1 + 1, k] - amplitude[j1, k])) * c
-        t2 += (amplitude[j2, k] + s2 * (amplitude[j2 + 1, k] - amplitude[j2, k])) * c
+        t0 += _gust_amplitude(amplitude, j0, s0, k) * c
+        t1 += _gust_amplitude(amplitude, j1, s1, k) * c
+        t2 += _gust_amplitude(amplitude, j2, s2, k) * c
     return t0, t1, t2
 
 
