@@ -30,8 +30,8 @@ from sailmujoco.figures import robust_limits
 from sailmujoco.params import get_boat
 from sailmujoco.progress import Progress
 
-from . import verdict
-from .common import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib
+from .kit import verdict
+from .kit import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib
 
 NAME = "assumptions"
 TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
@@ -62,7 +62,7 @@ CONFIGS.update({name: options for name, options, _, _ in BUILT})
 SPEED_HOLDS = 0.05  # an assumption "holds" where it changes the steady speed by less than 5 %
 HEEL_HOLDS_DEG = 1.0  # ... and the steady heel by less than 1 deg
 SPEED_FLOOR = 0.3  # m/s: below it the as-built boat is stalled (in irons, or its heading lost) and
-#                    a speed change is given in m/s, not in % of ~0 (studies.verdict.difference)
+#                    a speed change is given in m/s, not in % of ~0 (studies.kit.verdict.difference)
 FROUDE_WALL = 0.45  # the displacement hull's wave-making wall (Larsson & Eliasson, ch. 5)
 
 
@@ -107,7 +107,7 @@ def _delta(data, boat, config, value):
 
 def speed_effects(data: pd.DataFrame, boat: str, config: str) -> pd.DataFrame:
     """Point by point over the wind plane: steady speed and heel as built and with ``config``;
-    the speed change as :func:`studies.verdict.difference` gives it (relative, or in m/s where the
+    the speed change as :func:`studies.kit.verdict.difference` gives it (relative, or in m/s where the
     boat as built makes less than SPEED_FLOOR). These rows are ``effects.csv``."""
     keys, cols = ["tws", "twa"], ["steady_speed", "steady_heel"]
     sel = data[data["boat"] == boat]
@@ -414,7 +414,7 @@ def run(out, smoke: bool = False, workers=None, progress: bool = True, video: bo
 
     def effect(boat, config) -> list:
         """The speed changes of ``config`` against the boat as built, point by point (the rows
-        of effects.csv), as :class:`studies.verdict.Difference`."""
+        of effects.csv), as :class:`studies.kit.verdict.Difference`."""
         return effects[(boat, config)].attrs["diffs"]
 
     def largest(diffs) -> float:

@@ -21,8 +21,8 @@ from sailmujoco.controllers.saoud import SaoudParams, optimal_sail
 
 from sailmujoco.figures import legend_below
 
-from . import verdict
-from .common import Report, save_figure, setup_matplotlib
+from .kit import verdict
+from .kit import Report, save_figure, setup_matplotlib
 
 NAME = "saoud_fig3_fig4"
 TITLE = "Saoud (2015) Figs. 3-4: optimal sail, roll and attack angles vs apparent wind angle"

@@ -31,8 +31,8 @@ from sailmujoco.forces.wind import log_profile
 from sailmujoco.params import get_boat
 from sailmujoco.tasks.sailing import SpeedTrial
 
-from . import verdict
-from .common import Report, engine_for, run_episode, run_jobs, save_figure, setup_matplotlib, timer
+from .kit import verdict
+from .kit import Report, engine_for, run_episode, run_jobs, save_figure, setup_matplotlib, timer
 
 NAME = "saoud_fig6"
 TITLE = "Saoud (2015) Fig. 6: speed and roll over time, optimal sail S vs Briere's Bm"

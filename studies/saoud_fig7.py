@@ -31,8 +31,8 @@ import pandas as pd
 from sailmujoco import polar
 from sailmujoco.figures import legend_below
 
-from . import verdict
-from .common import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib, timer
+from .kit import verdict
+from .kit import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib, timer
 from .saoud_fig6 import (
     BOAT,
     L_PHI,

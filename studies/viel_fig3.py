@@ -38,8 +38,8 @@ from sailmujoco.tasks.base import SailEnvironment
 from sailmujoco.tasks.position import CASES as WIND_CASES
 from sailmujoco.tasks.position import PositionKeeping, VielPhysics
 
-from . import verdict
-from .common import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib, timer
+from .kit import verdict
+from .kit import Report, engine_for, run_batch, run_episode, save_figure, setup_matplotlib, timer
 
 NAME = "viel_fig3"
 TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, four worlds"

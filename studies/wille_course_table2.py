@@ -31,7 +31,7 @@ from sailmujoco import suite, sweep
 from sailmujoco.figures import legend_below, wind_arrow
 from sailmujoco.params import get_boat
 
-from .common import Report, engine_for, run_jobs, save_figure, setup_matplotlib, timer
+from .kit import Report, engine_for, run_jobs, save_figure, setup_matplotlib, timer
 
 NAME = "wille_course_table2"
 TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"

@@ -48,8 +48,8 @@ from sailmujoco import sweep
 from sailmujoco.figures import legend_below, moment_unit
 from sailmujoco.params import get_boat
 
-from . import verdict
-from .common import Report, engine_for, run_batch, save_figure, setup_matplotlib, timer
+from .kit import verdict
+from .kit import Report, engine_for, run_batch, save_figure, setup_matplotlib, timer
 from .wille_course_table2 import BOAT, make_env
 
 NAME = "wille_roll_table1"

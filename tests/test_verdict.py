@@ -1,12 +1,12 @@
 """The one function set that writes every report's difference, range and verdict
-(studies/verdict.py), on constructed cases whose answer is known by hand."""
+(studies/kit/verdict.py), on constructed cases whose answer is known by hand."""
 
 import math
 
 import numpy as np
 import pytest
-from sailmujoco.studies import verdict
-from sailmujoco.studies.common import Report
+from sailmujoco.studies.kit import verdict
+from sailmujoco.studies.kit import Report
 
 
 def test_relative_difference_is_the_change_in_size_for_same_signed_numbers():

@@ -68,7 +68,7 @@ class Report:
 
     def comparison(self, rows: list[dict]) -> None:
         """Rows of quantity / paper / world / ours / cause, with the difference of
-        :func:`studies.verdict.difference` (a row may give its ``floor`` and ``unit``), flagged ⚠
+        :func:`studies.kit.verdict.difference` (a row may give its ``floor`` and ``unit``), flagged ⚠
         beyond 10 %."""
         table = []
         for row in rows:
