@@ -56,6 +56,13 @@ class Engine:
     or 0: one per core), started on first use and kept until :meth:`close`; ``"serial"``: in
     this process; ``"tcp://host:port"``: an existing Dask scheduler, reached now (within
     ``CONNECT_TIMEOUT_S``, else a one-line :class:`SweepError`). A context manager.
+
+    Parameters
+    ----------
+    scheduler : str, optional
+        None (an embedded cluster), ``"serial"`` or a scheduler's address.
+    workers : int, optional
+        Worker processes of the embedded cluster (None or 0: one per core).
     """
 
     def __init__(self, scheduler: str | None = None, workers: int | None = None):
@@ -67,6 +74,15 @@ class Engine:
 
     @staticmethod
     def check(scheduler, workers) -> None:
+        """Refuse, in one line, a scheduler or a worker count the engine cannot take.
+
+        Parameters
+        ----------
+        scheduler : str or None
+            As :class:`Engine` takes it.
+        workers : int or None
+            As :class:`Engine` takes it.
+        """
         check_count("workers", workers, "(0: all cores)", none_ok=True, high=MAX_LOCAL_WORKERS)
         if scheduler is not None and not isinstance(scheduler, str):
             raise SweepError(f"scheduler must be an address tcp://host:port, 'serial' or None, "
@@ -74,6 +90,7 @@ class Engine:
 
     @property
     def serial(self) -> bool:
+        """Whether runs execute in this process."""
         return self.scheduler == "serial"
 
     @property
@@ -106,6 +123,7 @@ class Engine:
         return self._client
 
     def close(self) -> None:
+        """Close the Dask client and the embedded cluster, if open."""
         if self._client is not None:
             self._client.close()
         if self._cluster is not None:
@@ -121,7 +139,17 @@ class Engine:
     def execute(self, items: list[tuple], bar) -> None:
         """For each ``(task, r, store, retries)`` of ``items``: ``task(r)`` (a record with
         ``status``), retried ``retries`` times while it fails; each final record is written to
-        its ``store`` as it finishes (and counted on ``bar``)."""
+        its ``store`` as it finishes (and counted on ``bar``).
+
+        Parameters
+        ----------
+        items : list of tuple
+            ``(task, r, store, retries)``: a picklable function, its argument (with a
+            ``run_id``), the :class:`~sailmujoco.sweep.store.ResultStore` of its record and
+            the extra attempts it gets.
+        bar : Progress
+            Counts each finished record (``bar.update(status=1)``).
+        """
         if self.serial:
             for task, r, store, retries in items:
                 record = _with_retries(task, r, retries)

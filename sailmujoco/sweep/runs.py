@@ -65,9 +65,18 @@ def run_many(sweeps: list, jobs: list = (), *, scheduler: str | None = None,
     worker waits for one sweep to end before the next starts); returns (the table of each
     sweep, the results of each job list), in the order given.
 
-    ``sweeps``: ``(spec, out)`` pairs, as :func:`run` takes them; ``jobs``: ``(function, jobs,
-    out)`` triples, as :func:`run_jobs` takes them (``job_retries`` its ``retries``). The other
-    arguments are :func:`run`'s; ``label`` names the progress bar.
+    Parameters
+    ----------
+    sweeps : list of tuple
+        ``(spec, out)`` pairs, as :func:`run` takes them.
+    jobs : list of tuple
+        ``(function, jobs, out)`` triples, as :func:`run_jobs` takes them.
+    scheduler, workers, resume, retries, progress, exclusive, engine
+        As :func:`run`.
+    job_retries : int
+        :func:`run_jobs`'s ``retries``, for every job list.
+    label : str, optional
+        Names the progress bar (default: the sweep's name, or "runs").
     """
     check_count("retries", retries, "")
     check_count("job_retries", job_retries, "")
@@ -147,14 +156,26 @@ class _SweepPart:
 
 def lost(record: dict) -> bool:
     """Whether a recorded run failed because the cluster lost it (its worker died, or the task
-    could not be run), not because of its simulation: ``resume`` runs these again."""
+    could not be run), not because of its simulation: ``resume`` runs these again.
+
+    Parameters
+    ----------
+    record : dict
+        A run's stored record.
+    """
     if record.get("status") != "failed":
         return False
     return bool(record.get("lost")) or str(record.get("error") or "").startswith("KilledWorker")
 
 
 def execute(run: dict) -> dict:
-    """Simulate one run (in a worker process); never raises for a simulation failure."""
+    """Simulate one run (in a worker process); its record. Never raises for a simulation failure.
+
+    Parameters
+    ----------
+    run : dict
+        A run as :func:`~sailmujoco.sweep.spec.expand` gives it.
+    """
     from ..suite import load
 
     start = time.perf_counter()
@@ -212,6 +233,25 @@ def run_jobs(function: str, jobs: list[dict], out, *, engine: Engine | None = No
     Results come back in the order of ``jobs``, always as read back from their stored form (a
     resumed job gives what a fresh one gives). A job that raises is retried ``retries`` times,
     then a :class:`SweepError` names it with its error (the jobs that finished stay stored).
+
+    Parameters
+    ----------
+    function : str
+        The job function, ``"package.module:name"``.
+    jobs : list of dict
+        The jobs.
+    out : str or Path
+        The results folder of the job list.
+    engine : Engine, optional
+        Where the jobs run (default: in this process).
+    resume : bool
+        Skip the jobs already stored in ``out``.
+    retries : int
+        Extra attempts of a job that raises.
+    progress : bool
+        Show progress on stderr.
+    label : str
+        Names the progress bar.
     """
     _, results = run_many([], [(function, jobs, out)], engine=engine, resume=resume,
                           job_retries=retries, progress=progress, label=label)
@@ -256,13 +296,27 @@ class _Count:
 
 
 def job_id(function: str, job: dict) -> str:
-    """Stable id of a job of ``function`` (16 hex digits)."""
+    """Stable id of a job of ``function`` (16 hex digits).
+
+    Parameters
+    ----------
+    function : str
+        The job function's name, ``"package.module:name"``.
+    job : dict
+        The job (JSON-able through :func:`~sailmujoco.sweep.store.encode`).
+    """
     text = json.dumps({"function": function, "job": encode(job)}, sort_keys=True)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 def execute_job(task: dict) -> dict:
-    """Run one job (in a worker process); a record with its encoded result, never raises."""
+    """Run one job (in a worker process); a record with its encoded result, never raises.
+
+    Parameters
+    ----------
+    task : dict
+        ``run_id``, ``function`` (``"package.module:name"``) and ``job``.
+    """
     start = time.perf_counter()
     record = {"run_id": task["run_id"], "function": task["function"], "job": encode(task["job"]),
               "status": "ok", "error": None, "version": __version__, "host": os.uname()[1]}
@@ -292,7 +346,15 @@ def _short(job) -> str:
 
 
 def summarise(table, metric: str) -> str:
-    """A one-line summary of a metric over the finished runs (for the CLI)."""
+    """A one-line summary of a metric over the finished runs (for the CLI).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A sweep's table (:func:`run`).
+    metric : str
+        The metric's column.
+    """
     ok = table[table["status"] == "ok"] if "status" in table else table
     if metric not in ok or ok.empty:
         return f"{metric}: no data"

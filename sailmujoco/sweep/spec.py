@@ -237,7 +237,13 @@ def _check_values(spec: dict, runs: list[dict]) -> None:
         except (TypeError, ValueError) as err:
             raise SweepError(f"controller options {r['controller_options']}: {err}") from None
 def expand(spec: dict) -> list[dict]:
-    """Every run of a (validated) sweep: options x grid product x zip x seeds."""
+    """Every run of a (validated) sweep: options x grid product x zip x seeds.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
     grid_keys = list(spec.get("grid", {}))
     grid_values = [spec["grid"][k] for k in grid_keys]
     zip_keys = list(spec.get("zip", {}))
@@ -262,7 +268,13 @@ def expand(spec: dict) -> list[dict]:
 
 
 def run_id(run: dict) -> str:
-    """Stable id of a run's parameters (16 hex digits)."""
+    """Stable id of a run's parameters (16 hex digits).
+
+    Parameters
+    ----------
+    run : dict
+        A run as :func:`expand` gives it.
+    """
     keys = ("boat", "task", "world", "controller", "seed", "duration", "trajectory_rate",  # not session
             "env_options", "task_options", "boat_options", "controller_options")
     text = json.dumps({k: run.get(k) for k in keys}, sort_keys=True, default=float)
@@ -270,20 +282,40 @@ def run_id(run: dict) -> str:
 
 
 def spec_hash(spec: dict) -> str:
-    """Stable hash of a (validated) sweep description (16 hex digits)."""
+    """Stable hash of a (validated) sweep description (16 hex digits).
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
     text = json.dumps(spec, sort_keys=True, default=plain)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
 def sweep_id(spec: dict) -> str:
-    """``<name>-<first 8 hex digits of the spec hash>``: which sweep a folder or row belongs to."""
+    """``<name>-<first 8 hex digits of the spec hash>``: which sweep a folder or row belongs to.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
     return f"{spec.get('name', 'sweep')}-{spec_hash(spec)[:8]}"
 
 
 def check_folder(spec: dict, out) -> None:
     """Refuse ``out`` if it holds a sweep with another description (a file, not a folder, too).
 
-    The same description may be re-run or resumed there."""
+    The same description may be re-run or resumed there.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    out : str or Path
+        The results folder.
+    """
     out = Path(out)
     if out.exists() and not out.is_dir():
         raise SweepError(f"results folder {str(out)!r} is a file, not a folder")

@@ -14,7 +14,15 @@ from .spec import NAMESPACES, plain
 
 
 class ResultStore:
-    """``<out>/runs/<run_id>.json``, written atomically; a consolidated Parquet/CSV table."""
+    """``<out>/runs/<run_id>.json``, written atomically; a consolidated Parquet/CSV table.
+
+    Parameters
+    ----------
+    out : str or Path
+        The results folder (made if missing).
+    indent : int or None
+        JSON indent of the records (None: one line, for a job's long results).
+    """
 
     def __init__(self, out, indent: int | None = 1):
         self.out = Path(out)
@@ -30,14 +38,29 @@ class ResultStore:
                              f"{err.strerror}") from None
 
     def path(self, rid: str) -> Path:
+        """The record file of run ``rid``.
+
+        Parameters
+        ----------
+        rid : str
+            A run id (:func:`~sailmujoco.sweep.spec.run_id`, :func:`~sailmujoco.sweep.runs.job_id`).
+        """
         return self.runs_dir / f"{rid}.json"
 
     def write(self, record: dict) -> None:
+        """Write ``record`` atomically (a temporary file, then renamed over the record's file).
+
+        Parameters
+        ----------
+        record : dict
+            A run's record, with its ``run_id``.
+        """
         tmp = self.runs_dir / f".{record['run_id']}.{os.getpid()}.tmp"
         tmp.write_text(json.dumps(record, default=plain, indent=self.indent))
         os.replace(tmp, self.path(record["run_id"]))
 
     def done(self) -> dict:
+        """``{run_id: record}`` of every record stored."""
         out = {}
         for path in self.runs_dir.glob("*.json"):
             try:
@@ -49,7 +72,15 @@ class ResultStore:
 
     def table(self, metrics: list | None = None, run_ids=None):
         """The consolidated table (pandas DataFrame), one row per run (of ``run_ids`` only, when
-        given: the runs of one sweep)."""
+        given: the runs of one sweep).
+
+        Parameters
+        ----------
+        metrics : list of str, optional
+            The metric columns kept (default: every metric).
+        run_ids : iterable of str, optional
+            The runs kept (default: every run stored).
+        """
         import pandas as pd
 
         rows = []
@@ -72,6 +103,14 @@ class ResultStore:
         return pd.DataFrame(rows)
 
     def consolidate(self, metrics: list | None = None, run_ids=None) -> Path:
+        """Write :meth:`table` to ``results.parquet`` (atomically) and ``results.csv``; return
+        the Parquet file's path.
+
+        Parameters
+        ----------
+        metrics, run_ids
+            As :meth:`table`.
+        """
         frame = self.table(metrics, run_ids)
         path = self.out / "results.parquet"
         tmp = self.out / ".results.parquet.tmp"
@@ -85,7 +124,13 @@ def encode(value):
     """``value`` as plain JSON (dict keys strings, lists, numbers, text, None), losslessly:
     tuples, dicts with other keys, numpy scalars and arrays and pandas DataFrames are tagged
     (``{"__tuple__": [...]}``, ...) so that :func:`decode` gives them back; floats keep every
-    bit (JSON writes the shortest repr, NaN and infinities as Python's json does)."""
+    bit (JSON writes the shortest repr, NaN and infinities as Python's json does).
+
+    Parameters
+    ----------
+    value : object
+        Plain JSON, tuples, dicts, numpy scalars and arrays, pandas DataFrames, nested.
+    """
     if isinstance(value, np.generic):  # before float: np.float64 is one (and divides by 0)
         return {"__scalar__": value.item(), "dtype": value.dtype.str}
     if value is None or isinstance(value, (bool, str, int, float)):
@@ -115,7 +160,13 @@ def encode(value):
 
 
 def decode(value):
-    """The inverse of :func:`encode`."""
+    """The inverse of :func:`encode`.
+
+    Parameters
+    ----------
+    value : object
+        What :func:`encode` gave (after a JSON round trip).
+    """
     if isinstance(value, list):
         return [decode(v) for v in value]
     if not isinstance(value, dict):
