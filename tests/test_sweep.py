@@ -226,7 +226,8 @@ def test_a_sweep_without_world_runs_in_mujoco_and_a_missing_key_lists_the_choice
 
 @pytest.mark.parametrize("name", ["../../etc", "a/b", ".hidden", "", "two words"])
 def test_a_sweep_name_is_a_folder_name_not_a_path(name):
-    """The name becomes results/sweeps/<name>; '../../etc' used to write outside results/."""
+    """The name becomes results/sweeps/<name>: a path such as '../../etc' would write outside
+    results/."""
     spec = {"name": name, "boat": "saoud_robot", "task": "heading_hold", "controller": "pid"}
     with pytest.raises(sweep.SweepError, match=re.escape(f"(a folder name, not a path), got {name!r}")):
         sweep.validate(spec)
