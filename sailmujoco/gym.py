@@ -14,7 +14,9 @@ Ids
     without that import, ``gymnasium.make("sailmujoco.gym:sailmujoco/WilleYacht-HeadingHold-v0")``
     imports it first (Gymnasium 1.x has no plugin entry points). Keyword arguments of
     ``gymnasium.make`` go to :class:`SailGymEnv`, hence to ``suite.load``: ``world="paper"``,
-    ``seed``, ``time_limit``, ``sail_mode``, task options, and ``normalize_action``.
+    ``seed``, ``time_limit``, the physics options (``physics=``, a
+    :class:`sailmujoco.options.PhysicsOptions` or dict, or field by field: ``sail_mode``,
+    ``hydrostatics``, ...), task options, and ``normalize_action``.
     ``SailGymEnv(boat, task, ...)`` builds the same environment without the registry.
 
 Episodes
@@ -48,6 +50,8 @@ Actions
 
 from __future__ import annotations
 
+import dataclasses
+
 import gymnasium
 import numpy as np
 from gymnasium import spaces
@@ -55,6 +59,7 @@ from gymnasium.error import ResetNeeded
 
 from . import suite
 from .forces.wind import MAX_SPEED
+from .options import PHYSICS_FIELDS, PhysicsOptions
 from .physics import BoatPhysics
 
 NAMESPACE = "sailmujoco"
@@ -80,7 +85,15 @@ def _camel(name: str) -> str:
 
 
 def gym_id(boat: str, task: str) -> str:
-    """The registered id of ``suite.load(boat, task)``, e.g. "sailmujoco/WilleYacht-HeadingHold-v0"."""
+    """The registered id of ``suite.load(boat, task)``, e.g. "sailmujoco/WilleYacht-HeadingHold-v0".
+
+    Parameters
+    ----------
+    boat : str
+        A registered boat.
+    task : str
+        A registered task.
+    """
     return f"{NAMESPACE}/{_camel(boat)}-{_camel(task)}-v{VERSION}"
 
 
@@ -113,6 +126,20 @@ def _space(spec, bounds, path=""):
     return spaces.Box(low, high, shape=spec.shape, dtype=np.float64)
 
 
+def _merged(options: dict, update: dict) -> dict:
+    """``options`` updated by ``update``; physics fields in ``update`` replace those of an
+    ``options["physics"]`` (so a reset can change one physics option of an environment built
+    with ``physics=``)."""
+    merged = dict(options, **update)
+    fields = {k: merged.pop(k) for k in update if k in PHYSICS_FIELDS}
+    if fields and "physics" in options and "physics" not in update:
+        physics = PhysicsOptions.from_value(options["physics"], "SailGymEnv.reset")
+        merged["physics"] = dataclasses.replace(physics, **fields)
+    else:
+        merged.update(fields)
+    return merged
+
+
 def _plain(observation):
     if isinstance(observation, dict):
         return {key: _plain(value) for key, value in observation.items()}
@@ -121,7 +148,18 @@ def _plain(observation):
 
 class SailGymEnv(gymnasium.Env):
     """``suite.load(boat, task, world, **options)`` behind the Gymnasium API (see the module
-    docstring for ids, spaces and ``normalize_action``)."""
+    docstring for ids, spaces and ``normalize_action``).
+
+    Parameters
+    ----------
+    boat, task, world : str
+        As :func:`sailmujoco.suite.load`.
+    normalize_action : bool
+        Actions in [-1, 1], mapped onto the actuators' ranges.
+    **options
+        :func:`sailmujoco.suite.load`'s keywords (seed, time_limit, physics options, task
+        options).
+    """
 
     metadata = {"render_modes": []}
 
@@ -146,16 +184,31 @@ class SailGymEnv(gymnasium.Env):
 
     def actuator_command(self, action) -> np.ndarray:
         """The command the actuators get for ``action``: the action itself, or with
-        ``normalize_action`` low + (clip(a, -1, 1) + 1) / 2 (high - low)."""
+        ``normalize_action`` low + (clip(a, -1, 1) + 1) / 2 (high - low).
+
+        Parameters
+        ----------
+        action : array_like
+            An action of :attr:`action_space`.
+        """
         action = np.asarray(action, dtype=np.float64)
         if not self.normalize_action:
             return action
         return self._low + (np.clip(action, -1.0, 1.0) + 1.0) * 0.5 * (self._high - self._low)
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """Start an episode; with ``seed`` or ``options`` the environment is built anew.
+
+        Parameters
+        ----------
+        seed : int, optional
+            The episode's seed (initial state and wind).
+        options : dict, optional
+            :func:`sailmujoco.suite.load` keywords replacing those given at construction.
+        """
         super().reset(seed=seed)
         if seed is not None or options:
-            kwargs = dict(self._options, **(options or {}))
+            kwargs = _merged(self._options, options or {})
             if seed is not None:
                 kwargs["seed"] = seed
             self._env = suite.load(*self._args, **kwargs)
@@ -164,6 +217,13 @@ class SailGymEnv(gymnasium.Env):
         return _plain(timestep.observation), {}
 
     def step(self, action):
+        """One control step: (observation, reward, terminated, truncated, info).
+
+        Parameters
+        ----------
+        action : array_like
+            An action of :attr:`action_space`.
+        """
         if self._needs_reset:
             raise ResetNeeded("step() needs reset() first: before the first episode and after an "
                               "episode ended (terminated or truncated)")
@@ -179,6 +239,7 @@ class SailGymEnv(gymnasium.Env):
 
     @property
     def unwrapped_dm_env(self):
+        """The suite's dm_env environment underneath."""
         return self._env
 
 
@@ -193,6 +254,19 @@ class SailVectorEnv(gymnasium.vector.VectorEnv):
     environment's episode ends resets it and returns its first observation with reward 0 and
     neither flag set. ``infos["metrics"]`` holds the task's metrics of environments whose
     episode ended on this step (None elsewhere).
+
+    Parameters
+    ----------
+    boat, task, world : str
+        As :func:`sailmujoco.suite.load`.
+    num_envs : int
+        The number of environments.
+    seeds : iterable of int, optional
+        One seed per environment (default 0 .. num_envs-1).
+    normalize_action : bool
+        As :class:`SailGymEnv`.
+    **options
+        :func:`sailmujoco.suite.load`'s keywords shared by every environment (not ``seed``).
     """
 
     metadata = {"render_modes": [], "autoreset_mode": gymnasium.vector.AutoresetMode.NEXT_STEP}
@@ -232,6 +306,15 @@ class SailVectorEnv(gymnasium.vector.VectorEnv):
         return concatenate(self.single_observation_space, [_plain(t.observation) for t in timesteps], out)
 
     def reset(self, *, seed: int | None = None, options: dict | None = None):
+        """Reset every environment; with ``seed`` they are rebuilt with seeds seed, seed+1, ...
+
+        Parameters
+        ----------
+        seed : int, optional
+            The first environment's seed.
+        options : dict, optional
+            Refused: build a new vector environment to change options.
+        """
         super().reset(seed=seed)
         if options:
             raise ValueError("SailVectorEnv.reset takes no options; build a new one to change them")
@@ -240,6 +323,13 @@ class SailVectorEnv(gymnasium.vector.VectorEnv):
         return self._observations(self._batch.reset()), {}
 
     def step(self, actions):
+        """One control step of every environment (Gymnasium's vector API).
+
+        Parameters
+        ----------
+        actions : array_like
+            One action per environment, shape ``(num_envs, 2)``.
+        """
         actions = np.asarray(actions, dtype=np.float64)
         if actions.shape != self.action_space.shape:
             raise ValueError(f"actions must have shape {self.action_space.shape}, got {actions.shape}")

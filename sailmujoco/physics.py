@@ -94,47 +94,7 @@ class SimulationStopped(RuntimeError):
         self.time = time
 
 
-@dataclass(frozen=True)
-class ForceSwitches:
-    """Which force models act, and in which form.
-
-    ``hydrostatics``: 'geometric', 'paper' or 'off'. The three forms below are the modelling
-    choices of issue 15; the second value of each keeps the form used up to 0bcfa2b so that its
-    effect can be measured (the force modules' docstrings give the reasons and sources):
-    ``added_mass_coupling`` 'manoeuvring' (no forward-speed added-mass terms in heave and pitch)
-    or 'kirchhoff' (the unbounded-fluid terms); ``vertical_damping`` 'world' (heave and pitch
-    damping on the vertical motion) or 'body' (on body w and q); ``restoring_axes``
-    'horizontal' (paper restoring moments about level axes) or 'body'.
-
-    The boat as built (issue 16): the defaults add what the papers leave out, each with the
-    papers' form as its alternative: ``resistance`` 'dsyhs' (ITTC friction plus the Delft
-    series' residuary resistance, forces/resistance.py) or 'friction' (Wille eq. 15 alone);
-    ``foils`` 'finite' (finite-wing lift slope and 3-D post-stall, forces/foil.py) or 'paper'
-    (Saoud's sail polynomial, Wille eq. 23 on the 2-D table); ``keel_downwash`` True (the
-    keel's downwash at the rudder) or False; ``windage`` True (air drag of topsides and mast,
-    forces/windage.py) or False. The paper worlds (reference/) keep the papers' forms whatever
-    these say.
-    """
-
-    hydrostatics: str = "geometric"
-    sail: bool = True
-    keel: bool = True
-    rudder: bool = True
-    damping: bool = True
-    added_mass: bool = True
-    sail_tangential: bool = True
-    added_mass_coupling: str = "manoeuvring"
-    vertical_damping: str = "world"
-    restoring_axes: str = "horizontal"
-    resistance: str = "dsyhs"
-    foils: str = "finite"
-    keel_downwash: bool = True
-    windage: bool = True
-
-    def __post_init__(self):
-        for name, value in vars(self).items():
-            if isinstance(getattr(type(self), name), bool) and not isinstance(value, bool | np.bool_):
-                raise ValueError(f"{name} must be True or False, got {value!r}")
+from .options import ForceSwitches  # noqa: E402  (re-exported: physics.ForceSwitches)
 
 
 def _entry_point(dispatcher):

@@ -13,68 +13,88 @@ Example::
     from sailmujoco import suite
     env = suite.load("wille_yacht", "heading_hold", world="mujoco", seed=0)
     timestep = env.reset()
+
+Physics options (:class:`sailmujoco.options.PhysicsOptions`) go in ``physics=``, or one by one
+as keywords next to the task's options::
+
+    env = suite.load("saoud_robot", "heading_hold", physics={"hydrostatics": "paper", "dofs": 4})
+    env = suite.load("saoud_robot", "heading_hold", hydrostatics="paper", dofs=4)  # the same
 """
 
 from __future__ import annotations
 
+import inspect
 import math
 
-from .params import BOATS, get_boat
-from .physics import BoatPhysics, ForceSwitches
+from .names import check_known
+from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
+from .params import BOATS, BoatParams, get_boat
+from .physics import BoatPhysics
 from .tasks.base import PaperPhysics, SailEnvironment, check_number
 from .tasks.position import PositionKeeping, VielPhysics
 from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial
 
 TASKS = {cls.name: cls for cls in (HeadingHold, CourseHold, BeamReachRoll, SpeedTrial,
                                    PositionKeeping)}
-WORLDS = ("mujoco", "paper")
+WORLDS = choices(World)
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS)
+# keywords of load that are neither task options nor physics fields
+_FORCES, _PARAMS = "forces", "params"
 
 
-def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None,
-         control_timestep: float = 0.1, time_limit: float | None = None,
-         sail_mode: str = "actuated", hydrostatics: str = "geometric", dofs: int = 6,
-         paper_model: str = "paper", sail_tangential: bool = True,
-         added_mass_coupling: str = "manoeuvring", vertical_damping: str = "world",
-         restoring_axes: str = "horizontal", resistance: str = "dsyhs",
-         foils: str = "finite", keel_downwash: bool = True, windage: bool = True,
-         forces: ForceSwitches | None = None, params=None,
-         boat_options: dict | None = None, **task_options) -> SailEnvironment:
+def task_options(task: str) -> tuple:
+    """The option names the task ``task`` takes (its constructor's and its bases', less seed).
+
+    Parameters
+    ----------
+    task : str
+        A registered task (``TASKS``).
+    """
+    names = []
+    for cls in TASKS[task].__mro__:
+        init = vars(cls).get("__init__")
+        if init is None:
+            continue
+        for name, p in inspect.signature(init).parameters.items():
+            if (p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)
+                    and name not in ("self", "seed") and name not in names):
+                names.append(name)
+    return tuple(names)
+
+
+def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int | None = None,
+         time_limit: float | None = None, control_timestep: float = 0.1,
+         physics: PhysicsOptions | dict | None = None, **options) -> SailEnvironment:
     """Build an environment.
 
     Parameters
     ----------
-    boat, task, world : str
-        A registered boat (``BOATS``), task (``TASKS``) and world (``WORLDS``).
+    boat : str or BoatParams
+        A registered boat (``BOATS``), or a boat's parameters as an object (a changed copy,
+        for a modelling switch; ``boat_options`` must then be empty).
+    task : str
+        A registered task (``TASKS``).
+    world : {"mujoco", "paper"}
+        The 6-DOF MuJoCo boat, or the paper's reduced model (see the module docstring).
     seed : int, optional
         Seeds the initial-state randomisation and the wind.
-    control_timestep : float
-        Seconds per ``env.step``; the physics runs at its own fixed step underneath.
     time_limit : float, optional
         Episode length in seconds (default: the task's, e.g. 200 s for course_hold).
-    sail_mode, hydrostatics, dofs, forces
-        MuJoCo world options (see :class:`sailmujoco.physics.BoatPhysics`). With
-        ``sail_mode="sheeted"`` the action's second command is the sheet length in metres (the
-        boom swings free up to the angle that length allows), not the sail angle in radians.
-    paper_model : {"paper", "rigid"}
-        Wille 4-DOF variant (see :mod:`sailmujoco.reference.wille`).
-    sail_tangential : bool
-        Keep the sail's tangential force C_T (False: Saoud's Assumption 4 made true).
-    added_mass_coupling, vertical_damping, restoring_axes : str
-        Hydrodynamic modelling forms (:class:`sailmujoco.physics.ForceSwitches`); the defaults
-        are the models, the alternatives the forms they replaced, kept to measure the effect.
-    resistance, foils, keel_downwash, windage
-        The boat as built (:class:`sailmujoco.physics.ForceSwitches`), MuJoCo world only:
-        ``resistance`` "dsyhs" (friction plus Delft residuary resistance) or "friction" (Wille
-        eq. 15); ``foils`` "finite" (finite-wing lift slope, 3-D post-stall) or "paper";
-        ``keel_downwash`` and ``windage`` on (default) or off.
-    boat_options : dict, optional
-        Passed to the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
-    params : BoatParams, optional
-        The boat's parameters as an object (a changed copy, for a modelling switch); then
-        ``boat`` only names the run and ``boat_options`` must be empty.
-    task_options
-        Passed to the task (e.g. ``case=3`` for position_keeping).
+    control_timestep : float
+        Seconds per ``env.step``; the physics runs at its own fixed step underneath.
+    physics : PhysicsOptions or dict, optional
+        The physics options (:class:`sailmujoco.options.PhysicsOptions`, whose docstring
+        tables them: force models and their forms, ``sail_mode``, ``dofs``, ``paper_model``,
+        ``boat_options``), as an object or a dict of its fields; default: the boat as built.
+    **options
+        The task's options (e.g. ``case=3`` for position_keeping, ``wind_speed=4.0``;
+        :func:`task_options` lists them), and any physics option given by its field name
+        instead of in ``physics`` (``hydrostatics="paper"``, ``dofs=4``). ``forces=`` (a
+        :class:`sailmujoco.options.ForceSwitches`) gives the force switches at once, and
+        ``params=`` (a BoatParams) the boat's parameters with ``boat`` only naming the run.
+        A name that is neither refuses in one line with the nearest accepted one; so does a
+        physics option given twice (in ``physics`` and as a keyword, or in ``forces`` and
+        by its field name).
     """
     if task not in TASKS:
         raise ValueError(f"unknown task {task!r}; known tasks: {', '.join(TASKS)}")
@@ -85,44 +105,90 @@ def load(boat: str, task: str, world: str = "mujoco", *, seed: int | None = None
         raise ValueError(f"control_timestep must be a positive time in s, got {control_timestep!r}")
     if time_limit is not None:
         time_limit = check_number("time_limit", time_limit, 0.0, low_open=True, unit="s")
-    if params is None:
-        params = get_boat(boat, **(boat_options or {}))
-    elif boat_options:
-        raise ValueError("give either params or boat_options, not both")
+    settings, own_options, params = _split(task, physics, options)
+    params = _boat_params(boat, params, settings.boat_options)
     try:
-        the_task = TASKS[task](seed=seed, **task_options)
+        the_task = TASKS[task](seed=seed, **own_options)
     except TypeError as err:
         raise ValueError(f"bad option for task {task!r}: {err}") from None
     wind = the_task.wind()
-    switches = forces or ForceSwitches(hydrostatics=hydrostatics, sail_tangential=sail_tangential,
-                                       added_mass_coupling=added_mass_coupling,
-                                       vertical_damping=vertical_damping, restoring_axes=restoring_axes,
-                                       resistance=resistance, foils=foils,
-                                       keel_downwash=keel_downwash, windage=windage)
+    switches = settings.forces
     if world == "mujoco":
-        physics = BoatPhysics.load(params=params, sail_mode=sail_mode, wind=wind, forces=switches,
-                                   dofs=dofs)
+        world_physics = BoatPhysics.load(params=params, sail_mode=settings.sail_mode, wind=wind,
+                                         forces=switches, dofs=settings.dofs)
     elif task == "position_keeping":
         from .reference.viel import VielWorld
 
-        physics = VielPhysics.for_control(VielWorld(wind=wind), control_timestep)
+        world_physics = VielPhysics.for_control(VielWorld(wind=wind), control_timestep)
     else:
         from .reference.wille import Wille4DOF
 
-        physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
-                                         model=paper_model))
-    return SailEnvironment(physics, the_task, time_limit=time_limit or the_task.duration,
+        world_physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
+                                               model=settings.paper_model))
+    return SailEnvironment(world_physics, the_task, time_limit=time_limit or the_task.duration,
                            control_timestep=control_timestep, legacy_step=False)
+
+
+def _split(task: str, physics, options: dict) -> tuple[PhysicsOptions, dict, BoatParams | None]:
+    """load's keywords sorted: (the physics options, the task's options, ``params`` or None)."""
+    options = dict(options)
+    forces = options.pop(_FORCES, None)
+    params = options.pop(_PARAMS, None)
+    own = task_options(task)
+    check_known(options, own + PHYSICS_FIELDS + (_FORCES, _PARAMS), "suite.load")
+    flat = {k: v for k, v in options.items() if k in PHYSICS_FIELDS}
+    if forces is not None:
+        if not isinstance(forces, ForceSwitches) or isinstance(forces, PhysicsOptions):
+            raise ValueError(f"forces must be a ForceSwitches (physics options go in physics=), "
+                             f"got {forces!r}")
+        if physics is not None:
+            raise ValueError("suite.load: give forces= or physics=, not both (physics= holds the "
+                             "force switches too)")
+        twice = [k for k in FORCE_FIELDS if k in flat]
+        if twice:
+            raise ValueError(f"suite.load: give the force switches once, in forces= or as "
+                             f"{twice[0]}=, not both")
+        flat.update({k: getattr(forces, k) for k in FORCE_FIELDS})
+    if physics is not None and flat:
+        raise ValueError(f"suite.load: give the physics options once, in physics= or as keywords "
+                         f"({', '.join(flat)}), not both")
+    settings = PhysicsOptions.from_value(physics if physics is not None else flat, "suite.load(physics=...)")
+    return settings, {k: v for k, v in options.items() if k not in PHYSICS_FIELDS}, params
+
+
+def _boat_params(boat, params, boat_options: dict) -> BoatParams:
+    """The boat's parameters: ``boat`` (a name or a BoatParams), or ``params`` naming it."""
+    if isinstance(boat, BoatParams):
+        if params is not None:
+            raise ValueError("give the boat's parameters once, as boat or as params, not both")
+        params = boat
+    if params is None:
+        return get_boat(boat, **boat_options)
+    if boat_options:
+        raise ValueError("give either params or boat_options, not both")
+    return params
 
 
 def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = None,
                seeds=None, options=None, **common):
     """N environments stepped together (:class:`sailmujoco.batch.BatchEnvironment`).
 
-    ``seeds``: one seed per environment (default ``range(n)``); ``options``: one dict of
-    :func:`load` options per environment (e.g. different winds or force switches), merged over
-    ``common``. In the MuJoCo world (6 or 4 DOF) the boats step in one compiled call on all cores;
-    every environment behaves exactly as ``load(boat, task, world, seed=..., **options)``.
+    In the MuJoCo world (6 or 4 DOF) the boats step in one compiled call on all cores; every
+    environment behaves exactly as ``load(boat, task, world, seed=..., **options)``.
+
+    Parameters
+    ----------
+    boat, task, world
+        As :func:`load`.
+    n : int, optional
+        The number of environments (default: one per seed, or one per options dict).
+    seeds : iterable of int, optional
+        One seed per environment (default ``range(n)``).
+    options : list of dict, optional
+        One dict of :func:`load` keywords per environment (e.g. different winds or force
+        switches), merged over ``common``.
+    **common
+        :func:`load` keywords shared by every environment.
     """
     from .batch import BatchEnvironment
 
@@ -142,9 +208,18 @@ def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = N
 
 
 def rollout(env, controller):
-    """Run one episode of ``env`` with ``controller``; returns a pandas DataFrame, one row per
-    control step: t, x, y (m), heading, heel (rad) and heel_deg, roll_rate, yaw_rate (rad/s),
-    u, v, speed (m/s), rudder, sail (rad), awa (rad), aws (m/s)."""
+    """Run one episode of ``env`` with ``controller``; a pandas DataFrame, one row per control
+    step: t, x, y (m), heading, heel (rad) and heel_deg, roll_rate, yaw_rate (rad/s), u, v,
+    speed (m/s), rudder, sail (rad), awa (rad), aws (m/s).
+
+    Parameters
+    ----------
+    env : SailEnvironment
+        An environment from :func:`load`.
+    controller : callable
+        ``controller(timestep) -> action``; its ``reset(seed)``, if it has one, is called with
+        the task's seed first.
+    """
     import math
 
     import numpy as np

@@ -7,7 +7,17 @@ from pathlib import Path
 
 
 def read_toml(path, what: str, error: type[Exception] = ValueError) -> dict:
-    """The parsed TOML at ``path``; a missing or malformed file raises ``error`` naming ``what``."""
+    """The parsed TOML at ``path``; a missing or malformed file raises ``error`` naming ``what``.
+
+    Parameters
+    ----------
+    path : str or Path
+        The file.
+    what : str
+        What the file is, for the message (``"sweep file"``, ``"wind file"``).
+    error : type
+        The exception raised (a ``ValueError`` subclass the caller's users already catch).
+    """
     path = Path(path)
     try:
         return tomllib.loads(path.read_text())

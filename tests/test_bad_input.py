@@ -171,7 +171,7 @@ def test_terminal_observation_after_a_capsize_is_the_state_it_stopped_in():
 @pytest.mark.parametrize("option, value",
                          [("keel_downwash", "no"), ("windage", 1), ("sail_tangential", "off")])
 def test_on_off_force_switches_take_true_or_false_only(option, value):
-    """'no' used to end in numpy's "could not convert string to float: 'no'"."""
+    """'no' is refused in one line naming the option, not handed to numpy as a float."""
     from sailmujoco import suite
 
     with pytest.raises(ValueError) as err:

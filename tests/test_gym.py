@@ -159,3 +159,18 @@ def test_normalize_action_must_be_a_bool():
 def test_gymnasium_checker_passes_with_normalised_actions():
     env = SailGymEnv("wille_yacht", "course_hold", normalize_action=True, time_limit=2.0)
     check_env(env, skip_render_check=True)
+
+
+def test_physics_options_reach_the_environment_and_a_reset_changes_one():
+    """physics= (or a field by name) goes to suite.load; reset(options=...) with one physics
+    field keeps the others given in physics=."""
+    env = SailGymEnv("saoud_robot", "heading_hold", physics={"dofs": 4, "windage": False})
+    physics = env.unwrapped_dm_env.physics
+    assert physics.dofs == 4 and not physics.switches.windage
+    env.reset(seed=1, options={"hydrostatics": "paper"})
+    physics = env.unwrapped_dm_env.physics
+    assert (physics.dofs, physics.switches.windage, physics.switches.hydrostatics) == (4, False, "paper")
+    flat = SailGymEnv("saoud_robot", "heading_hold", dofs=4)
+    flat.reset(options={"hydrostatics": "paper"})
+    assert flat.unwrapped_dm_env.physics.dofs == 4
+    assert flat.unwrapped_dm_env.physics.switches.hydrostatics == "paper"

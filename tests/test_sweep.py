@@ -164,7 +164,7 @@ HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontrolle
 
 @pytest.mark.parametrize("body,message", [
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nspeed = 3\n',
-     "unknown key(s) ['speed']"),
+     "unknown key 'speed' in sweep file "),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
      '[grid]\n"task.wind_speed" = []\n', "must be a non-empty list"),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nseeds = "0"\n',
@@ -188,7 +188,7 @@ HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontrolle
     (HEAD + '[options]\n"env.windage" = "yes"\n', "env.windage = 'yes': must be true or false"),
     # controller options: unknown names list the accepted ones, bad values are named
     (HEAD + '[options]\n"controller.kpp" = 1.0\n',
-     "unknown controller option 'kpp'; allowed: fraction, kd, ki, kp"),
+     "unknown controller option 'kpp' in [options] key 'controller.kpp' of sweep file "),
     (HEAD + '[grid]\n"controller.kp" = [1.0, nan]\n', "controller.kp = nan: must be a finite number"),
     (HEAD + '[grid]\n"controller.kd" = [1.0, "2"]\n', "controller.kd = '2': must be a finite number"),
     (HEAD.replace('"pid"', '"saoud"') + '[grid]\n"controller.wind_source" = ["ce", "gps"]\n',
@@ -226,7 +226,8 @@ def test_a_sweep_without_world_runs_in_mujoco_and_a_missing_key_lists_the_choice
 
 @pytest.mark.parametrize("name", ["../../etc", "a/b", ".hidden", "", "two words"])
 def test_a_sweep_name_is_a_folder_name_not_a_path(name):
-    """The name becomes results/sweeps/<name>; '../../etc' used to write outside results/."""
+    """The name becomes results/sweeps/<name>: a path such as '../../etc' would write outside
+    results/."""
     spec = {"name": name, "boat": "saoud_robot", "task": "heading_hold", "controller": "pid"}
     with pytest.raises(sweep.SweepError, match=re.escape(f"(a folder name, not a path), got {name!r}")):
         sweep.validate(spec)

@@ -20,6 +20,8 @@ import numpy as np
 from .. import hull as hull_geometry
 from .._jit import kernel
 from ..constants import GRAVITY
+from ..options import Hydrostatics
+from ..options import choices as literal_choices
 from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
 from .damping import hull_damping
@@ -63,7 +65,7 @@ from .windage import (
 
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
-HYDROSTATIC_MODES = ("off", "paper", "geometric")
+HYDROSTATIC_MODES = literal_choices(Hydrostatics)  # the index is the kernel's code for the mode
 # Each modelling choice of issue 15 keeps the form it replaced, so its effect can be measured
 # (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
 ADDED_MASS_COUPLINGS = ("manoeuvring", "kirchhoff")  # heave/pitch forward-speed terms out / in

@@ -1,0 +1,348 @@
+"""A sweep's description: reading and checking it, its runs (:func:`expand`) and their ids.
+
+The ``env.`` options and their allowed values come from :mod:`sailmujoco.options` (the fields
+of :class:`~sailmujoco.options.PhysicsOptions`, less ``boat_options``, which is the ``boat.``
+namespace) and ``control_timestep``; the ``task.``, ``boat.`` and ``controller.`` options from
+the signatures of the task, the boat's parameter factory and the controller factory.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import hashlib
+import inspect
+import itertools
+import json
+import math
+import re
+from pathlib import Path
+
+import numpy as np
+
+from ..names import check_known
+from ..options import PhysicsOptions, literal_fields
+from ..tomlfile import read_toml
+from .controllers import controller_factories, controller_factory, factory_options
+from .errors import SweepError
+
+TOP_KEYS = ("name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
+            "options", "grid", "zip", "trajectory_rate")
+NAMESPACES = ("env", "task", "boat", "controller")
+TABLES = ("options", "grid", "zip")
+
+
+def env_options() -> dict:
+    """``{name: default}`` of every ``env.`` option: the physics options (less
+    ``boat_options``, the ``boat.`` namespace) and ``control_timestep``."""
+    from ..suite import load
+
+    defaults = {f.name: f.default for f in dataclasses.fields(PhysicsOptions) if f.name != "boat_options"}
+    defaults["control_timestep"] = inspect.signature(load).parameters["control_timestep"].default
+    return defaults
+
+
+def env_choices() -> dict:
+    """``{name: allowed values}`` of the ``env.`` options that take one of a set of choices."""
+    return literal_fields(PhysicsOptions)
+
+
+def load_spec(path) -> dict:
+    """Read and validate a sweep TOML file.
+
+    Parameters
+    ----------
+    path : str or Path
+        The sweep file.
+    """
+    path = Path(path)
+    spec = read_toml(path, "sweep file", SweepError)
+    spec.setdefault("name", path.stem)
+    return validate(spec, source=f"sweep file {str(path)!r}")
+
+
+def _parameters(fn) -> set:
+    sig = inspect.signature(fn)
+    return {n for n, p in sig.parameters.items()
+            if p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)} - {"self", "seed", "env"}
+
+
+def _allowed_options(spec: dict) -> dict:
+    from ..params import BOATS
+    from ..suite import task_options
+
+    allowed = {"env": set(env_options()), "task": set(task_options(spec["task"])),
+               "boat": _parameters(BOATS[spec["boat"]])}
+    accepted = factory_options(controller_factory(spec["controller"]))
+    allowed["controller"] = set(accepted) if accepted is not None else None
+    return allowed
+
+
+def validate(spec: dict, *, source: str = "the sweep description") -> dict:
+    """Check a sweep description; return it normalised (a new dict).
+
+    Parameters
+    ----------
+    spec : dict
+        The description (the TOML file's tables as a dict).
+    source : str
+        Where it came from, for the messages (e.g. ``"sweep file 'x.toml'"``).
+    """
+    from ..params import BOATS
+    from ..suite import TASKS, WORLDS
+
+    if not isinstance(spec, dict):
+        raise SweepError("a sweep description must be a table (dict)")
+    check_known(spec, TOP_KEYS, source, kind="key", error=SweepError)
+    choices = {"boat": sorted(BOATS), "task": list(TASKS), "world": list(WORLDS),
+               "controller": sorted(controller_factories())}
+    spec = {"world": "mujoco", **spec}  # as suite.load: the MuJoCo world unless said
+    for key in ("boat", "task", "world", "controller"):
+        if key not in spec:
+            raise SweepError(f"missing key {key!r} (one of: {', '.join(choices[key])})")
+        if not isinstance(spec[key], str):
+            raise SweepError(f"{key} must be a string, got {spec[key]!r}")
+    for key, allowed in choices.items():
+        if spec[key] not in allowed:
+            raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}")
+    out = dict(spec)
+    _check_scalars(out)
+    _check_tables(out, source)
+    runs = expand(out)
+    if not runs:
+        raise SweepError("the sweep has no runs (empty grid)")
+    _check_values(out, runs)
+    return out
+
+
+def _check_scalars(out: dict) -> None:
+    """name, seeds, duration, trajectory_rate and metrics (defaults filled in ``out``)."""
+    out.setdefault("name", "sweep")
+    # the name is a folder under results/sweeps/: one plain name, never a path out of it
+    if not isinstance(out["name"], str) or not re.fullmatch(r"[A-Za-z0-9_][A-Za-z0-9_.+-]*", out["name"]):
+        raise SweepError(f"name must be letters, digits and _ . + - (a folder name, not a path), "
+                         f"got {out['name']!r}")
+    seeds = out.setdefault("seeds", [0])
+    if not isinstance(seeds, list) or not seeds or not all(isinstance(s, int) and not isinstance(s, bool)
+                                                           for s in seeds):
+        raise SweepError(f"seeds must be a non-empty list of integers, got {seeds!r}")
+    if "duration" in out:
+        d = out["duration"]
+        if isinstance(d, bool) or not isinstance(d, (int, float)) or not (0 < d < 1e6):
+            raise SweepError(f"duration must be a positive number of seconds, got {d!r}")
+    if "trajectory_rate" in out:
+        r = out["trajectory_rate"]
+        if isinstance(r, bool) or not isinstance(r, (int, float)) or r <= 0:
+            raise SweepError(f"trajectory_rate must be a positive rate in Hz, got {r!r}")
+    if "metrics" in out and (not isinstance(out["metrics"], list)
+                             or not all(isinstance(m, str) for m in out["metrics"])):
+        raise SweepError(f"metrics must be a list of metric names, got {out['metrics']!r}")
+
+
+def _check_tables(out: dict, source: str) -> None:
+    """The keys of [options], [grid] and [zip]: known names, lists where a table sweeps them."""
+    allowed = _allowed_options(out)
+    for table in TABLES:
+        values = out.setdefault(table, {})
+        if not isinstance(values, dict):
+            raise SweepError(f"[{table}] must be a table of 'namespace.name' keys")
+        for key, value in values.items():
+            namespace, _, name = key.partition(".")
+            where = f"[{table}] key {key!r} of {source}"
+            if not name:
+                raise SweepError(f"[{table}] key {key!r}: expected '<namespace>.<name>' with "
+                                 f"namespace one of {NAMESPACES}")
+            check_known([namespace], NAMESPACES, where, kind="namespace", error=SweepError)
+            if allowed[namespace] is not None:
+                check_known([name], allowed[namespace], where, kind=f"{namespace} option",
+                            error=SweepError)
+            if table != "options" and (not isinstance(value, list) or not value):
+                raise SweepError(f"[{table}] {key} must be a non-empty list of values, got {value!r}")
+    lengths = {len(v) for v in out["zip"].values()}
+    if len(lengths) > 1:
+        raise SweepError(f"[zip] axes must have equal lengths, got {sorted(lengths)}")
+
+
+def _distinct(runs: list[dict], key: str) -> list[dict]:
+    """The first run of each distinct value of ``run[key]`` (an options dict)."""
+    seen = {}
+    for r in runs:
+        seen.setdefault(json.dumps(r[key], sort_keys=True, default=repr), r)
+    return list(seen.values())
+
+
+def _signature_defaults(fn) -> dict:
+    """``{name: (default, None allowed)}`` of ``fn``'s parameters that have a default."""
+    return {name: (p.default, p.default is None or "None" in str(p.annotation))
+            for name, p in inspect.signature(fn).parameters.items() if p.default is not p.empty}
+
+
+def _check_kinds(namespace: str, options: dict, defaults: dict) -> None:
+    """Each option of the kind its default (``defaults``: name -> (default, None allowed)) has:
+    true/false for a flag, a finite number for a number, text for text."""
+    for name, value in options.items():
+        if name not in defaults:
+            continue
+        default, none_ok = defaults[name]
+        if value is None and none_ok:
+            continue
+        if isinstance(default, bool):
+            ok, kind = isinstance(value, bool), "true or false"
+        elif isinstance(default, (int, float)):
+            ok = (isinstance(value, (int, float)) and not isinstance(value, bool)
+                  and math.isfinite(value))
+            kind = "a finite number"
+        elif isinstance(default, str):
+            ok, kind = isinstance(value, str), "a string"
+        else:
+            continue
+        if not ok:
+            raise SweepError(f"{namespace}.{name} = {value!r}: must be {kind}")
+
+
+def _check_values(spec: dict, runs: list[dict]) -> None:
+    """Check every run's option values before any run starts: each distinct boat, task and
+    controller option set is built once, and the environment once per distinct ``env.`` set
+    (a MuJoCo model build, about 0.05 s)."""
+    from ..params import get_boat
+    from ..suite import TASKS, load
+
+    for r in _distinct(runs, "boat_options"):
+        try:
+            get_boat(r["boat"], **r["boat_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"boat options {r['boat_options']}: {err}") from None
+    for r in _distinct(runs, "task_options"):
+        try:
+            TASKS[r["task"]](seed=0, **r["task_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"task options {r['task_options']}: {err}") from None
+    env_defaults = {name: (default, False) for name, default in env_options().items()}
+    env = None
+    for r in _distinct(runs, "env_options"):
+        _check_kinds("env", r["env_options"], env_defaults)
+        for key, allowed in env_choices().items():  # also where the paper worlds ignore them
+            if key in r["env_options"] and r["env_options"][key] not in allowed:
+                raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}")
+        try:
+            built = load(r["boat"], r["task"], r["world"], seed=r["seed"], time_limit=r.get("duration"),
+                         boat_options=r["boat_options"], **r["env_options"], **r["task_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"env options {r['env_options']}: {err}") from None
+        env = env or built
+    factory = controller_factory(spec["controller"])
+    for r in _distinct(runs, "controller_options"):
+        _check_kinds("controller", r["controller_options"], _signature_defaults(factory))
+        try:
+            factory(env, **r["controller_options"])
+        except (TypeError, ValueError) as err:
+            raise SweepError(f"controller options {r['controller_options']}: {err}") from None
+def expand(spec: dict) -> list[dict]:
+    """Every run of a (validated) sweep: options x grid product x zip x seeds.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
+    grid_keys = list(spec.get("grid", {}))
+    grid_values = [spec["grid"][k] for k in grid_keys]
+    zip_keys = list(spec.get("zip", {}))
+    zip_rows = list(zip(*[spec["zip"][k] for k in zip_keys], strict=True)) if zip_keys else [()]
+    runs = []
+    for combo in itertools.product(*grid_values) if grid_keys else [()]:
+        for row in zip_rows:
+            for seed in spec.get("seeds", [0]):
+                values = dict(spec.get("options", {}))
+                values.update(zip(grid_keys, combo, strict=True))
+                values.update(zip(zip_keys, row, strict=True))
+                run = {"boat": spec["boat"], "task": spec["task"], "world": spec["world"],
+                       "controller": spec["controller"], "seed": int(seed),
+                       "duration": spec.get("duration"),
+                       "trajectory_rate": spec.get("trajectory_rate")}
+                for ns in NAMESPACES:
+                    run[f"{ns}_options"] = {k.split(".", 1)[1]: v for k, v in sorted(values.items())
+                                            if k.startswith(ns + ".")}
+                run["run_id"] = run_id(run)
+                runs.append(run)
+    return runs
+
+
+def run_id(run: dict) -> str:
+    """Stable id of a run's parameters (16 hex digits).
+
+    Parameters
+    ----------
+    run : dict
+        A run as :func:`expand` gives it.
+    """
+    keys = ("boat", "task", "world", "controller", "seed", "duration", "trajectory_rate",  # not session
+            "env_options", "task_options", "boat_options", "controller_options")
+    text = json.dumps({k: run.get(k) for k in keys}, sort_keys=True, default=float)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def spec_hash(spec: dict) -> str:
+    """Stable hash of a (validated) sweep description (16 hex digits).
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
+    text = json.dumps(spec, sort_keys=True, default=plain)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def sweep_id(spec: dict) -> str:
+    """``<name>-<first 8 hex digits of the spec hash>``: which sweep a folder or row belongs to.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    """
+    return f"{spec.get('name', 'sweep')}-{spec_hash(spec)[:8]}"
+
+
+def check_folder(spec: dict, out) -> None:
+    """Refuse ``out`` if it holds a sweep with another description (a file, not a folder, too).
+
+    The same description may be re-run or resumed there.
+
+    Parameters
+    ----------
+    spec : dict
+        A description as :func:`validate` returns it.
+    out : str or Path
+        The results folder.
+    """
+    out = Path(out)
+    if out.exists() and not out.is_dir():
+        raise SweepError(f"results folder {str(out)!r} is a file, not a folder")
+    path = out / "sweep.json"
+    if not path.is_file():
+        return
+    try:
+        held = json.loads(path.read_text())
+    except (OSError, json.JSONDecodeError):
+        raise SweepError(f"{str(out)!r} holds an unreadable sweep.json; use --out elsewhere "
+                         "or delete it") from None
+    if not isinstance(held, dict) or spec_hash(held) != spec_hash(spec):
+        held_id = sweep_id(held) if isinstance(held, dict) else "?"
+        raise SweepError(f"{str(out)!r} holds sweep {held_id} with a different spec (this one is "
+                         f"{sweep_id(spec)}); use --out elsewhere or delete it")
+
+
+def plain(value):
+    """``value`` as a plain Python number where it is a numpy one (for ``json.dumps``'s default).
+
+    Parameters
+    ----------
+    value : object
+        A value of a description or record.
+    """
+    if isinstance(value, (np.floating, float)):
+        return float(value)
+    if isinstance(value, (np.integer, int)) and not isinstance(value, bool):
+        return int(value)
+    return value
