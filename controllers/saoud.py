@@ -76,6 +76,20 @@ def observed_apparent_wind(observation: dict, source: str = "saoud_v") -> tuple[
     cos AWA, fy = AWS sin AWA, the inverse of :func:`sailmujoco.frames.apparent_wind_angle`); the
     masthead sees a faster wind than the CE (wind gradient) and the roll rate's motion. The two
     measured readings are un-heeled by :func:`saoud_apparent_wind` with the observed ``heel``.
+
+    Parameters
+    ----------
+    observation : dict
+        The observation (:mod:`controllers.base`).
+    source : {"saoud_v", "ce", "masthead"}
+        Where the apparent wind comes from (above).
+
+    Returns
+    -------
+    theta_v : float
+        Theta_V [rad].
+    speed : float
+        |V| [m/s].
     """
     if source == "saoud_v":
         state = observation["true_state"]
@@ -139,7 +153,13 @@ class SaoudSail:
         self.reset()
 
     def reset(self, seed: int | None = None) -> None:
-        """Forget the last command (the law is otherwise memoryless; ``seed`` is unused)."""
+        """Forget the last command (the law is otherwise memoryless; ``seed`` is unused).
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.last_sail_angle = 0.0
         self.last_optimum: SailOptimum | None = None
 

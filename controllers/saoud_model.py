@@ -130,6 +130,13 @@ class SaoudParams:
         """beta = m g l_phi / (lambda_s h_s |V|^2) [-] (§V, below eq. 5).
 
         The ratio of the largest righting moment to the sail's heeling moment scale.
+
+        Parameters
+        ----------
+        l_phi : float
+            Metacentric height [m].
+        apparent_speed : float
+            |V| [m/s].
         """
         return self.mass * self.gravity * l_phi / (self.lambda_s * self.h_s * apparent_speed**2)
 
@@ -172,6 +179,11 @@ def fold_sail_angle(delta: float) -> float:
     """delta_s folded into [-pi/2, pi/2] by Lemma 1 (delta_s and delta_s +- pi: one sail line).
 
     Angles already in [-pi/2, pi/2] come back unchanged (the ends included).
+
+    Parameters
+    ----------
+    delta : float
+        Saoud's sail angle delta_s [rad].
     """
     folded = float(wrap_angle(delta))
     if folded > 0.5 * math.pi:
@@ -188,13 +200,24 @@ def sail_angle_from_saoud(delta: float) -> float:
     turns the chord i_s counter-clockwise, so the boom (aft of the mast, along -i_s) swings to
     starboard, whereas our lambda > 0 swings it to port. delta_s is first folded into
     [-pi/2, pi/2] (Lemma 1) so that the boom is aft of the mast.
+
+    Parameters
+    ----------
+    delta : float
+        Saoud's sail angle delta_s [rad].
     """
     return -fold_sail_angle(delta)
 
 
 def saoud_from_sail_angle(sail_angle: float) -> float:
     """Saoud's delta_s [rad] from our sail angle lambda [rad] in [-pi/2, pi/2]; inverse of
-    :func:`sail_angle_from_saoud`."""
+    :func:`sail_angle_from_saoud`.
+
+    Parameters
+    ----------
+    sail_angle : float
+        Our sail angle lambda [rad].
+    """
     return -fold_sail_angle(sail_angle)
 
 

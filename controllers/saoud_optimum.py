@@ -52,6 +52,20 @@ def candidates_from_root(x: float, v1: float, v2: float, beta: float) -> list[Sa
     1 / sqrt(1 + gb^2)); cos delta_s from eq. 8b; sin delta_s = +-sqrt(1 - cos^2 delta_s), the
     sign being the one that satisfies eq. 8a (eq. 13 squared it away; eq. 12 divides by V1,
     which fails at Theta_V = +-pi/2). Both signs are kept when both satisfy 8a (V1 ~ 0).
+
+    Parameters
+    ----------
+    x : float
+        A root of eq. 13, signed: sin(alpha_s) [-].
+    v1, v2 : float
+        V_bar_1 = cos(Theta_V), V_bar_2 = sin(Theta_V) [-] (§V).
+    beta : float
+        beta of :meth:`SaoudParams.beta` [-].
+
+    Returns
+    -------
+    list of SailOptimum
+        None, one or two candidates.
     """
     point = branch_point(x, v1, v2, beta)
     if point is None:
@@ -126,6 +140,13 @@ def eq13_roots(v1: float, v2: float, beta: float) -> list[float]:
     roots are sought as |x|. Normally the two runs give the two roots (one per sign of
     sin(delta_s), see :func:`thrust_branch_residual`), but near beam reach both can converge
     to the same one: :func:`optimal_sail` then falls back on :func:`thrust_branch_roots`.
+
+    Parameters
+    ----------
+    v1, v2 : float
+        V_bar_1 = cos(Theta_V), V_bar_2 = sin(Theta_V) [-] (§V).
+    beta : float
+        beta of :meth:`SaoudParams.beta` [-].
     """
     roots: list[float] = []
     for x0, x1 in ((1e-3, 2e-2), (1.0 - 1e-3, 1.0 - 2e-2)):
@@ -143,6 +164,15 @@ def thrust_branch_residual(r: float, v1: float, v2: float, beta: float) -> float
     eq. 8a: the square of  V1 sigma sqrt(1 - cos^2 delta_s) - V2 cos phi cos delta_s - x = 0,
     sigma = sign(sin delta_s). A negative cost J = f(x) sin(delta_s) needs sigma = -sign(x) =
     sign(V2); this is that factor, with cos delta_s clipped to [-1, 1].
+
+    Parameters
+    ----------
+    r : float
+        |x| = |sin(alpha_s)| [-].
+    v1, v2 : float
+        V_bar_1 = cos(Theta_V), V_bar_2 = sin(Theta_V) [-] (§V).
+    beta : float
+        beta of :meth:`SaoudParams.beta` [-].
     """
     side = math.copysign(1.0, v2)
     x = -side * r
@@ -159,6 +189,13 @@ def thrust_branch_roots(v1: float, v2: float, beta: float) -> list[float]:
 
     Unlike eq. 13 itself, whose two roots merge into a double root at beam reach (V1 = 0), this
     factor has simple roots there, so bracketing finds them.
+
+    Parameters
+    ----------
+    v1, v2 : float
+        V_bar_1 = cos(Theta_V), V_bar_2 = sin(Theta_V) [-] (§V).
+    beta : float
+        beta of :meth:`SaoudParams.beta` [-].
     """
     grid = np.concatenate((np.geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
     grid = grid.tolist()
@@ -275,7 +312,23 @@ def _equilibrium_roots(deltas: np.ndarray, v1: float, v2: float, beta: float, ph
 def equilibrium_heels(delta: float, theta_v: float, apparent_speed: float, l_phi: float,
                       params: SaoudParams = TABLE_I, phi_step: float = math.radians(2.0)) -> np.ndarray:
     """Every steady heel phi in [-pi/2, pi/2] [rad] of the roll equilibrium (eq. 4) at sail angle
-    ``delta`` [rad] (Saoud's frames), e.g. to score another sail law on the reduced model."""
+    ``delta`` [rad] (Saoud's frames), e.g. to score another sail law on the reduced model.
+
+    Parameters
+    ----------
+    delta : float
+        Saoud's sail angle delta_s [rad].
+    theta_v : float
+        Theta_V [rad] (§IV).
+    apparent_speed : float
+        |V| [m/s].
+    l_phi : float
+        Metacentric height [m].
+    params : SaoudParams
+        Mass, sail area, g, rho_air, h_s.
+    phi_step : float
+        Spacing of the heel grid that brackets the equilibria [rad].
+    """
     beta = params.beta(l_phi, apparent_speed)
     _, phis = _equilibrium_roots(np.array([float(delta)]), math.cos(theta_v), math.sin(theta_v), beta,
                                  phi_step)
@@ -283,7 +336,17 @@ def equilibrium_heels(delta: float, theta_v: float, apparent_speed: float, l_phi
 
 
 def sail_cost(delta: float, phi: float, theta_v: float) -> float:
-    """J = f(sin alpha_s) sin delta_s [-] (eq. 5) with sin alpha_s from eq. 8a; all angles [rad]."""
+    """J = f(sin alpha_s) sin delta_s [-] (eq. 5) with sin alpha_s from eq. 8a; all angles [rad].
+
+    Parameters
+    ----------
+    delta : float
+        Saoud's sail angle delta_s [rad].
+    phi : float
+        Heel [rad].
+    theta_v : float
+        Theta_V [rad] (§IV).
+    """
     return sail_candidate(delta, phi, math.cos(theta_v), math.sin(theta_v)).cost
 
 

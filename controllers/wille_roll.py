@@ -205,7 +205,13 @@ class WilleRollSail:
 
     # ---------------------------------------------------------------- state
     def reset(self, seed: int | None = None) -> None:
-        """Roll control off, integral zero (deterministic: ``seed`` is unused)."""
+        """Roll control off, integral zero (deterministic: ``seed`` is unused).
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.side = 0
         self.integral = 0.0  # rad s, int (phi - phi_d) dt
         self._time = None
@@ -218,7 +224,13 @@ class WilleRollSail:
 
     # ---------------------------------------------------------------- wind
     def wind_estimate(self, observation: dict) -> np.ndarray:
-        """Apparent wind at the sail CE, body FLU x-y (2,) [m/s] (air velocity relative to it)."""
+        """Apparent wind at the sail CE, body FLU x-y (2,) [m/s] (air velocity relative to it).
+
+        Parameters
+        ----------
+        observation : dict
+            The observation (:mod:`controllers.base`).
+        """
         state = observation["true_state"]
         if self.wind == "perfect":
             return np.asarray(state["apparent_wind_ce"], dtype=float).reshape(-1)[:2].copy()

@@ -59,7 +59,13 @@ class RollLQR:
     phi_w: float
 
     def c1(self, phi_w: float | None = None) -> float:
-        """C_1 = rho_w g V GM_t cos(phi_w) sin(phi_w) [N m], eq. 67 (odd in phi_w)."""
+        """C_1 = rho_w g V GM_t cos(phi_w) sin(phi_w) [N m], eq. 67 (odd in phi_w).
+
+        Parameters
+        ----------
+        phi_w : float, optional
+            Linearisation heel [rad]; default :attr:`phi_w`.
+        """
         phi = self.phi_w if phi_w is None else phi_w
         return self.stiffness * math.cos(phi) * math.sin(phi)  # Wille (2016b) eq. 67
 

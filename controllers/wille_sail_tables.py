@@ -84,7 +84,15 @@ def beta_ws_from_flow(flow_body) -> float:
 
 
 def flow_from_beta_ws(beta_ws: float, speed: float = 1.0) -> np.ndarray:
-    """Body-FLU air velocity (3,) [m/s] of an apparent wind of ``speed`` at angle ``beta_ws``."""
+    """Body-FLU air velocity (3,) [m/s] of an apparent wind of ``speed`` at angle ``beta_ws``.
+
+    Parameters
+    ----------
+    beta_ws : float
+        Apparent-wind angle at the CE [rad] (eq. 27).
+    speed : float
+        Apparent wind speed [m/s].
+    """
     return np.array([speed * math.cos(beta_ws), -speed * math.sin(beta_ws), 0.0])
 
 
@@ -151,7 +159,19 @@ def relative_sail_force(beta_ws: float, sail_angle, params: BoatParams | None = 
 
 def relative_surge_and_moment(beta_ws: float, sail_angle, params: BoatParams | None = None, *,
                               tangential: bool = True) -> tuple[np.ndarray, np.ndarray]:
-    """(S_x'r, S_phi_r) of eqs. 60 and 63 [kg/m, kg] for sail angle(s) ``sail_angle`` [rad]."""
+    """(S_x'r, S_phi_r) of eqs. 60 and 63 [kg/m, kg] for sail angle(s) ``sail_angle`` [rad].
+
+    Parameters
+    ----------
+    beta_ws : float
+        Apparent-wind angle at the CE [rad] (eq. 27).
+    sail_angle : float or array_like
+        lambda [rad].
+    params : BoatParams, optional
+        Boat (default the Wille yacht).
+    tangential : bool
+        Keep C_T in the sail force.
+    """
     p = wille_yacht() if params is None else params
     force = relative_sail_force(beta_ws, sail_angle, p, tangential=tangential)
     # Wille (2016a) eq. 29 rows 1 and 3: S_x', S_phi = h1 S_y'(FRD) = -h1 F_y(FLU)
@@ -190,6 +210,13 @@ class SailTable:
         Rows i and i+1 around ``beta_ws`` are blended linearly when no lambda differs by more
         than ``max_jump`` [rad] between them ("only a small difference"); otherwise the
         nearest row is used. Returns (sail_angle (4,), surge (4,), moment (4,)).
+
+        Parameters
+        ----------
+        beta_ws : float
+            Apparent-wind angle at the CE [rad] (eq. 27).
+        max_jump : float
+            Largest lambda change between rows still blended [rad].
         """
         row = self._solution_row(beta_ws, max_jump)
         return row[0:4].copy(), row[4:8].copy(), row[8:12].copy()
@@ -249,17 +276,41 @@ class WilleSailTables:
     max_jump: float = MAX_JUMP
 
     def table(self, beta_ws: float, side: int | None = None) -> SailTable:
-        """The half for ``beta_ws`` [rad]: port for beta_ws > 0 (and 0 unless ``side`` = -1)."""
+        """The half for ``beta_ws`` [rad]: port for beta_ws > 0 (and 0 unless ``side`` = -1).
+
+        Parameters
+        ----------
+        beta_ws : float
+            Apparent-wind angle at the CE [rad] (eq. 27).
+        side : {+1, -1}, optional
+            +1 port, -1 starboard; default sign(beta_ws), port at 0.
+        """
         if side is None:
             side = 1 if beta_ws >= 0.0 else -1
         return self.port if side > 0 else self.starboard
 
     def solutions(self, beta_ws: float, side: int | None = None):
-        """(sail_angle (4,), surge (4,), moment (4,)) of lambda_100, _67, _33, _0 at beta_ws."""
+        """(sail_angle (4,), surge (4,), moment (4,)) of lambda_100, _67, _33, _0 at beta_ws.
+
+        Parameters
+        ----------
+        beta_ws : float
+            Apparent-wind angle at the CE [rad] (eq. 27).
+        side : {+1, -1}, optional
+            Wind side; needed only at beta_ws = 0 (see :meth:`table`).
+        """
         return self.table(beta_ws, side).solutions(beta_ws, self.max_jump)
 
     def optimal_sail_angle(self, beta_ws: float, side: int | None = None) -> float:
-        """lambda_100 [rad]: the sail angle of maximum surge force (§2.1)."""
+        """lambda_100 [rad]: the sail angle of maximum surge force (§2.1).
+
+        Parameters
+        ----------
+        beta_ws : float
+            Apparent-wind angle at the CE [rad] (eq. 27).
+        side : {+1, -1}, optional
+            Wind side; needed only at beta_ws = 0 (see :meth:`table`).
+        """
         return float(self.table(beta_ws, side)._solution_row(beta_ws, self.max_jump)[0])
 
     def sail_command(self, beta_ws: float, relative_moment: float,
@@ -305,6 +356,20 @@ def pick_solutions(lam: np.ndarray, surge: np.ndarray, heeling: np.ndarray) -> n
 
     ``heeling`` is the moment in the heeling direction of the wind side. Ties in surge go to
     the smaller moment, which keeps the four moments ordered.
+
+    Parameters
+    ----------
+    lam : np.ndarray
+        Sail angles of the traversal [rad], (m,).
+    surge : np.ndarray
+        S_x'r at those angles [kg/m], (m,).
+    heeling : np.ndarray
+        S_phi_r in the heeling direction of the wind side [kg], (m,).
+
+    Returns
+    -------
+    np.ndarray
+        (4,) indices into ``lam``.
     """
 
     def best(mask):
