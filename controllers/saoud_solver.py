@@ -224,7 +224,7 @@ def _brentq(which, xa, xb, v1, v2, beta, sin_phi, cos_phi):
 
 @kernel
 def _add_candidate(out, n, delta, phi, v1, v2, roll_limited):
-    """Append the reference's _candidate(delta, phi, v1, v2, roll_limited) to ``out``: row
+    """Append the reference's sail_candidate(delta, phi, v1, v2, roll_limited) to ``out``: row
     (delta, phi, alpha, cost, roll_limited). Returns the new count."""
     x = v1 * math.sin(delta) - v2 * math.cos(phi) * math.cos(delta)  # Saoud (2015) eq. 8a
     cost = saoud_normal_coefficient(x) * math.sin(delta)  # Saoud (2015) eq. 5
@@ -237,7 +237,7 @@ def _add_candidate(out, n, delta, phi, v1, v2, roll_limited):
 
 @kernel
 def _from_root(out, n, x, v1, v2, beta):
-    """The reference's _from_root: up to two candidates appended to ``out``."""
+    """The reference's candidates_from_root: up to two candidates appended to ``out``."""
     ok, phi, cos_delta = _branch_point(x, v2, beta)
     if not ok:
         return n
