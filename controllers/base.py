@@ -47,13 +47,35 @@ import numpy as np
 
 
 class Controller(Protocol):
-    def reset(self, seed: int | None = None) -> None: ...
+    """What a controller is: ``reset(seed)`` and ``controller(timestep) -> action``."""
+
+    def reset(self, seed: int | None = None) -> None:
+        """Clear the internal state (integrators, filters).
+
+        Parameters
+        ----------
+        seed : int, optional
+            Seed of any randomness the controller has.
+        """
 
     def __call__(self, timestep) -> np.ndarray: ...
 
 
 def scalar(observation: dict, key: str) -> float:
-    """A scalar observation as a Python float."""
+    """A scalar observation as a Python float.
+
+    Parameters
+    ----------
+    observation : dict
+        The observation (or its ``true_state``).
+    key : str
+        The entry to read; it must hold one number.
+
+    Returns
+    -------
+    float
+        The value.
+    """
     value = observation[key]
     if type(value) is np.ndarray and value.ndim == 0:
         return float(value)  # the observation's own form, without a reshape
@@ -63,8 +85,13 @@ def scalar(observation: dict, key: str) -> float:
 class Composite:
     """A rudder law and a sail law combined into one controller.
 
-    ``rudder(observation) -> float`` and ``sail(observation) -> float``, each optionally with
-    ``reset(seed)``.
+    Parameters
+    ----------
+    rudder : callable
+        ``rudder(observation) -> float``, the rudder angle [rad]; optionally with ``reset(seed)``.
+    sail : callable
+        ``sail(observation) -> float``, the sail angle [rad] (or sheet length [m]); optionally
+        with ``reset(seed)``.
     """
 
     def __init__(self, rudder, sail):
@@ -72,6 +99,13 @@ class Composite:
         self.sail = sail
 
     def reset(self, seed: int | None = None) -> None:
+        """Reset both laws.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Passed to each law's ``reset``.
+        """
         for law in (self.rudder, self.sail):
             if hasattr(law, "reset"):
                 law.reset(seed)

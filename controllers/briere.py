@@ -47,6 +47,11 @@ def briere_sail_angle(theta_v: float) -> float:
 
     Piecewise linear through :data:`BREAKPOINTS_DEG` for |Theta_V|, odd in Theta_V; the
     result lies in [-pi/2, pi/2].
+
+    Parameters
+    ----------
+    theta_v : float
+        Theta_V [rad] (Saoud's, §IV).
     """
     theta = float(wrap_angle(theta_v))
     return math.copysign(float(np.interp(abs(theta), _THETA, _DELTA)), theta)
@@ -71,7 +76,13 @@ class BriereSail:
         self.reset()
 
     def reset(self, seed: int | None = None) -> None:
-        """Forget the last command (the law is otherwise memoryless; ``seed`` is unused)."""
+        """Forget the last command (the law is otherwise memoryless; ``seed`` is unused).
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.last_sail_angle = 0.0
 
     def __call__(self, observation: dict) -> float:

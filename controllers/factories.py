@@ -8,6 +8,7 @@ Angles in options end in ``_deg``.
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -15,16 +16,36 @@ from .base import Composite
 from .pid import PIDHeading
 from .sail_laws import FixedSail, LeewardSail
 
+if TYPE_CHECKING:
+    from sailmujoco.params import BoatParams
+
+    from .saoud_model import SaoudParams
+
 
 class Bounded:
     """A controller whose action is clipped to the environment's action bounds (a controller
-    designed for another boat may ask for more rudder than this one has)."""
+    designed for another boat may ask for more rudder than this one has).
+
+    Parameters
+    ----------
+    controller : callable
+        ``controller(timestep) -> action``, optionally with ``reset(seed)``.
+    low, high : array_like
+        The action bounds.
+    """
 
     def __init__(self, controller, low, high):
         self.controller = controller
         self.low, self.high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
 
     def reset(self, seed: int | None = None) -> None:
+        """Reset the wrapped controller.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Passed to the controller's ``reset``.
+        """
         if hasattr(self.controller, "reset"):
             self.controller.reset(seed)
 
@@ -44,6 +65,13 @@ class SheetFromAngle:
 
     A sheet only limits the boom (Wille 2016b §2.1): the wind sets the side, and an angle the
     wind cannot hold (to windward, or closer than the wind allows) is not reached.
+
+    Parameters
+    ----------
+    law : callable
+        ``law(observation) -> sail angle`` [rad], optionally with ``reset(seed)``.
+    params : BoatParams
+        The boat, for the sheet's geometry.
     """
 
     def __init__(self, law, params):
@@ -51,12 +79,25 @@ class SheetFromAngle:
         self.params = params
 
     def length(self, angle: float) -> float:
-        """Sheet length [m] that lets the boom out to ``|angle|`` [rad]."""
+        """Sheet length [m] that lets the boom out to ``|angle|`` [rad].
+
+        Parameters
+        ----------
+        angle : float
+            Sail angle [rad]; its magnitude is used.
+        """
         from sailmujoco.mjcf import sheet_length
 
         return float(sheet_length(self.params, abs(angle)))
 
     def reset(self, seed: int | None = None) -> None:
+        """Reset the angle law.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Passed to the law's ``reset``.
+        """
         if hasattr(self.law, "reset"):
             self.law.reset(seed)
 
@@ -84,18 +125,66 @@ def _rudder(env, kp=1.0, ki=0.05, kd=2.0):
                       reference_key=key)
 
 
-def pid(env, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0, fraction: float = 0.5):
-    """PID heading controller with the leeward rule-of-thumb sail."""
+def pid(env, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0, fraction: float = 0.5) -> Composite:
+    """PID heading controller with the leeward rule-of-thumb sail.
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    kp, ki, kd : float
+        Gains of the heading PID (:class:`controllers.pid.PIDHeading`).
+    fraction : float
+        Sail angle as a fraction of the apparent-wind angle (:class:`controllers.sail_laws.LeewardSail`).
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     return _composite(env, _rudder(env, kp, ki, kd), LeewardSail(fraction=fraction))
 
 
-def fixed_sail(env, sail_deg: float = 30.0, kp: float = 1.0, ki: float = 0.05, kd: float = 2.0):
-    """PID heading controller with a fixed sail angle to leeward (brute-force searches)."""
+def fixed_sail(env, sail_deg: float = 30.0, kp: float = 1.0, ki: float = 0.05,
+               kd: float = 2.0) -> Composite:
+    """PID heading controller with a fixed sail angle to leeward (brute-force searches).
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    sail_deg : float
+        Sail angle to leeward [deg].
+    kp, ki, kd : float
+        Gains of the heading PID (:class:`controllers.pid.PIDHeading`).
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     return _composite(env, _rudder(env, kp, ki, kd), FixedSail(math.radians(sail_deg)))
 
 
-def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False):
-    """Wille (2016a) heading (or course) controller with the lambda100 sail of Wille (2016b)."""
+def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False) -> Composite:
+    """Wille (2016a) heading (or course) controller with the lambda100 sail of Wille (2016b).
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    kp : float
+        Proportional gain of :class:`controllers.wille.WilleHeading`.
+    kd : float
+        Derivative gain of :class:`controllers.wille.WilleHeading`.
+    course : bool
+        Hold the course over ground (eqs. 52-59) instead of the heading.
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     from .wille import WilleHeading
     from .wille_roll import WilleRollSail
 
@@ -104,24 +193,66 @@ def wille_heading(env, kp: float = 3e5, kd: float = 1e6, course: bool = False):
                       WilleRollSail(params, roll_control=False))
 
 
-def wille_course(env, kp: float = 3e5, kd: float = 1e6):
-    """Wille (2016a) course controller (eqs. 52-59) with the lambda100 sail."""
+def wille_course(env, kp: float = 3e5, kd: float = 1e6) -> Composite:
+    """Wille (2016a) course controller (eqs. 52-59) with the lambda100 sail.
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    kp, kd : float
+        Gains of :class:`controllers.wille.WilleHeading`, as for :func:`wille_heading`.
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     return wille_heading(env, kp=kp, kd=kd, course=True)
 
 
-def wille_roll(env, wind: str = "perfect", roll_control: bool = True, heel_desired_deg: float = 10.0):
+def wille_roll(env, wind: str = "perfect", roll_control: bool = True,
+               heel_desired_deg: float = 10.0) -> Composite:
     """Wille (2016b) roll stabilisation sail with a PID heading rudder (the paper's runs hold a
-    beam-reach course)."""
+    beam-reach course).
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    wind : {"perfect", "mean_speed", "mean"}
+        The sail law's wind estimate (:class:`controllers.wille_roll.WilleRollSail`).
+    roll_control : bool
+        False: always the sail angle of maximum surge force, lambda_100.
+    heel_desired_deg : float
+        Desired heel phi_d [deg].
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     from .wille_roll import WilleRollSail
 
     return _composite(env, _rudder(env), WilleRollSail(_boat(env), wind=wind, roll_control=roll_control,
                                                        heel_desired=math.radians(heel_desired_deg)))
 
 
-def saoud_params(params):
+def saoud_params(params: BoatParams) -> SaoudParams:
     """Saoud's Table I quantities for a boat: mass, sail area, air density and the heeling arm
     h_s (sail CE above the CG). For saoud_robot at l_phi = 0.1 m this is Table I itself; at
-    l_phi = 1 m the 6-DOF robot's arm is 1.7 m (xml/saoud_robot/README.md)."""
+    l_phi = 1 m the 6-DOF robot's arm is 1.7 m (xml/saoud_robot/README.md).
+
+    Parameters
+    ----------
+    params : BoatParams
+        The boat.
+
+    Returns
+    -------
+    SaoudParams
+        The reduced model's parameters for that boat.
+    """
     from .saoud import SaoudParams
 
     return SaoudParams(mass=params.mass, sail_area=params.sail.area, rho_air=params.rho_air,
@@ -129,12 +260,28 @@ def saoud_params(params):
 
 
 def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
-          paper_numbers: bool = False, wind_source: str = "saoud_v"):
+          paper_numbers: bool = False, wind_source: str = "saoud_v") -> Composite:
     """Saoud (2015) optimal sail angle (eq. 13 / 14) with a PID heading rudder.
 
-    By default the optimiser gets the boat's own mass, sail and heeling arm; with
-    ``paper_numbers`` it keeps Table I (h_s = 0.8 m) whatever the boat. ``wind_source``:
-    "saoud_v" (Saoud's V, §IV), "ce" or "masthead" (measured; they include the boom's swing).
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    l_phi : float, optional
+        Metacentric height in beta [m]; default the boat's GM_t.
+    phi_max_deg : float or None
+        Roll limit [deg] (problem 14); None for problem 5.
+    paper_numbers : bool
+        Keep Table I (h_s = 0.8 m) whatever the boat; by default the optimiser gets the
+        boat's own mass, sail and heeling arm (:func:`saoud_params`).
+    wind_source : {"saoud_v", "ce", "masthead"}
+        Saoud's V (§IV), or a measured apparent wind ("ce", "masthead": they include the
+        boom's swing); see :func:`controllers.saoud.observed_apparent_wind`.
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
     """
     from .saoud import SaoudParams, SaoudSail
 
@@ -147,17 +294,49 @@ def saoud(env, l_phi: float | None = None, phi_max_deg: float | None = 30.0,
                                                    wind_source=wind_source))
 
 
-def briere(env, wind_source: str = "saoud_v"):
-    """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder; ``wind_source``
-    as for :func:`saoud`."""
+def briere(env, wind_source: str = "saoud_v") -> Composite:
+    """IBOAT/Briere sail trimming "Bm" (Saoud Fig. 5) with a PID heading rudder.
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (boat parameters, control period, observation keys).
+    wind_source : {"saoud_v", "ce", "masthead"}
+        Where the apparent wind comes from, as for :func:`saoud`.
+
+    Returns
+    -------
+    Composite
+        ``controller(timestep) -> [rudder, sail]``.
+    """
     from .briere import BriereSail
 
     return _composite(env, _rudder(env), BriereSail(wind_source=wind_source))
 
 
 def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float = 1.0,
-         k_v: float = 8.0, epsilon_deg: float = 5.0):
-    """Viel et al. position keeping (rudder 10-11, sail 12-17, speed 18, strategy 19-22)."""
+         k_v: float = 8.0, epsilon_deg: float = 5.0) -> Bounded:
+    """Viel et al. position keeping (rudder 10-11, sail 12-17, speed 18, strategy 19-22).
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (action bounds, control period).
+    d_M, d_T : float
+        Radii of the pre-arrival and target areas [m] (§5.1: 14, 7).
+    k_s : float
+        Sail adaptation gain, eq. 13 [rad s/m] (§5.1: 5).
+    k_p, k_v : float
+        Velocity-control gains, eq. 18 [1/s^2, 1/s] (§5.1: 1, 8).
+    epsilon_deg : float
+        epsilon_delta_s, the sail margin of eq. 16 [deg] (§5.1: 5 deg); see
+        :class:`controllers.viel.VielController`.
+
+    Returns
+    -------
+    Bounded
+        The controller, its action clipped to the environment's bounds.
+    """
     from .viel import VielController
 
     spec = env.action_spec()

@@ -24,7 +24,22 @@ def _sign(x: float) -> float:
 
 
 class PIDHeading:
-    """Rudder law holding a compass heading (rad). ``dt`` is the control period (s)."""
+    """Rudder law holding a compass heading (rad). ``dt`` is the control period (s).
+
+    Parameters
+    ----------
+    desired_heading : float, optional
+        Compass heading to hold [rad]; None reads ``observation[reference_key]``.
+    kp, ki, kd : float
+        Proportional [-], integral [1/s] and derivative [s] gains (rudder radians per radian of
+        heading error).
+    max_angle : float
+        Rudder saturation [rad].
+    dt : float
+        Control period [s] (the integral's step).
+    reference_key : str
+        Observation key of the desired heading when ``desired_heading`` is None.
+    """
 
     def __init__(self, desired_heading: float | None = None, kp: float = 1.0, ki: float = 0.05,
                  kd: float = 2.0, max_angle: float = math.radians(35.0), dt: float = 0.1,
@@ -37,9 +52,28 @@ class PIDHeading:
         self.integral = 0.0
 
     def reset(self, seed: int | None = None) -> None:
+        """Clear the internal state.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.integral = 0.0
 
     def error(self, observation: dict) -> float:
+        """The heading error.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation (:mod:`controllers.base`).
+
+        Returns
+        -------
+        float
+            e = wrap(heading - desired heading) [rad].
+        """
         desired = self.desired_heading
         if desired is None:
             desired = scalar(observation, self.reference_key)

@@ -20,6 +20,22 @@ def keep_side_at_dead_run(angle: float, last: float, wind_angle: float,
     With the wind from astern both sides are leeward; a law that picks the side from the sign
     of the wind angle gybes at every flicker of it and loses the drive. None of the papers
     specifies this; every sail law here applies it (``wind_angle`` is AWA or Theta_V, rad).
+
+    Parameters
+    ----------
+    angle : float
+        The law's sail angle [rad].
+    last : float
+        The last command [rad]; 0 before the first.
+    wind_angle : float
+        AWA or Theta_V [rad]; +-pi is dead astern.
+    band : float
+        Half-width of the dead-run band [rad].
+
+    Returns
+    -------
+    float
+        ``angle``, or its magnitude on the side of ``last`` within the band [rad].
     """
     if last != 0.0 and math.pi - abs(wind_angle) < band:
         return math.copysign(abs(angle), last)
@@ -31,6 +47,15 @@ class LeewardSail:
 
     The sailor's rule of thumb (an angle of attack that grows with the wind angle). In irons
     (|AWA| < ``irons``) the sail is centred.
+
+    Parameters
+    ----------
+    fraction : float
+        Sail angle per radian of |AWA| [-].
+    min_deg, max_deg : float
+        Clip of the sail angle's magnitude [deg].
+    irons_deg : float
+        Below this |AWA| [deg] the sail is centred.
     """
 
     def __init__(self, fraction: float = 0.5, min_deg: float = 10.0, max_deg: float = 80.0,
@@ -47,13 +72,26 @@ class LeewardSail:
 
 
 class FixedSail:
-    """A fixed sail angle (rad, magnitude) set to leeward: one point of a brute-force search."""
+    """A fixed sail angle (rad, magnitude) set to leeward: one point of a brute-force search.
+
+    Parameters
+    ----------
+    angle : float
+        Sail angle [rad]; its magnitude is used, to leeward.
+    """
 
     def __init__(self, angle: float):
         self.angle = abs(angle)
         self.last = 0.0
 
     def reset(self, seed: int | None = None) -> None:
+        """Clear the internal state.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.last = 0.0
 
     def __call__(self, observation: dict) -> float:

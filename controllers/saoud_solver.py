@@ -1,9 +1,10 @@
 """Saoud (2015) problem (5)/(14) compiled: :func:`optimal_sail_compiled`.
 
-The same algorithm as :func:`controllers.saoud.optimal_sail` (the readable reference, which
-stays as it is), written once more for numba, operation for operation, so that it returns the
-same numbers bit for bit (``tests/test_saoud_solver.py`` compares the two, and the sail law's
-actions, on recorded observations and on a grid of winds):
+The same algorithm as :func:`controllers.saoud_optimum.optimal_sail` (the readable reference),
+written once more for numba, operation for operation, so that it returns the same numbers bit
+for bit (``tests/test_fast_controllers.py`` compares the two, and the sail law's actions, on
+recorded observations and on a grid of winds). It shares the reference's parameters, result
+type, argument checks and tolerances (:mod:`controllers.saoud_model`):
 
 * the same formulas in the same order on floats; ``min``/``max`` as Python's (the first
   argument wins a tie or a NaN), ``x ** 2`` as CPython computes it (``pow(|x|, 2.0)`` of the
@@ -26,14 +27,15 @@ import numpy as np
 from sailmujoco._jit import clear_stale_cache, kernel
 from sailmujoco.forces.foil import saoud_normal_coefficient
 
-from .saoud import (
-    _BRANCH_TOL,
-    _DERIVATIVE_STEP,
-    _ROLL_SCAN,
-    _ROOT_SCAN,
-    _ROOT_TOL,
-    _SAME_ROOT,
-    _SECANT_ITERATIONS,
+from .saoud_model import (
+    BRANCH_TOL,
+    DERIVATIVE_STEP,
+    ROLL_SCAN,
+    ROOT_SCAN,
+    ROOT_TOL,
+    SAME_ROOT,
+    SECANT_ITERATIONS,
+    TABLE_I,
     SailOptimum,
     SaoudParams,
     check_arguments,
@@ -45,10 +47,9 @@ _BRENT_XTOL = 1e-14  # the reference's brentq(..., xtol=1e-14)
 _BRENT_RTOL = 4.0 * np.finfo(float).eps  # scipy.optimize.brentq's default rtol
 _BRENT_ITERATIONS = 100  # scipy.optimize.brentq's default maxiter
 # the reference's scan grids, as the reference builds them
-_THRUST_GRID = np.concatenate((np.geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, _ROOT_SCAN + 1)))
-_ROLL_GRID = np.linspace(-0.5 * math.pi, 0.5 * math.pi, _ROLL_SCAN + 1)
+_THRUST_GRID = np.concatenate((np.geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
+_ROLL_GRID = np.linspace(-0.5 * math.pi, 0.5 * math.pi, ROLL_SCAN + 1)
 _MAX_CANDIDATES = 8 + 2 * _THRUST_GRID.size + _ROLL_GRID.size
-_TABLE_I = SaoudParams()  # the reference's default parameters
 # status of a solve
 OK, EMPTY, NAN_IN_BRENTQ, NO_CONVERGENCE = 0, 1, 2, 3
 # residuals bracketed by brentq
@@ -72,7 +73,7 @@ def _df(x):
     if x == 0.0:
         h = 1e-6
         return 2.0 * saoud_normal_coefficient(h) / h - saoud_normal_coefficient(2.0 * h) / (2.0 * h)
-    h = _pymin(_DERIVATIVE_STEP, abs(x) / 3.0)
+    h = _pymin(DERIVATIVE_STEP, abs(x) / 3.0)
     return (8.0 * (saoud_normal_coefficient(x + h) - saoud_normal_coefficient(x - h))
             - (saoud_normal_coefficient(x + 2.0 * h) - saoud_normal_coefficient(x - 2.0 * h))) / (12.0 * h)
 
@@ -104,7 +105,7 @@ def _secant_root(v1, v2, beta, x0, x1, two):
     f0, f1 = _eq13_residual(x0, v1, v2, beta, two), _eq13_residual(x1, v1, v2, beta, two)
     found = False
     root = 0.0
-    for _ in range(_SECANT_ITERATIONS):
+    for _ in range(SECANT_ITERATIONS):
         if f1 == 0.0:
             root, found = x1, True
             break
@@ -113,7 +114,7 @@ def _secant_root(v1, v2, beta, x0, x1, two):
         x2 = x1 - f1 * (x1 - x0) / (f1 - f0)
         if not math.isfinite(x2):
             break
-        if abs(x2 - x1) < _ROOT_TOL:
+        if abs(x2 - x1) < ROOT_TOL:
             root, found = x2, True
             break
         x0, f0, x1, f1 = x1, f1, x2, _eq13_residual(x2, v1, v2, beta, two)
@@ -223,7 +224,7 @@ def _brentq(which, xa, xb, v1, v2, beta, sin_phi, cos_phi):
 
 @kernel
 def _add_candidate(out, n, delta, phi, v1, v2, roll_limited):
-    """Append the reference's _candidate(delta, phi, v1, v2, roll_limited) to ``out``: row
+    """Append the reference's sail_candidate(delta, phi, v1, v2, roll_limited) to ``out``: row
     (delta, phi, alpha, cost, roll_limited). Returns the new count."""
     x = v1 * math.sin(delta) - v2 * math.cos(phi) * math.cos(delta)  # Saoud (2015) eq. 8a
     cost = saoud_normal_coefficient(x) * math.sin(delta)  # Saoud (2015) eq. 5
@@ -236,7 +237,7 @@ def _add_candidate(out, n, delta, phi, v1, v2, roll_limited):
 
 @kernel
 def _from_root(out, n, x, v1, v2, beta):
-    """The reference's _from_root: up to two candidates appended to ``out``."""
+    """The reference's candidates_from_root: up to two candidates appended to ``out``."""
     ok, phi, cos_delta = _branch_point(x, v2, beta)
     if not ok:
         return n
@@ -246,7 +247,7 @@ def _from_root(out, n, x, v1, v2, beta):
     sin_mag = math.sqrt(1.0 - cos_delta * cos_delta)
     for sign in (1.0, -1.0):
         sin_delta = sign * sin_mag
-        if abs(v1 * sin_delta - v2 * math.cos(phi) * cos_delta - x) < _BRANCH_TOL:  # eq. 8a
+        if abs(v1 * sin_delta - v2 * math.cos(phi) * cos_delta - x) < BRANCH_TOL:  # eq. 8a
             n = _add_candidate(out, n, math.atan2(sin_delta, cos_delta), phi, v1, v2, False)
     return n
 
@@ -258,12 +259,12 @@ def _solve(v1, v2, beta, limited, phi_max, two, thrust_grid, roll_grid, out):
     side = math.copysign(1.0, v2)
     n = _add_candidate(out, 0, math.atan(v2 / v1) if v1 != 0.0 else 0.5 * side * math.pi, 0.0,
                        v1, v2, False)
-    # eq13_roots: the two secant runs, a root kept unless within _SAME_ROOT of a kept one
+    # eq13_roots: the two secant runs, a root kept unless within SAME_ROOT of a kept one
     first = _secant_root(v1, v2, beta, 1e-3, 2e-2, two)
     second = _secant_root(v1, v2, beta, 1.0 - 1e-3, 1.0 - 2e-2, two)
     if not math.isnan(first):
         n = _from_root(out, n, -side * first, v1, v2, beta)
-    if not math.isnan(second) and (math.isnan(first) or abs(second - first) >= _SAME_ROOT):
+    if not math.isnan(second) and (math.isnan(first) or abs(second - first) >= SAME_ROOT):
         n = _from_root(out, n, -side * second, v1, v2, beta)
     thrust = False
     for i in range(1, n):
@@ -315,9 +316,28 @@ def _solve(v1, v2, beta, limited, phi_max, two, thrust_grid, roll_grid, out):
 
 def optimal_sail_compiled(theta_v: float, apparent_speed: float, l_phi: float,
                           phi_max: float | None = None,
-                          params: SaoudParams = _TABLE_I) -> SailOptimum:
-    """:func:`controllers.saoud.optimal_sail`, compiled: the same arguments, checks, errors
-    and result (a :class:`~controllers.saoud.SailOptimum`), bit for bit."""
+                          params: SaoudParams = TABLE_I) -> SailOptimum:
+    """:func:`controllers.saoud_optimum.optimal_sail`, compiled: the same arguments, checks,
+    errors and result, bit for bit.
+
+    Parameters
+    ----------
+    theta_v : float
+        Theta_V = atan2(V2, V1) [rad] (§IV).
+    apparent_speed : float
+        |V| > 0 [m/s].
+    l_phi : float
+        Metacentric height [m] (> 0).
+    phi_max : float, optional
+        Roll limit [rad], in (0, pi/2); None for problem (5).
+    params : SaoudParams
+        Mass, sail area, g, rho_air, h_s (default Table I).
+
+    Returns
+    -------
+    SailOptimum
+        delta_s*, phi*, alpha_s* [rad] and J*, in Saoud's frames.
+    """
     check_arguments(apparent_speed, l_phi, phi_max)
     v1, v2 = math.cos(theta_v), math.sin(theta_v)  # V_bar_1, V_bar_2 (§V)
     beta = params.beta(l_phi, apparent_speed)

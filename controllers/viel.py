@@ -94,6 +94,13 @@ def viel_view(observation: dict, target=None) -> VielView:
     Reads ``position``, ``velocity``, ``heading``, ``yaw_rate``, ``apparent_wind_angle``,
     ``apparent_wind_speed``, ``true_state["wind_direction"]`` (the true wind, which the paper
     assumes known) and ``target_position`` when ``target`` is None.
+
+    Parameters
+    ----------
+    observation : dict
+        The observation (:mod:`controllers.base`).
+    target : array_like, optional
+        Target (x east, y north) [m]; None reads ``observation["target_position"]``.
     """
     x, y = _pair(observation["position"])
     vx, vy = _pair(observation["velocity"])
@@ -126,6 +133,19 @@ def rudder_law(theta: float, phi: float, theta_bar: float, rudder_max: float, ep
     """delta_r [rad] (Viel sign: positive turns clockwise), eqs. 10-11.
 
     Steers the course phi when ``cos(theta - phi) >= cos(epsilon_theta)``, else the heading theta.
+
+    Parameters
+    ----------
+    theta : float
+        Heading, ccw from east [rad].
+    phi : float
+        Course over ground, ccw from east [rad].
+    theta_bar : float
+        Desired heading, ccw from east [rad].
+    rudder_max : float
+        delta_r,max [rad].
+    epsilon_theta : float
+        Course/heading switch of eq. 10 [rad].
     """
     big_theta = phi if math.cos(theta - phi) - math.cos(epsilon_theta) >= 0.0 else theta  # Viel §3.1
     e = big_theta - theta_bar
@@ -135,12 +155,28 @@ def rudder_law(theta: float, phi: float, theta_bar: float, rudder_max: float, ep
 
 
 def sail_limit(psi_aw: float, sail_max: float) -> float:
-    """delta_s,M = min(|pi - |psi_aw||, delta_s,max) [rad], eq. 12 (the luffing angle)."""
+    """delta_s,M = min(|pi - |psi_aw||, delta_s,max) [rad], eq. 12 (the luffing angle).
+
+    Parameters
+    ----------
+    psi_aw : float
+        Direction the apparent wind blows towards, ccw from the bow [rad].
+    sail_max : float
+        delta_s,max [rad].
+    """
     return min(abs(math.pi - abs(psi_aw)), sail_max)  # Viel eq. 12
 
 
 def optimal_sail(psi_tw: float, theta_bar: float) -> float:
-    """delta_s^opt = (pi/2) (cos(psi_tw - theta_bar) + 1) / 2 [rad], eq. 15."""
+    """delta_s^opt = (pi/2) (cos(psi_tw - theta_bar) + 1) / 2 [rad], eq. 15.
+
+    Parameters
+    ----------
+    psi_tw : float
+        Direction the true wind blows towards, ccw from east [rad].
+    theta_bar : float
+        Desired heading, ccw from east [rad].
+    """
     return 0.5 * math.pi * (math.cos(psi_tw - theta_bar) + 1.0) / 2.0  # Viel eq. 15
 
 
@@ -150,6 +186,29 @@ def adaptive_sail(sail_previous: float, vdot_star: float, vdot: float, psi_aw: f
 
     ``sail_previous`` is the last delta_s; ``vdot_star``, ``vdot`` the desired and measured
     accelerations [m/s^2]. The rate acts on |delta_s| (see the module docstring).
+
+    Parameters
+    ----------
+    sail_previous : float
+        Last delta_s [rad] (Viel sign).
+    vdot_star : float
+        Desired acceleration [m/s^2] (eq. 18).
+    vdot : float
+        Measured acceleration [m/s^2].
+    psi_aw : float
+        Direction the apparent wind blows towards, ccw from the bow [rad].
+    psi_tw : float
+        Direction the true wind blows towards, ccw from east [rad].
+    theta_bar : float
+        Desired heading, ccw from east [rad].
+    k_s : float
+        Sail adaptation gain, eq. 13 [rad s/m].
+    dt : float
+        Control period [s].
+    epsilon_sail : float
+        epsilon_delta_s, the sail margin of eq. 16 [rad].
+    sail_max : float
+        delta_s,max [rad].
     """
     rate = -k_s * (vdot_star - vdot)  # Viel eq. 13, as the rate of |delta_s| (reading, see above)
     star = max(abs(sail_previous) + rate * dt, 0.0)  # Viel eq. 14
@@ -163,7 +222,25 @@ def adaptive_sail(sail_previous: float, vdot_star: float, vdot: float, psi_aw: f
 
 def desired_acceleration(v: float, u: float, theta: float, theta_tilde: float, distance: float,
                          k_v: float, k_p: float) -> float:
-    """vdot* = -k_v (v - v0) + k_p d_ST [m/s^2], v0 = max(0, u tan(theta - theta_tilde)), eq. 18."""
+    """vdot* = -k_v (v - v0) + k_p d_ST [m/s^2], v0 = max(0, u tan(theta - theta_tilde)), eq. 18.
+
+    Parameters
+    ----------
+    v : float
+        Forward speed [m/s].
+    u : float
+        Speed to port [m/s].
+    theta : float
+        Heading, ccw from east [rad].
+    theta_tilde : float
+        Bearing from the target to the boat, ccw from east [rad].
+    distance : float
+        Distance to the target d_ST [m].
+    k_v : float
+        Velocity gain [1/s].
+    k_p : float
+        Distance gain [1/s^2].
+    """
     v0 = max(0.0, u * math.tan(theta - theta_tilde))  # Viel eq. 18 (hat theta read as tilde theta)
     return -k_v * (v - v0) + k_p * distance  # Viel eq. 18
 
@@ -171,7 +248,23 @@ def desired_acceleration(v: float, u: float, theta: float, theta_tilde: float, d
 def go_round(theta_star: float, alpha: float, psi_tw: float, distance: float, d_T: float,
              d_M: float) -> tuple[float, bool]:
     """Step 2: (theta*, turned) — turn theta* by +-pi/2 in the pre-arrival area when the direct
-    path would arrive downwind. ``alpha`` is the bearing from the target to the boat [rad]."""
+    path would arrive downwind. ``alpha`` is the bearing from the target to the boat [rad].
+
+    Parameters
+    ----------
+    theta_star : float
+        Direct-path heading theta* [rad].
+    alpha : float
+        Bearing from the target to the boat [rad].
+    psi_tw : float
+        Direction the true wind blows towards, ccw from east [rad].
+    distance : float
+        Distance to the target [m].
+    d_T : float
+        Radius of the target area [m].
+    d_M : float
+        Radius of the pre-arrival area [m].
+    """
     if d_T <= distance <= d_M and math.cos(theta_star - psi_tw) > 0.0:  # Viel §4.3 step 2
         if math.cos(alpha - (psi_tw + 0.5 * math.pi)) > math.cos(alpha - (psi_tw - 0.5 * math.pi)):
             return theta_star + 0.5 * math.pi, True
@@ -180,7 +273,19 @@ def go_round(theta_star: float, alpha: float, psi_tw: float, distance: float, d_
 
 
 def tack(theta_star: float, psi_tw: float, delta: float, q: int) -> tuple[float, int, bool]:
-    """Step 3: (theta_bar, q, in_dead_area). q in {-1, 1}; 0 means not chosen yet."""
+    """Step 3: (theta_bar, q, in_dead_area). q in {-1, 1}; 0 means not chosen yet.
+
+    Parameters
+    ----------
+    theta_star : float
+        Heading theta* of steps 1-2 [rad].
+    psi_tw : float
+        Direction the true wind blows towards, ccw from east [rad].
+    delta : float
+        Hauled angle of the dead area [rad].
+    q : int
+        The tack kept so far: -1, 1, or 0 for none yet.
+    """
     nearer_minus = math.cos(theta_star - (psi_tw + math.pi - delta)) > math.cos(
         theta_star - (psi_tw + math.pi + delta))
     if math.cos(psi_tw - theta_star) + math.cos(delta) > 0.0:  # Viel §4.3 step 3: outside the dead area
@@ -251,7 +356,13 @@ class VielController:
         self.reset()
 
     def reset(self, seed: int | None = None) -> None:
-        """Forget the sail angle, the previous speed and the tack (deterministic: no randomness)."""
+        """Forget the sail angle, the previous speed and the tack (deterministic: no randomness).
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.sail = 0.0  # last delta_s, Viel sign [rad]
         self.v_previous: float | None = None
         self.q = 0

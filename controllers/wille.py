@@ -33,7 +33,15 @@ def _wrap(angle: float) -> float:
 
 
 def lift_slope(foil: Foil, reynolds: float = 1e6) -> float:
-    """C_L0 of eq. 49: dC_L/dalpha at zero incidence of our finite-span foil model, 1/rad."""
+    """C_L0 of eq. 49: dC_L/dalpha at zero incidence of our finite-span foil model, 1/rad.
+
+    Parameters
+    ----------
+    foil : Foil
+        The rudder or keel (aspect and thickness ratios).
+    reynolds : float
+        Reynolds number of the look-up [-].
+    """
     t = naca0015()
     da = math.radians(1.0)
     c_plus = hydrofoil_coefficients(da, reynolds, foil.aspect_ratio, foil.thickness_ratio,
@@ -74,6 +82,8 @@ class WilleHeading:
         Add the correction term beta_b (eq. 52).
     beta_limit : float
         |beta_b| limit, rad (10 deg, §3.3).
+    reynolds : float
+        Reynolds number at which the rudder's and keel's lift slopes C_L0 are read (eq. 49).
     """
 
     def __init__(self, params: BoatParams | None = None, kp: float = 3e5, kd: float = 1e6,
@@ -89,10 +99,24 @@ class WilleHeading:
         self.last_beta_b = 0.0
 
     def reset(self, seed: int | None = None) -> None:
+        """Clear the internal state.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused: the law is deterministic.
+        """
         self.last_beta_b = 0.0
 
     def correction(self, s: dict) -> float:
-        """beta_b of eqs. 57-59 (rad), limited to +-beta_limit; 0 when not moving."""
+        """beta_b of eqs. 57-59 (rad), limited to +-beta_limit; 0 when not moving.
+
+        Parameters
+        ----------
+        s : dict
+            Wille's variables (FRD, NED) of the observation: ``u``, ``v``, ``phi``, ``Y_sail``,
+            ``Y_rudder``.
+        """
         p = self.params
         speed2 = s["u"] ** 2 + s["v"] ** 2
         if speed2 < 1e-6:

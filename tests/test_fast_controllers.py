@@ -1,11 +1,11 @@
-"""The controllers' fast paths give the actions of the code they replaced, bit for bit.
+"""The controllers' fast paths give the actions of their readable forms, bit for bit.
 
-The replaced hot paths are kept here as references, as they were written: the PID rudder's
+The readable forms of the hot paths are written out here as references: the PID rudder's
 step, Saoud's apparent wind (saoud_v), the Wille (2016b) look-up tables' inversion and Viel's
-view of the observation; Saoud's
-compiled solver is compared with :func:`controllers.saoud.optimal_sail`, the readable solve
-that stays in the package. Actions are compared on observation sequences recorded from real
-episodes (gusts, heel, tacks through the wind-angle schedule) and the solver on a grid of winds.
+view of the observation; Saoud's compiled solver is compared with
+:func:`controllers.saoud_optimum.optimal_sail`, the readable solver in the package. Actions are
+compared on observation sequences recorded from real episodes (gusts, heel, tacks through the
+wind-angle schedule) and the solver on a grid of winds.
 """
 
 import functools
@@ -26,47 +26,47 @@ from sailmujoco.frames import saoud_theta_v, yaw_from_heading
 from sailmujoco.reference.viel import psi_aw_from_awa, psi_tw_from_direction
 
 
-# ---- the replaced code, as it was -----------------------------------------------------------
-def old_scalar(observation, key):
+# ---- the readable references (numpy forms of the fast paths) ------------------------------
+def ref_scalar(observation, key):
     return float(np.asarray(observation[key]).reshape(()))
 
 
-class OldPID(PIDHeading):
+class ReferencePID(PIDHeading):
     def error(self, observation):
         desired = self.desired_heading
         if desired is None:
-            desired = old_scalar(observation, self.reference_key)
-        return (old_scalar(observation, "heading") - desired + math.pi) % (2.0 * math.pi) - math.pi
+            desired = ref_scalar(observation, self.reference_key)
+        return (ref_scalar(observation, "heading") - desired + math.pi) % (2.0 * math.pi) - math.pi
 
     def __call__(self, observation):
         e = self.error(observation)
-        de = -old_scalar(observation, "yaw_rate")
+        de = -ref_scalar(observation, "yaw_rate")
         command = self.kp * e + self.ki * self.integral + self.kd * de
         if abs(command) < self.max_angle or np.sign(command) != np.sign(e):
             self.integral += e * self.dt
         return float(np.clip(command, -self.max_angle, self.max_angle))
 
 
-def old_pid(pid):
-    """An OldPID with the settings of ``pid``."""
-    old = OldPID.__new__(OldPID)
-    old.__dict__.update(vars(pid))
-    return old
+def ref_pid(pid):
+    """An ReferencePID with the settings of ``pid``."""
+    reference = ReferencePID.__new__(ReferencePID)
+    reference.__dict__.update(vars(pid))
+    return reference
 
 
-def old_saoud_v(observation):
+def ref_saoud_v(observation):
     state = observation["true_state"]
     air = (np.asarray(state["true_wind"], dtype=float).reshape(2)
            - np.asarray(observation["velocity"], dtype=float).reshape(2))
-    yaw = old_scalar(state, "yaw")
+    yaw = ref_scalar(state, "yaw")
     c, s = math.cos(yaw), math.sin(yaw)
     level = np.array([c * air[0] + s * air[1], -s * air[0] + c * air[1]])
     return saoud_theta_v((level[0], level[1])), float(np.hypot(*level))
 
 
-class OldSaoudSail(SaoudSail):
+class ReferenceSaoudSail(SaoudSail):
     def __call__(self, observation):
-        theta_v, speed = old_saoud_v(observation)
+        theta_v, speed = ref_saoud_v(observation)
         if speed < self.min_speed:
             return self.last_sail_angle
         self.last_optimum = optimal_sail(theta_v, speed, self.l_phi, self.phi_max, self.params)
@@ -75,7 +75,7 @@ class OldSaoudSail(SaoudSail):
         return self.last_sail_angle
 
 
-def old_solutions(table, beta_ws, max_jump):
+def ref_solutions(table, beta_ws, max_jump):
     grid = table.beta_ws
     b = min(max(beta_ws, grid[0]), grid[-1])
     i = int(np.clip(np.searchsorted(grid, b) - 1, 0, grid.size - 2))
@@ -88,19 +88,19 @@ def old_solutions(table, beta_ws, max_jump):
     return blend(table.sail_angle), blend(table.surge), blend(table.moment)
 
 
-class OldTables:
-    """WilleSailTables' look-ups as they were, on the same tables."""
+class ReferenceTables:
+    """WilleSailTables' look-ups in their numpy form, on the same tables."""
 
     def __init__(self, tables):
         self.tables = tables
 
     def optimal_sail_angle(self, beta_ws, side=None):
         half = self.tables.table(beta_ws, side)
-        return float(old_solutions(half, beta_ws, self.tables.max_jump)[0][0])
+        return float(ref_solutions(half, beta_ws, self.tables.max_jump)[0][0])
 
     def sail_command(self, beta_ws, relative_moment, side=None):
         half = self.tables.table(beta_ws, side)
-        lam, _, moment = old_solutions(half, beta_ws, self.tables.max_jump)
+        lam, _, moment = ref_solutions(half, beta_ws, self.tables.max_jump)
         heeling = half.side * moment[::-1]
         angles = lam[::-1]
         wanted = half.side * relative_moment
@@ -116,23 +116,23 @@ class OldTables:
                            float(moment[3]))
 
 
-def old_sign(x):
+def ref_sign(x):
     return float(np.sign(x))
 
 
-def old_viel_view(observation, target=None):
+def ref_viel_view(observation, target=None):
     x, y = (float(a) for a in np.asarray(observation["position"], dtype=float).reshape(2))
     vx, vy = (float(a) for a in np.asarray(observation["velocity"], dtype=float).reshape(2))
-    theta = float(yaw_from_heading(old_scalar(observation, "heading")))
+    theta = float(yaw_from_heading(ref_scalar(observation, "heading")))
     c, s = math.cos(theta), math.sin(theta)
     if target is None:
         target = observation["target_position"]
     x_T, y_T = (float(a) for a in np.asarray(target, dtype=float).reshape(2))
     values = dict(
         x=x, y=y, theta=theta, phi=math.atan2(vy, vx), v=vx * c + vy * s, u=-vx * s + vy * c,
-        omega=old_scalar(observation, "yaw_rate"), a_aw=old_scalar(observation, "apparent_wind_speed"),
-        psi_aw=psi_aw_from_awa(old_scalar(observation, "apparent_wind_angle")),
-        psi_tw=psi_tw_from_direction(old_scalar(observation["true_state"], "wind_direction")),
+        omega=ref_scalar(observation, "yaw_rate"), a_aw=ref_scalar(observation, "apparent_wind_speed"),
+        psi_aw=psi_aw_from_awa(ref_scalar(observation, "apparent_wind_angle")),
+        psi_tw=psi_tw_from_direction(ref_scalar(observation["true_state"], "wind_direction")),
         x_T=x_T, y_T=y_T)
     return viel.VielView(**values)
 
@@ -175,8 +175,8 @@ def test_saoud_actions(phi_max_deg, paper_numbers):
     fast = factories.saoud(env, phi_max_deg=phi_max_deg, paper_numbers=paper_numbers)
     reference = factories.saoud(env, phi_max_deg=phi_max_deg, paper_numbers=paper_numbers)
     sail = reference.sail
-    reference.rudder = old_pid(reference.rudder)
-    reference.sail = OldSaoudSail(l_phi=sail.l_phi, phi_max=sail.phi_max, params=sail.params)
+    reference.rudder = ref_pid(reference.rudder)
+    reference.sail = ReferenceSaoudSail(l_phi=sail.l_phi, phi_max=sail.phi_max, params=sail.params)
     assert fast.sail.compiled and fast.sail._solve is optimal_sail_compiled
     assert_same_actions(fast, reference, timesteps)
     assert fast.sail.last_optimum == reference.sail.last_optimum
@@ -188,8 +188,8 @@ def test_wille_roll_actions(wind):
     env, timesteps = recorded("wille_yacht", "beam_reach_roll", "wille_roll", 500, wind_speed=12.0)
     fast = factories.wille_roll(env, wind=wind)
     reference = factories.wille_roll(env, wind=wind)
-    reference.rudder = old_pid(reference.rudder)
-    reference.sail.tables = OldTables(reference.sail.tables)
+    reference.rudder = ref_pid(reference.rudder)
+    reference.sail.tables = ReferenceTables(reference.sail.tables)
     assert_same_actions(fast, reference, timesteps)
     saturations = []
     fast.reset(0)
@@ -209,9 +209,9 @@ def test_viel_actions(world, monkeypatch):
     modes = set()
     for timestep in timesteps:
         a = fast(timestep)
-        with monkeypatch.context() as patch:  # the replaced code, for the reference only
-            patch.setattr(viel, "viel_view", old_viel_view)
-            patch.setattr(viel, "_sign", old_sign)
+        with monkeypatch.context() as patch:  # the readable reference only
+            patch.setattr(viel, "viel_view", ref_viel_view)
+            patch.setattr(viel, "_sign", ref_sign)
             b = reference(timestep)
         assert [bits(x) for x in a] == [bits(x) for x in b], (a, b)
         modes.add(fast.info["mode"])
@@ -221,18 +221,19 @@ def test_viel_actions(world, monkeypatch):
 def test_wille_tables_lookups():
     """Every wind angle of both halves (and NaN, and past the ends), every moment fraction."""
     tables = factories.wille_roll(suite.load("wille_yacht", "beam_reach_roll")).sail.tables
-    old = OldTables(tables)
+    reference = ReferenceTables(tables)
     for beta in [*np.linspace(-3.3, 3.3, 721), 0.0, -0.0, math.nan]:
         for side in (None, 1, -1):
             half = tables.table(beta, side)
-            new_rows = tables.solutions(beta, side)
-            for new, ref in zip(new_rows, old_solutions(half, beta, tables.max_jump), strict=True):
-                assert new.tobytes() == ref.tobytes()
+            fast_rows = tables.solutions(beta, side)
+            for fast_row, ref in zip(fast_rows, ref_solutions(half, beta, tables.max_jump), strict=True):
+                assert fast_row.tobytes() == ref.tobytes()
             if beta != beta:
                 continue
-            assert bits(tables.optimal_sail_angle(beta, side)) == bits(old.optimal_sail_angle(beta, side))
+            assert (bits(tables.optimal_sail_angle(beta, side))
+                    == bits(reference.optimal_sail_angle(beta, side)))
             for moment in np.linspace(-6.0, 6.0, 7):
-                a, b = tables.sail_command(beta, moment, side), old.sail_command(beta, moment, side)
+                a, b = tables.sail_command(beta, moment, side), reference.sail_command(beta, moment, side)
                 assert [bits(getattr(a, k)) for k in vars(b)] == [bits(getattr(b, k)) for k in vars(b)]
 
 

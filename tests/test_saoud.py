@@ -6,7 +6,7 @@ import time
 import numpy as np
 import pytest
 from conftest import sail_observation as _observation
-from sailmujoco.controllers import saoud
+from sailmujoco.controllers import saoud_optimum
 from sailmujoco.controllers.base import Composite
 from sailmujoco.controllers.saoud import (
     SaoudController,
@@ -77,8 +77,8 @@ def test_fallback_near_beam_reach():
     theta_v, (speed, l_phi) = 100.0 * DEG, FIG3["c1"]
     v1, v2 = math.cos(theta_v), math.sin(theta_v)
     beta = SaoudParams().beta(l_phi, speed)
-    roots = saoud.eq13_roots(v1, v2, beta)
-    from_paper = [c for r in roots for c in saoud._from_root(-r, v1, v2, beta)]
+    roots = saoud_optimum.eq13_roots(v1, v2, beta)
+    from_paper = [c for r in roots for c in saoud_optimum.candidates_from_root(-r, v1, v2, beta)]
     assert len(roots) == 1 and all(c.cost > 0.0 for c in from_paper)
     fast = optimal_sail(theta_v, speed, l_phi)
     slow = brute_force_sail(theta_v, speed, l_phi)
@@ -96,7 +96,8 @@ def test_paper_route_suffices_away_from_beam_reach():
         beta = SaoudParams().beta(l_phi, speed)
         for theta_v in np.radians(np.arange(1.0, 180.0, 1.0)):
             v1, v2 = math.cos(theta_v), math.sin(theta_v)
-            paper = [c for r in saoud.eq13_roots(v1, v2, beta) for c in saoud._from_root(-r, v1, v2, beta)]
+            paper = [c for r in saoud_optimum.eq13_roots(v1, v2, beta)
+                     for c in saoud_optimum.candidates_from_root(-r, v1, v2, beta)]
             thrust = [c for c in paper if c.cost < 0.0]
             if not thrust:
                 assert 90.0 * DEG < theta_v < 120.0 * DEG
@@ -180,7 +181,7 @@ def test_lemma1_symmetry(theta_deg, phi_max_deg):
     for shift in (math.pi, -math.pi):
         delta = best.delta + shift
         assert abs(_constraint(delta, best.phi, theta_v, speed, l_phi)) < 1e-6
-        assert saoud.sail_cost(delta, best.phi, theta_v) == pytest.approx(best.cost, abs=1e-12)
+        assert saoud_optimum.sail_cost(delta, best.phi, theta_v) == pytest.approx(best.cost, abs=1e-12)
         x = math.cos(theta_v) * math.sin(delta) - math.sin(theta_v) * math.cos(best.phi) * math.cos(delta)
         assert x == pytest.approx(math.sin(best.alpha + shift), abs=1e-9)  # eq. 8a
 
