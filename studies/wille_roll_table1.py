@@ -50,7 +50,7 @@ from sailmujoco.params import get_boat
 
 from .kit import verdict
 from .kit import Report, engine_for, run_batch, save_figure, setup_matplotlib, timer
-from .wille_course_table2 import BOAT, make_env
+from .kit.wille import BOAT, make_env
 
 NAME = "wille_roll_table1"
 TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"

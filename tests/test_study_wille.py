@@ -11,18 +11,25 @@ import math
 import pandas as pd
 import pytest
 from sailmujoco.studies import wille_course_table2, wille_roll_table1
+from sailmujoco.studies.kit.wille import table1_numbers, table1_simulate
+
+from sailmujoco import sweep
+from sailmujoco.study import run_study
+
+
+def _smoke(study, out):
+    with sweep.Engine("serial") as engine:  # in this process
+        return out, run_study(study, out, engine, smoke=True, progress=False)
 
 
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
-    out = tmp_path_factory.mktemp("wille_course_table2")
-    return out, wille_course_table2.run(out, smoke=True, workers=1, progress=False)
+    return _smoke(wille_course_table2.STUDY, tmp_path_factory.mktemp("wille_course_table2"))
 
 
 @pytest.fixture(scope="module")
 def roll(tmp_path_factory):
-    out = tmp_path_factory.mktemp("wille_roll_table1")
-    return out, wille_roll_table1.run(out, smoke=True, workers=1, progress=False)
+    return _smoke(wille_roll_table1.STUDY, tmp_path_factory.mktemp("wille_roll_table1"))
 
 
 def test_course_study_writes_report_and_figures(course):
@@ -114,7 +121,7 @@ def test_roll_sim3_residual_is_the_sail_actuators_lag():
     runs = {}
     for lag in (0.5, 0.25):
         job = dict(world="paper", sim="sim3", seed=0, duration=100.0, wind_speed=13.0, sail_time_constant=lag)
-        runs[lag] = wille_roll_table1.numbers(wille_roll_table1.simulate(job))
+        runs[lag] = table1_numbers(table1_simulate(job))
     for n in runs.values():
         assert n["on"] == 1.0
         assert abs(n["mean_heel"] - 10.0) < 0.3
