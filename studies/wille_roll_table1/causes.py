@@ -29,7 +29,7 @@ def _resistance_sentence(g, paper_mean, froude: float) -> str:
     built = {s: g("main", "mujoco", s, 0) for s in ("sim1", "sim2", "sim3")}
     fr = {s: g("friction", "mujoco", s, 0) for s in ("sim1", "sim2", "sim3")}
     surge = PAPER_TABLE1["sim1"]["mean_surge"]
-    def values(runs, key):
+    def _values(runs, key):
         return " / ".join(f"{runs[s][key]:.2f}" for s in runs)
 
     verdict = ("the displacement hull's wave-making wall, which the paper's friction-only resistance "
@@ -37,10 +37,10 @@ def _resistance_sentence(g, paper_mean, froude: float) -> str:
                if fr["sim1"]["mean_surge"] > 1.1 * built["sim1"]["mean_surge"]
                else "the residuary resistance changes the speed by less than 10 %")
     return (f"Switch, friction-only resistance (Wille eqs. 15-16, no wave making; seed 0): sims 1-3 "
-            f"surge {values(built, 'mean_surge')} → {values(fr, 'mean_surge')} m/s (sim 1 at Froude "
+            f"surge {_values(built, 'mean_surge')} → {_values(fr, 'mean_surge')} m/s (sim 1 at Froude "
             f"{built['sim1']['mean_surge'] / froude:.2f} → {fr['sim1']['mean_surge'] / froude:.2f}; paper world "
             f"{paper_mean['sim1']['mean_surge'] / froude:.2f}, the paper's {surge:g} m/s {surge / froude:.2f}), roll "
-            f"amplitude {values(built, 'roll_amplitude')} → {values(fr, 'roll_amplitude')}°: {verdict}.")
+            f"amplitude {_values(built, 'roll_amplitude')} → {_values(fr, 'roll_amplitude')}°: {verdict}.")
 
 
 
@@ -167,7 +167,7 @@ def _cause_lag(r: RunTable) -> str:
                if engaged_amps else "none")
     lag_text = " / ".join(f"{t:g}" for t, _ in r.lag(LAG_SEEDS[0]))
 
-    def lag_values(fast):
+    def _lag_values(fast):
         return "; ".join(f"seed {seed}: " + " / ".join(f"{n['roll_amplitude']:.2f}" for _, n in r.lag(seed, fast))
                          + "°" for seed in LAG_SEEDS)
     return f"""6. **Sim 3's remaining roll: the sail actuator's lag, and the gust moment it lets through**
@@ -176,7 +176,7 @@ def _cause_lag(r: RunTable) -> str:
    wants, and a gust's change of moment reaches the hull only for as long as the sail takes to
    follow; so the residual is T_λ times how fast a gust changes the sail's roll moment at the eased
    trim, a property of the sail's coefficients. Switched: T_λ = {lag_text} s gives sim-3
-   amplitudes {lag_values(False)} with our 10 Hz control, and {lag_values(True)} at
+   amplitudes {_lag_values(False)} with our 10 Hz control, and {_lag_values(True)} at
    {1 / FAST_CONTROL_S:g} Hz: the residual is proportional to the lag until the control period
    sets a floor (at 10 Hz near 0.2°, reached below T_λ = 0.25 s); at the paper's 0.5 s the control
    rate hardly matters. The paper's {p3:g}° lies between our residuals at T_λ = 0.5 and 0.25 s: its

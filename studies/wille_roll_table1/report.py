@@ -136,7 +136,7 @@ def _cause(a: Analysis, world, sim, key) -> str:
 def _reduction_rows(r: RunTable, smoke) -> list[dict]:
     rows = []
 
-    def row(world, case, seed_label, n):
+    def _row(world, case, seed_label, n):
         return {"world": WORLDS[world], "case": CASES[case], "seed": seed_label,
                 "sim 1 mean heel [deg]": f"{n['sim1']['mean_heel']:.1f}",
                 "sim 1 → sim 2": f"{100 * reduction(n['sim1'], n['sim2']):.0f} %",
@@ -146,25 +146,25 @@ def _reduction_rows(r: RunTable, smoke) -> list[dict]:
                 "sim 1 (mean wind) → sim 3": f"{100 * reduction(n['sim1_mean'], n['sim3']):.0f} %"}
 
     for world in WORLDS:
-        rows.append(row(world, "main", "mean", {s: r.mean(world, s) for s in SIMS}))
+        rows.append(_row(world, "main", "mean", {s: r.mean(world, s) for s in SIMS}))
         if len(r.seeds) > 1:
             for seed in r.seeds:
-                rows.append(row(world, "main", str(seed), {s: r.get("main", world, s, seed) for s in SIMS}))
+                rows.append(_row(world, "main", str(seed), {s: r.get("main", world, s, seed) for s in SIMS}))
     if not smoke:
         for case in ("sail", "dofs4", "friction"):
             for world in WORLDS:
                 for seed in (0, 1):
                     if r.has(case, world, "sim1", seed):
-                        rows.append(row(world, case, str(seed),
+                        rows.append(_row(world, case, str(seed),
                                         {s: r.get(case, world, s, seed) for s in SWITCH_SIMS}))
-        rows.append(row("mujoco", "sail dofs4", "0",
+        rows.append(_row("mujoco", "sail dofs4", "0",
                         {s: r.get("sail dofs4", "mujoco", s, 0) for s in SWITCH_SIMS}))
         n = {s: r.get("main", "paper", s, 1) for s in ("sim1", "sim1_mean")}
         n.update({s: r.get("gain", "paper", s, 1) for s in ("sim2", "sim3")})
-        rows.append(row("paper", "gain", "1", n))
+        rows.append(_row("paper", "gain", "1", n))
         n = {s: r.get("main", "paper", s, 0) for s in ("sim1", "sim1_mean")}
         n.update({s: r.get("band", "paper", s, 0) for s in ("sim2", "sim3")})
-        rows.append(row("paper", "band", "0", n))
+        rows.append(_row("paper", "band", "0", n))
     return rows
 
 
