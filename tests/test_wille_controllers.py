@@ -62,17 +62,43 @@ def _sail_to_leeward(observation):
     return math.copysign(max(math.radians(10), min(abs(awa) / 2, math.radians(80))), awa)
 
 
+DRIFT_SEEDS = (0, 1, 2, 3)  # gust realisations averaged by the drift test
+DRIFT_MEAN_RATIO = 0.8  # course / heading controller drift error, mean over DRIFT_SEEDS
+
+
+def _drift(world: str, seed: int, course: bool) -> tuple[float, float]:
+    """(drift error in rad, distance north in m) of a 100 s close-hauled run."""
+    env = suite.load("wille_yacht", "course_hold", world, seed=seed, time_limit=100.0)
+    controller = Composite(WilleHeading(course=course), _sail_to_leeward)
+    ts = env.reset()
+    while not ts.last():
+        ts = env.step(controller(ts))
+    metrics = env.task.metrics()
+    return metrics["drift_error"], metrics["north"]
+
+
 @pytest.mark.parametrize("world", ["mujoco", "paper"])
 def test_course_controller_drifts_less_than_heading_controller(world):
-    """Close-hauled (Wille §4 case, 100 s here): the correction term cuts the drift error."""
-    errors = {}
-    for course in (False, True):
-        env = suite.load("wille_yacht", "course_hold", world, seed=0, time_limit=100.0)
-        controller = Composite(WilleHeading(course=course), _sail_to_leeward)
-        ts = env.reset()
-        while not ts.last():
-            ts = env.step(controller(ts))
-        errors[course] = env.task.metrics()["drift_error"]
-        assert env.task.metrics()["north"] > 80.0  # it sails north, close-hauled
-    assert math.degrees(errors[False]) > 2.0
-    assert errors[True] < 0.6 * errors[False]
+    """Close-hauled (Wille §4 case, 100 s here): the correction term cuts the drift error.
+
+    Wille (2016a) §4 claims the course controller reduces the drift of the heading controller
+    (by 93 % in its 200 s run). One run is one gust realisation, and a change in the last bit of
+    a force sum moves the ratio course / heading error by about half as much as a change of
+    realisation does (seed 0, MuJoCo world: 0.584 here; a 1e-15 change in a hull sum moved it
+    by 0.036).
+    Measured over seeds 0-11 (100 s, 10 Hz, this sail law), the ratio per seed is
+    MuJoCo 0.46-0.70 (mean 0.575, sd 0.076) and paper world 0.19-0.54 (mean 0.326, sd 0.108).
+    So the test averages seeds 0-3 (MuJoCo 0.621, paper 0.270; the sd of a mean of four is
+    0.038 / 0.054) and asks for a mean below 0.8: the course controller removes at least a fifth
+    of the heading controller's drift, 4.7 sd of the mean above the MuJoCo world's value; and
+    for every seed less drift than the heading controller (ratio < 1, about 4 sd above the
+    highest single-seed ratio measured).
+    """
+    ratios = []
+    for seed in DRIFT_SEEDS:
+        (heading, north_h), (course, north_c) = _drift(world, seed, False), _drift(world, seed, True)
+        assert north_h > 80.0 and north_c > 80.0  # it sails north, close-hauled
+        assert math.degrees(heading) > 2.0  # the heading controller drifts by degrees (3.0-4.1)
+        assert course < heading
+        ratios.append(course / heading)
+    assert np.mean(ratios) < DRIFT_MEAN_RATIO

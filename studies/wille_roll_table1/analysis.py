@@ -1,0 +1,430 @@
+"""The numbers of the Table 1 runs: per run and seed means, reductions, the moment shares of
+Fig. 3 and the optima of Fig. 8."""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import pandas as pd
+from sailmujoco.controllers.wille import lift_slope
+from sailmujoco.controllers.wille_roll import build_sail_tables
+
+from sailmujoco.params import get_boat
+from sailmujoco.study import Results
+
+from ..kit.wille import BOAT, MOMENT_TERMS, TABLE1_WINDOW, table1_numbers
+from .scenario import (
+    FIG8_WINDS,
+    LAG_SEEDS,
+    LAG_SWITCH_S,
+    NAME,
+    PAPER_TABLE1,
+    REALISATION_SEEDS,
+    SEEDS,
+    SIMS,
+    WITHIN,
+    WORLDS,
+    fig8_tables,
+    jobs_for,
+)
+
+
+def reduction(before: dict, after: dict) -> float:
+    """The share of the roll amplitude a law takes away.
+
+    Parameters
+    ----------
+    before, after : dict
+        Two runs' numbers (:func:`studies.kit.wille.table1_numbers`).
+
+    Returns
+    -------
+    float
+        1 - after's roll amplitude / before's.
+    """
+    return 1.0 - after["roll_amplitude"] / before["roll_amplitude"]
+
+
+def shares(result: dict) -> dict:
+    """Fig. 3's shares of the roll moments: mean |K_term| over the window / their sum.
+
+    Parameters
+    ----------
+    result : dict
+        A run with its roll moments (:func:`studies.kit.wille.table1_simulate`, ``moments``).
+
+    Returns
+    -------
+    dict
+        The shares of ``sail + restoring``, ``keel`` and ``rudder + damping``, the mean rudder
+        angle (``rudder_deg``) and each term's mean moment (``<term>_Nm``, N m).
+    """
+    traj = result["trajectory"]
+    late = traj[traj["t"] >= traj["t"].iloc[-1] - TABLE1_WINDOW]
+    size = {term: float(late[f"K_{term}"].abs().mean()) for term in MOMENT_TERMS}
+    total = sum(size.values())
+    return {"rudder_deg": float(late["rudder_deg"].mean()),
+            "sail + restoring": (size["sail"] + size["restoring"]) / total, "keel": size["keel"] / total,
+            "rudder + damping": (size["rudder"] + size["damping"] + size["added_mass"]) / total,
+            **{f"{term}_Nm": float(late[f"K_{term}"].mean()) for term in MOMENT_TERMS}}
+
+
+STALLED = 2.0  # m/s: a run whose mean surge is below this has broached (rounded up and stopped)
+
+
+def optimum(table: pd.DataFrame, wind: float) -> float:
+    """phi_d of the fastest finished run at ``wind``; the vertex of the parabola through the
+    best grid point and its neighbours when it lies inside the grid. Runs that broached
+    (mean surge below ``STALLED``) are left out.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A Fig. 8 table (:func:`studies.wille_roll_table1.scenario.fig8_tables`).
+    wind : float
+        U10 (m/s).
+
+    Returns
+    -------
+    float
+        phi_d (deg); NaN when no run finished.
+    """
+    rows = table[(table["wind_speed"] == wind) & (table["status"] == "ok")
+                 & (table["mean_surge"] >= STALLED)].sort_values("heel_desired_deg")
+    if rows.empty:
+        return float("nan")
+    x, y = rows["heel_desired_deg"].to_numpy(float), rows["mean_surge"].to_numpy(float)
+    i = int(np.argmax(y))
+    if 0 < i < len(x) - 1:
+        a, b, _ = np.polyfit(x[i - 1:i + 2], y[i - 1:i + 2], 2)
+        if a < 0:
+            return float(-b / (2 * a))
+    return float(x[i])
+
+
+class RunTable:
+    """The runs by (case, world, sim, seed): each run's numbers, the seed means.
+
+    Parameters
+    ----------
+    results : dict
+        (case, world, sim, seed) -> the run (:func:`studies.kit.wille.table1_simulate`).
+    seeds : sequence of int
+        The headline seeds.
+    """
+
+    def __init__(self, results: dict, seeds):
+        self.raw = results
+        self.seeds = tuple(seeds)
+        self.n = {k: table1_numbers(v) for k, v in results.items() if k[0] not in ("fig8 sail",)}
+
+    def get(self, case, world, sim, seed=0) -> dict:
+        """One run's numbers (:func:`studies.kit.wille.table1_numbers`).
+
+        Parameters
+        ----------
+        case : str
+            A key of :data:`CASES` (or ``"shares"``).
+        world : str
+            A key of :data:`WORLDS`.
+        sim : str
+            A key of :data:`SIMS`.
+        seed : int
+            The gust realisation.
+
+        Returns
+        -------
+        dict
+            The numbers.
+        """
+        return self.n[(case, world, sim, seed)]
+
+    def has(self, case, world, sim, seed=0) -> bool:
+        """Whether that run was made (the parameters of :meth:`get`).
+
+        Parameters
+        ----------
+        case, world, sim : str
+            The run's case, world and simulation.
+        seed : int
+            The gust realisation.
+
+        Returns
+        -------
+        bool
+            True when it was.
+        """
+        return (case, world, sim, seed) in self.n
+
+    def mean(self, world, sim) -> dict:
+        """The headline runs' numbers, averaged over the seeds.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+        sim : str
+            A key of :data:`SIMS`.
+
+        Returns
+        -------
+        dict
+            The seed means.
+        """
+        values = [self.get("main", world, sim, s) for s in self.seeds]
+        return {k: float(np.mean([v[k] for v in values])) for k in values[0]}
+
+    def span(self, world, sim, key) -> tuple[float, float]:
+        """The smallest and largest of one number over the headline seeds.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+        sim : str
+            A key of :data:`SIMS`.
+        key : str
+            The number.
+
+        Returns
+        -------
+        tuple of float
+            (min, max).
+        """
+        values = [self.get("main", world, sim, s)[key] for s in self.seeds]
+        return min(values), max(values)
+
+    def realisations(self) -> list[tuple[int, dict, dict]]:
+        """(seed, sim 1, sim 3) of the paper world over the headline seeds and the extra
+        realisations.
+
+        Returns
+        -------
+        list of tuple
+            (seed, sim 1's numbers, sim 3's numbers).
+        """
+        cases = [("main", seed) for seed in self.seeds]
+        cases += [("realisations", seed) for seed in REALISATION_SEEDS]
+        return [(seed, self.get(case, "paper", "sim1", seed), self.get(case, "paper", "sim3", seed))
+                for case, seed in cases if self.has(case, "paper", "sim3", seed)]
+
+    def lag(self, seed, fast: bool = False) -> list[tuple[float, dict]]:
+        """(T_lambda, sim 3) of the paper world for one seed, the paper's 0.5 s first; control at
+        10 Hz, or at 1 / FAST_CONTROL_S with ``fast``.
+
+        Parameters
+        ----------
+        seed : int
+            The gust realisation.
+        fast : bool
+            The runs at the fast control rate.
+
+        Returns
+        -------
+        list of tuple
+            (T_lambda in s, sim 3's numbers).
+        """
+        first, prefix = ("rate", "rate lag") if fast else ("main", "lag")
+        pts = [(get_boat(BOAT).sail.time_constant, first)] + [(t, f"{prefix} {t:g}") for t in LAG_SWITCH_S]
+        return [(t, self.get(case, "paper", "sim3", seed)) for t, case in pts
+                if self.has(case, "paper", "sim3", seed)]
+
+    def median_seed(self, world="paper") -> int:
+        """The headline seed of the median sim-1 roll amplitude (the one the figures show).
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+
+        Returns
+        -------
+        int
+            The seed.
+        """
+        amps = [(self.get("main", world, "sim1", s)["roll_amplitude"], s) for s in self.seeds]
+        return sorted(amps)[len(amps) // 2][1]
+
+
+
+@dataclass(frozen=True)
+class SailMoments:
+    """The eased trims of the roll law on this reach (beta_ws = 130 deg, from the lambda
+    tables): where a few degrees of sail angle are most of the roll moment.
+
+    Parameters
+    ----------
+    lam33_deg, lam0_deg : float
+        The sail angles of lambda_33 and lambda_0 (deg).
+    moment33, moment0 : float
+        Their relative roll moments (kg: N m per (m/s)^2).
+    slope : float
+        The moment's change per degree of sail angle between them (kg per deg).
+    """
+
+    lam33_deg: float
+    lam0_deg: float
+    moment33: float
+    moment0: float
+    slope: float
+
+
+def sail_moments() -> SailMoments:
+    """The roll law's eased trims at beta_ws = 130 deg (:class:`SailMoments`).
+
+    Returns
+    -------
+    SailMoments
+        The trims and their moments.
+    """
+    lams, _, moms = build_sail_tables(get_boat(BOAT)).solutions(math.radians(130.0), 1)
+    lam33, lam0, mom33, mom0 = math.degrees(lams[2]), math.degrees(lams[3]), moms[2], moms[3]
+    return SailMoments(lam33, lam0, mom33, mom0, (mom33 - mom0) / abs(lam33 - lam0))
+
+
+def rudder_keel_ratio() -> float:
+    """Roll-moment ratio of rudder to keel at the same angle of attack (linear lift).
+
+    Returns
+    -------
+    float
+        A_r C_L0r h3 / (A_k C_L0k h2).
+    """
+    p = get_boat(BOAT)
+    return (p.rudder.area * lift_slope(p.rudder) * -p.rudder.z) / (p.keel.area * lift_slope(p.keel) * -p.keel.z)
+
+
+@dataclass(frozen=True)
+class Analysis:
+    """The study's numbers.
+
+    Parameters
+    ----------
+    smoke : bool
+        The short pass.
+    runs : RunTable
+        Every run of the job list and its numbers.
+    n_jobs : int
+        How many runs of the job list.
+    tables : dict of str to pandas.DataFrame
+        Fig. 8 by variant (:func:`studies.wille_roll_table1.scenario.fig8_tables`).
+    switch8 : pandas.DataFrame or None
+        Fig. 8 with the sail force switched (full mode).
+    shares : dict
+        world -> the Fig. 3 shares (:func:`shares`).
+    sail_shares : dict or None
+        The paper world's shares with the sail force switched (full mode).
+    optima : dict
+        (variant, U10) -> phi_d of the top surge speed (:func:`optimum`).
+    simulation_seconds : float
+        Wall time of the simulations (s).
+    seconds : float
+        Wall time of the simulations and the analysis (s).
+    trims : SailMoments or None
+        The roll law's eased trims (full mode).
+    rudder_keel : float
+        :func:`rudder_keel_ratio`.
+    froude_speed : float
+        sqrt(g L) of the hull (m/s): a speed over it is the Froude number.
+    """
+
+    smoke: bool
+    runs: RunTable
+    n_jobs: int
+    tables: dict
+    switch8: pd.DataFrame | None
+    shares: dict
+    sail_shares: dict | None
+    optima: dict
+    simulation_seconds: float
+    seconds: float
+    trims: SailMoments | None
+    rudder_keel: float
+    froude_speed: float
+
+
+def _switch8(raw: dict) -> pd.DataFrame:
+    return pd.DataFrame([{"wind_speed": key[2], "heel_desired_deg": key[3],
+                          "mean_surge": res["metrics"]["mean_surge"],
+                          "mean_heel_deg": math.degrees(res["metrics"]["mean_heel"]),
+                          "status": "stopped" if res["metrics"].get("stopped") else "ok"}
+                         for key, res in raw.items() if key[0] == "fig8 sail"])
+
+
+def analyse(results: Results, smoke: bool) -> Analysis:
+    """The study's numbers from its runs.
+
+    Parameters
+    ----------
+    results : sailmujoco.study.Results
+        The runs of :func:`studies.wille_roll_table1.scenario.runs`.
+    smoke : bool
+        The short pass.
+
+    Returns
+    -------
+    Analysis
+        The numbers.
+    """
+    start = time.perf_counter()
+    jobs = jobs_for(smoke)
+    raw = dict(zip([job["key"] for job in jobs], results.jobs[NAME], strict=True))
+    tables = {}
+    for world in WORLDS:
+        tables.update(fig8_tables(world, results.sweeps[f"fig8_sweep_{world}"]))
+    runs = RunTable(raw, (0,) if smoke else SEEDS)
+    return Analysis(
+        smoke=smoke, runs=runs, n_jobs=len(jobs), tables=tables,
+        switch8=None if smoke else _switch8(raw),
+        shares={w: shares(raw[("shares", w, "sim1", 0)]) for w in WORLDS},
+        sail_shares=None if smoke else shares(raw[("shares", "paper", "sail", 0)]),
+        optima={(v, wind): optimum(tables[v], wind) for v in tables for wind in FIG8_WINDS},
+        simulation_seconds=results.seconds, seconds=results.seconds + time.perf_counter() - start,
+        trims=None if smoke else sail_moments(), rudder_keel=rudder_keel_ratio(),
+        froude_speed=math.sqrt(9.81 * get_boat(BOAT).hull.length))
+
+
+def headline(analysis: Analysis) -> dict:
+    """The headline numbers: Table 1's seed means and reductions, the Fig. 3 shares, the Fig. 8
+    optima per world, and (full mode) sim 3 over the gust realisations and the lag switch.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+
+    Returns
+    -------
+    dict
+        ``{world}_{sim}_{quantity}``, ``{world}_reduction_{base}_{sim}``, ``{world}_share_...``,
+        ``{world}_fig8_optimum_deg_{U10}``, ``paper_sim3_...``, ``simulation_wall_time_s`` and
+        ``wall_time_s``.
+    """
+    r, numbers = analysis.runs, {}
+    for w in WORLDS:
+        means = {s: r.mean(w, s) for s in SIMS}
+        for s in SIMS:
+            for k in ("roll_amplitude", "max_roll_rate", "mean_surge", "mean_heel"):
+                numbers[f"{w}_{s}_{k}"] = means[s][k]
+        for base in ("sim1", "sim1_mean"):
+            for s in ("sim2", "sim2_mean", "sim3"):
+                numbers[f"{w}_reduction_{base}_{s}"] = reduction(means[base], means[s])
+        for k in ("sail + restoring", "keel", "rudder + damping"):
+            numbers[f"{w}_share_{k.replace(' + ', '_')}"] = analysis.shares[w][k]
+        for wind in FIG8_WINDS:
+            numbers[f"{w}_fig8_optimum_deg_{wind:g}"] = analysis.optima[(w, wind)]
+    if not analysis.smoke:
+        amps = [n3["roll_amplitude"] for _, _, n3 in r.realisations()]
+        paper3 = PAPER_TABLE1["sim3"]["roll_amplitude"]
+        numbers["paper_sim3_realisations"] = len(amps)
+        numbers["paper_sim3_realisations_min"] = min(amps)
+        numbers["paper_sim3_realisations_within"] = sum(a <= paper3 * (1 + WITHIN) for a in amps)
+        for seed in LAG_SEEDS:
+            for t, n in r.lag(seed)[1:]:
+                numbers[f"paper_sim3_lag_{t:g}_seed{seed}_roll_amplitude"] = n["roll_amplitude"]
+    numbers["simulation_wall_time_s"] = analysis.simulation_seconds
+    numbers["wall_time_s"] = analysis.seconds
+    return numbers
