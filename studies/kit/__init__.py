@@ -82,9 +82,20 @@ class Report:
     def figure(self, path: Path, caption: str) -> None:
         self.parts.append(f"![{caption}]({Path(path).name})\n\n*{caption}*\n")
 
+    def text(self) -> str:
+        """The report as Markdown: the title, then the parts in order."""
+        return f"# {self.title}\n\n" + "\n".join(self.parts)
+
     def write(self, out: Path) -> Path:
+        """Write :meth:`text` to ``out/report.md``; returns its path.
+
+        Parameters
+        ----------
+        out : pathlib.Path
+            The study's folder.
+        """
         path = Path(out) / "report.md"
-        path.write_text(f"# {self.title}\n\n" + "\n".join(self.parts))
+        path.write_text(self.text())
         return path
 
 
