@@ -187,6 +187,29 @@ def test_an_interrupted_study_resumes_only_its_missing_job(monkeypatch, tmp_path
     assert (out / "done.json").exists()
 
 
+def test_video_films_the_declared_scenario_clamped_in_smoke_mode(monkeypatch, tmp_path, capsys):
+    from dataclasses import replace
+
+    from sailmujoco import video
+
+    filmed = []
+
+    def record(out, **scenario):
+        filmed.append(scenario)
+        return SimpleNamespace(path=Path(out) / "study.mp4")
+
+    monkeypatch.setattr(video, "record_study_scenario", record)
+    study = replace(_counting_study(tmp_path / "log", n=1),
+                    video={"boat": "saoud_robot", "task": "speed_trial", "seconds": 60.0})
+    monkeypatch.setattr(study_runner, "studies",
+                        lambda: {"counting": SimpleNamespace(load=lambda: study, module=__name__)})
+    argv = ["study", "counting", "--workers", "1", "--out", str(tmp_path), "--no-progress", "--video"]
+    assert cli.main(argv + ["--smoke"]) == 0 and cli.main(argv) == 0
+    assert filmed == [{"boat": "saoud_robot", "task": "speed_trial", "seconds": 5.0},
+                      {"boat": "saoud_robot", "task": "speed_trial", "seconds": 60.0}]
+    assert f"video: {tmp_path / 'counting' / 'study.mp4'}" in capsys.readouterr().out
+
+
 def test_every_registered_study_is_declared_and_its_title_is_read_without_importing_it():
     found = study_runner.studies()
     assert set(study_runner.STUDY_ORDER) <= set(found)
