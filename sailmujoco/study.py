@@ -49,10 +49,13 @@ class Runs:
         ``name -> ("package.module:function", items)``: ``function(item)`` for every JSON-able
         item, on the engine's workers; stored in ``out/jobs/<name>``, the results (in the order
         of the items) are ``Results.jobs[name]``.
+    label : str
+        Names the progress bar of these runs.
     """
 
     sweeps: tuple[tuple[dict, str], ...] = ()
     jobs: Mapping[str, tuple[str, list]] = field(default_factory=dict)
+    label: str = "simulations"
 
     def __bool__(self) -> bool:
         return bool(self.sweeps) or bool(self.jobs)
@@ -77,7 +80,13 @@ class Results:
     seconds: float = 0.0
 
     def merged(self, other: Results) -> Results:
-        """These results and ``other``'s together (``other`` wins a name held by both)."""
+        """These results and ``other``'s together (``other`` wins a name held by both).
+
+        Parameters
+        ----------
+        other : Results
+            The results of a later pass.
+        """
         return Results({**self.sweeps, **other.sweeps}, {**self.jobs, **other.jobs},
                        self.seconds + other.seconds)
 
@@ -122,7 +131,7 @@ class Study:
 
 
 def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False,
-            progress: bool = True, label: str = "simulations") -> Results:
+            progress: bool = True, label: str | None = None) -> Results:
     """Run ``runs`` on ``engine``, all queued together, stored under ``out``.
 
     Folders and stores are cleared first (fresh results) unless ``resume``: then only what is not
@@ -141,8 +150,8 @@ def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False
         Keep what is stored and run the rest.
     progress : bool
         Show progress on stderr.
-    label : str
-        Names the progress bar.
+    label : str, optional
+        Names the progress bar (``runs.label`` if not given).
     """
     out = Path(out)
     start = time.perf_counter()
@@ -166,7 +175,7 @@ def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False
     if not sweeps and not stores:
         return Results()
     tables, results = sweep.run_many(sweeps, stores, engine=engine, resume=resume,
-                                     progress=progress, label=label)
+                                     progress=progress, label=label or runs.label)
     return Results({folder: table for (_, folder), table in zip(runs.sweeps, tables, strict=True)},
                    dict(zip(runs.jobs, results, strict=True)), time.perf_counter() - start)
 

@@ -1,1 +1,1 @@
-"""Studies: one script per paper figure or table; each writes results/<study>/."""
+"""Studies: one per paper figure or table, each a declared study writing results/<study>/."""

@@ -114,9 +114,12 @@ def test_polar_figures_say_where_the_wind_comes_from(monkeypatch, tmp_path):
 def test_the_saoud_fig3_fig4_figures_pass_the_check(tmp_path):
     from sailmujoco.studies import saoud_fig3_fig4
 
+    from sailmujoco import sweep
+    from sailmujoco.study import run_study
+
     with warnings.catch_warnings():
         warnings.simplefilter("error", figures.FigureWarning)
-        saoud_fig3_fig4.run(tmp_path, smoke=True, progress=False)
+        run_study(saoud_fig3_fig4.STUDY, tmp_path, sweep.Engine("serial"), smoke=True, progress=False)
     assert (tmp_path / "fig3.png").stat().st_size > 10_000
 
 

@@ -1,7 +1,8 @@
 """Studies run on the sweep engine: jobs named by import path, stored like sweep runs (so a
 resume runs only what is missing), one worker pool for ``study all``, and ``study --resume``
-skipping the studies whose report finished."""
+skipping the studies whose report finished. Every registered study is a declared ``Study``."""
 
+import importlib
 import json
 import math
 import os
@@ -12,9 +13,9 @@ from types import SimpleNamespace
 import numpy as np
 import pandas as pd
 import pytest
-from sailmujoco.studies import wille_course_table2
 
-from sailmujoco import cli, sweep
+from sailmujoco import cli, study_runner, sweep
+from sailmujoco.study import Results, Runs, Study, run_study
 
 HERE = f"{Path(__file__).stem}"
 
@@ -92,7 +93,7 @@ def _fake_study(calls: list, interrupt: bool = False):
 def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monkeypatch, tmp_path):
     calls = []
     studies = {"first": _fake_study(calls), "second": _fake_study(calls, interrupt=True)}
-    monkeypatch.setattr(cli, "_studies", lambda: studies)
+    monkeypatch.setattr(study_runner, "studies", lambda: studies)
     argv = ["study", "all", "--smoke", "--out", str(tmp_path), "--no-progress"]
     assert cli.main(argv) == cli.INTERRUPTED  # Ctrl-C in the second study
     assert [c["out"] for c in calls] == ["first", "second"]
@@ -107,7 +108,7 @@ def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monke
     assert [(c["out"], c["resume"]) for c in calls] == [("second", True)]  # the first is kept
     calls.clear()
     assert cli.main(argv + ["--resume"]) == 0 and calls == []  # all finished
-    monkeypatch.setattr(cli, "study_code_digest", lambda: "another code")
+    monkeypatch.setattr(study_runner, "study_code_digest", lambda: "another code")
     assert cli.main(argv + ["--resume"]) == 0  # the code changed: both again (resuming)
     assert [(c["out"], c["resume"]) for c in calls] == [("first", True), ("second", True)]
     calls.clear()
@@ -121,16 +122,57 @@ def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monke
 WALL = re.compile(r"\d+(\.\d+)? s\b|wall|took")
 
 
-def test_an_interrupted_study_resumes_only_its_missing_job(tmp_path, capsys):
-    """A real study in smoke mode: one stored job record and the marker deleted (the run
-    interrupted there); --resume runs that job alone and writes the same report."""
-    argv = ["study", "wille_course_table2", "--smoke", "--workers", "1", "--out", str(tmp_path),
+def _counting_study(log: Path, n: int = 4) -> Study:
+    """A declared study of ``n`` :func:`counted` jobs (each leaves a file in ``log``), whose
+    second pass runs one job more for every job of the first; its report lists the squares."""
+    def runs(smoke):
+        return Runs(jobs={"first": (f"{HERE}:counted", [{"n": i, "log": str(log)} for i in range(n)])})
+
+    def more_runs(results, smoke):
+        items = [{"n": 10 + r["n"], "log": str(log)} for r in results.jobs["first"]]
+        return Runs(jobs={"second": (f"{HERE}:counted", items)})
+
+    def analyse(results, smoke):
+        return [r["square"] for r in results.jobs["first"] + results.jobs["second"]]
+
+    return Study(name="counting", title="Counting jobs", runs=runs, analyse=analyse,
+                 write=lambda squares, out: (Path(out) / "squares.csv").write_text(str(squares)),
+                 report=lambda squares, smoke: f"# squares\n\n{squares}\n",
+                 headline=lambda squares: {"total": float(sum(squares))}, more_runs=more_runs)
+
+
+def test_run_study_runs_both_passes_and_a_resume_runs_nothing_new(tmp_path):
+    log, out = tmp_path / "log", tmp_path / "out"
+    study = _counting_study(log)
+    with sweep.Engine("serial") as engine:
+        headline = run_study(study, out, engine, smoke=True, progress=False)
+        assert headline == {"total": float(sum(n * n for n in [0, 1, 2, 3, 10, 11, 12, 13]))}
+        assert len(list(log.iterdir())) == 8  # both passes
+        assert (out / "report.md").read_text().startswith("# squares")
+        assert (out / "squares.csv").exists()
+        assert run_study(study, out, engine, smoke=True, resume=True, progress=False) == headline
+        assert len(list(log.iterdir())) == 8  # everything was stored: nothing ran again
+        sorted((out / "jobs" / "second" / "runs").glob("*.json"))[0].unlink()
+        assert run_study(study, out, engine, smoke=True, resume=True, progress=False) == headline
+        assert len(list(log.iterdir())) == 9  # only the missing job
+        assert run_study(study, out, engine, smoke=True, progress=False) == headline
+        assert len(list(log.iterdir())) == 17  # no resume: all again
+
+
+def test_an_interrupted_study_resumes_only_its_missing_job(monkeypatch, tmp_path, capsys):
+    """A declared study through the command: one stored job record and the marker deleted (the
+    run interrupted there); --resume runs that job alone and writes the same report."""
+    log = tmp_path / "log"
+    study = _counting_study(log)
+    monkeypatch.setattr(study_runner, "studies",
+                        lambda: {"counting": SimpleNamespace(load=lambda: study, module=__name__)})
+    argv = ["study", "counting", "--smoke", "--workers", "1", "--out", str(tmp_path / "results"),
             "--no-progress"]
     assert cli.main(argv) == 0
-    out = tmp_path / "wille_course_table2"
+    out = tmp_path / "results" / "counting"
     report = (out / "report.md").read_text()
-    records = sorted((out / "jobs" / wille_course_table2.NAME / "runs").glob("*.json"))
-    assert len(records) == len(wille_course_table2.jobs_for(smoke=True)) == 4
+    records = sorted((out / "jobs" / "first" / "runs").glob("*.json"))
+    assert len(records) == 4 and len(list(log.iterdir())) == 8
     before = {p.name: os.stat(p).st_mtime_ns for p in records}
     records[1].unlink()
     (out / "done.json").unlink()
@@ -139,10 +181,57 @@ def test_an_interrupted_study_resumes_only_its_missing_job(tmp_path, capsys):
     assert "(resumed)" in capsys.readouterr().out
     after = {p.name: os.stat(p).st_mtime_ns for p in (records[0].parent).glob("*.json")}
     rewritten = {name for name in after if before.get(name) != after[name]}
-    assert rewritten == {records[1].name}  # only the missing job ran
+    assert rewritten == {records[1].name} and len(list(log.iterdir())) == 9  # only the missing job ran
     same = [line for line in report.splitlines() if not WALL.search(line)]
     assert [line for line in (out / "report.md").read_text().splitlines() if not WALL.search(line)] == same
     assert (out / "done.json").exists()
+
+
+def test_video_films_the_declared_scenario_clamped_in_smoke_mode(monkeypatch, tmp_path, capsys):
+    from dataclasses import replace
+
+    from sailmujoco import video
+
+    filmed = []
+
+    def record(out, **scenario):
+        filmed.append(scenario)
+        return SimpleNamespace(path=Path(out) / "study.mp4")
+
+    monkeypatch.setattr(video, "record_study_scenario", record)
+    study = replace(_counting_study(tmp_path / "log", n=1),
+                    video={"boat": "saoud_robot", "task": "speed_trial", "seconds": 60.0})
+    monkeypatch.setattr(study_runner, "studies",
+                        lambda: {"counting": SimpleNamespace(load=lambda: study, module=__name__)})
+    argv = ["study", "counting", "--workers", "1", "--out", str(tmp_path), "--no-progress", "--video"]
+    assert cli.main(argv + ["--smoke"]) == 0 and cli.main(argv) == 0
+    assert filmed == [{"boat": "saoud_robot", "task": "speed_trial", "seconds": 5.0},
+                      {"boat": "saoud_robot", "task": "speed_trial", "seconds": 60.0}]
+    assert f"video: {tmp_path / 'counting' / 'study.mp4'}" in capsys.readouterr().out
+
+
+def test_every_registered_study_is_declared_and_its_title_is_read_without_importing_it():
+    found = study_runner.studies()
+    assert set(study_runner.STUDY_ORDER) <= set(found)
+    titles = study_runner.study_titles()
+    for name, entry in found.items():
+        study = entry.load()
+        if not isinstance(study, Study):  # a study still written as one script: its run()
+            assert callable(study), name
+            continue
+        assert study.name == name and study.title and titles[name] == study.title
+        for part in ("runs", "analyse", "write", "report", "headline"):
+            assert callable(getattr(study, part)), (name, part)
+        assert study.more_runs is None or callable(study.more_runs)
+        assert study.video is None or isinstance(study.video.get("boat"), str)
+        for smoke in (True, False):
+            runs = study.runs(smoke)
+            assert isinstance(runs, Runs)
+            for function, items in runs.jobs.values():
+                module, _, attribute = function.partition(":")
+                assert callable(getattr(importlib.import_module(module), attribute)), function
+                assert isinstance(items, list)
+    assert isinstance(Results().merged(Results(jobs={"a": [1]})), Results)
 
 
 TINY = {"name": "tiny", "boat": "saoud_robot", "task": "heading_hold", "world": "mujoco",

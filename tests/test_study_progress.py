@@ -4,7 +4,7 @@ took; where output is not a terminal, progress is plain lines, never carriage re
 import time
 from types import SimpleNamespace
 
-from sailmujoco import cli, sweep
+from sailmujoco import cli, study_runner, sweep
 
 
 def _fake_study(seconds):
@@ -15,7 +15,8 @@ def _fake_study(seconds):
 
 
 def test_study_all_prints_progress_eta_and_a_timing_table(monkeypatch, tmp_path, capsys):
-    monkeypatch.setattr(cli, "_studies", lambda: {"fast_a": _fake_study(0.0), "fast_b": _fake_study(0.05)})
+    monkeypatch.setattr(study_runner, "studies",
+                        lambda: {"fast_a": _fake_study(0.0), "fast_b": _fake_study(0.05)})
     assert cli.main(["study", "all", "--smoke", "--out", str(tmp_path)]) == 0
     out = capsys.readouterr().out
     lines = out.splitlines()

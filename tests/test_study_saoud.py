@@ -6,13 +6,24 @@ import math
 import pandas as pd
 import pytest
 from sailmujoco.studies import saoud_fig6, saoud_fig7
+from sailmujoco.studies.kit import saoud
+from sailmujoco.studies.saoud_fig7 import scenario as fig7_scenario
+
+from sailmujoco import sweep
+from sailmujoco.study import run_study
+
+
+def smoke(study, out) -> dict:
+    """A study's smoke pass in this process; its headline numbers."""
+    with sweep.Engine("serial") as engine:
+        return run_study(study, out, engine, smoke=True, progress=False)
 
 
 def test_wind_at_the_sail_is_four_metres_per_second():
     from sailmujoco.forces.wind import log_profile
     from sailmujoco.params import get_boat
 
-    u10 = saoud_fig6.wind_speed_10()
+    u10 = saoud.wind_speed_10()
     ce = get_boat("saoud_robot", l_phi=0.1).sail.ce_height
     assert float(log_profile(ce, u10)) == pytest.approx(4.0, rel=1e-12)
     assert 5.5 < u10 < 6.2  # the log profile loses about a third between 10 m and 0.86 m
@@ -22,15 +33,15 @@ def test_fig7_angle_convention_round_trips_and_matches_speed_trial():
     from sailmujoco.tasks.sailing import SpeedTrial
 
     for angle in (0.0, 10.0, 45.0, 80.0, 135.0, 180.0):
-        wind_from = saoud_fig7.wind_from_deg(angle)
-        assert saoud_fig7.angle_from_wind_from(wind_from) == pytest.approx(angle)
+        wind_from = fig7_scenario.wind_from_deg(angle)
+        assert fig7_scenario.angle_from_wind_from(wind_from) == pytest.approx(angle)
         # the speed_trial task (Saoud Fig. 6) converts the same way on heading 0
         assert math.radians(wind_from) == pytest.approx(SpeedTrial.wind_from(angle))
-    assert saoud_fig7.wind_from_deg(0.0) == 180.0  # blowing to the bow = from astern: dead run
+    assert fig7_scenario.wind_from_deg(0.0) == 180.0  # blowing to the bow = from astern: dead run
 
 
 def test_fig6_smoke(tmp_path):
-    out = saoud_fig6.run(tmp_path, smoke=True, progress=False)
+    out = smoke(saoud_fig6.STUDY, tmp_path)
     for world in ("paper", "mujoco"):
         for angle in (10, 45, 80):
             for law in ("S", "Bm"):
@@ -47,8 +58,7 @@ def test_fig6_smoke(tmp_path):
     # ... and the heel -> yaw coupling switched into the paper world makes it round up
     assert not out["check_held_paper_paper_model=rigid_S_45"]
     report = (tmp_path / "report.md").read_text()
-    # Saoud eq. 4 in the 6-DOF world: the report says what its run did. Up to 0bcfa2b it held
-    # heading only through the yaw part of a restoring moment taken about heeled body axes.
+    # Saoud eq. 4 in the 6-DOF world: the report says what its run did
     held = all(out[f"check_held_mujoco_hydrostatics=paper_{law}_{a}"] for law in ("S", "Bm")
                for a in (10, 45, 80))
     assert ("sails the whole trial on heading" in report) == held
@@ -60,7 +70,7 @@ def test_fig6_smoke(tmp_path):
 
 
 def test_fig7_smoke(tmp_path):
-    out = saoud_fig7.run(tmp_path, smoke=True, progress=False)
+    out = smoke(saoud_fig7.STUDY, tmp_path)
     key = "paper_lphi0.1"
     assert out[f"sailable_angles_{key}"] == 2
     # S within 10 % of vel_max, and vel_max bounds S (to the smoke grid's resolution)

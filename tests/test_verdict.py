@@ -5,8 +5,7 @@ import math
 
 import numpy as np
 import pytest
-from sailmujoco.studies.kit import verdict
-from sailmujoco.studies.kit import Report
+from sailmujoco.studies.kit import Report, verdict
 
 
 def test_relative_difference_is_the_change_in_size_for_same_signed_numbers():
@@ -116,7 +115,10 @@ def test_combined_holds_only_when_every_criterion_holds():
 def test_saoud_fig4_report_says_binds_only_where_the_limit_is_reached(tmp_path):
     from sailmujoco.studies import saoud_fig3_fig4
 
-    headline = saoud_fig3_fig4.run(tmp_path, smoke=True, progress=False)
+    from sailmujoco import sweep
+    from sailmujoco.study import run_study
+
+    headline = run_study(saoud_fig3_fig4.STUDY, tmp_path, sweep.Engine("serial"), smoke=True, progress=False)
     lines = (tmp_path / "report.md").read_text().splitlines()
     for limit in (45, 20, 10):
         (row,) = [line for line in lines if f"with φ_max = {limit}° (deg)" in line]

@@ -1,0 +1,19 @@
+"""Saoud et al. (2015) Fig. 6, declared: speed and roll over time, optimal sail S against Briere's Bm.
+
+:mod:`.scenario` holds the speed trials (what runs), :mod:`.analysis` the segment means and
+ratios, :mod:`.figure` the figures and CSV data, :mod:`.report` the report's prose.
+"""
+
+from sailmujoco.study import Study
+
+from .analysis import analyse, headline
+from .figure import write
+from .report import report
+from .scenario import NAME, TITLE, runs
+
+# the scenario `sailmujoco study saoud_fig6 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "speed_trial", "controller": "saoud", "seconds": 60.0,
+         "boat_options": {"l_phi": 1.0}}
+
+STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
+              headline=headline, video=VIDEO)

@@ -1,0 +1,21 @@
+"""Saoud et al. (2015) Fig. 7, declared: maximum (steady) velocity against the relative wind
+angle, for the optimal sail S, Briere's Bm and the brute-force vel_max.
+
+:mod:`.scenario` holds the runs (the fixed-sail grid, refined in a second pass around each
+best sail, and the laws' runs), :mod:`.analysis` the per-angle table and ratios,
+:mod:`.figure` the figure and CSV data, :mod:`.report` the report's prose.
+"""
+
+from sailmujoco.study import Study
+
+from .analysis import analyse, headline
+from .figure import write
+from .report import report
+from .scenario import NAME, TITLE, more_runs, runs
+
+# the scenario `sailmujoco study saoud_fig7 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "heading_hold", "controller": "saoud", "seconds": 40.0,
+         "wind_speed": 5.82, "wind_from_deg": 100.0, "gusts": False, "wander": False}
+
+STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
+              headline=headline, more_runs=more_runs, video=VIDEO)
