@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from . import sweep
+from .arguments import out_folder
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
@@ -55,7 +56,7 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
     spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
                       options=options)
     # a polar re-run with other winds or duration goes into the same folder (the table keeps
-    # this run's rows only), as before the sweep library refused other specs by default
+    # this run's rows only): the sweep may replace another spec there (exclusive=False)
     table = sweep.run(spec, Path(out) / f"sweep-{controller}", scheduler=scheduler, workers=workers,
                       progress=progress, exclusive=False)
     table = table.rename(columns={"task.wind_speed": "tws", "task.wind_from_deg": "twa",
@@ -212,3 +213,59 @@ def comparison_markdown(table, summary, command: str = "", settings: str = "") -
 
 def _cell(value, digits: int) -> str:
     return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
+
+
+def run_cli(args) -> int:
+    """The ``polar`` sub-command: the polar of a boat and sail law (and comparisons), PNG + CSV.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``boat``, ``controller``, ``compare`` (comma separated, or None), ``world``, ``tws``,
+        ``twa``, ``duration``, ``out``, ``scheduler``, ``workers``, ``no_progress``.
+
+    Returns
+    -------
+    int
+        0.
+    """
+    from .params import get_boat
+
+    get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    out = out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
+    names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
+    frames = {}
+    for name in names:
+        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
+              f"({args.world}, {args.duration:g} s per point)")
+        frames[name] = compute(args.boat, name, out, tws=args.tws, twa=args.twa,
+                               world=args.world, duration=args.duration,
+                               scheduler=args.scheduler, workers=args.workers,
+                               progress=not args.no_progress)
+        frames[name].to_csv(out / f"polar_{name}.csv", index=False)
+    main_frame = frames[args.controller]
+    png = out / f"polar_{args.controller}.png"
+    plot_polar(main_frame, png, f"{args.boat}, {args.controller} ({args.world})")
+    for tws, best in best_vmg(main_frame).items():
+        (au, vu), (ad, vd) = best["upwind"], best["downwind"]
+        print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
+              f"downwind {vd:.2f} m/s at {ad:g} deg")
+    print(f"wrote {png} and {out / f'polar_{args.controller}.csv'}")
+    if len(frames) > 1:
+        _write_comparison(args, frames, out)
+    return 0
+
+
+def _write_comparison(args, frames: dict, out: Path) -> None:
+    """compare.png, compare.csv and compare.md of the ``--compare`` sail laws."""
+    compare = out / "compare.png"
+    plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
+    table = comparison_table(frames)
+    table.to_csv(out / "compare.csv", index=False)
+    command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
+    settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
+                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.duration:g} s per point")
+    summary = ratio_summary(table)
+    (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
+                                    encoding="utf-8")
+    print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")

@@ -21,16 +21,26 @@ command prints one line that points to ``sailmujoco video`` and exits with statu
 from __future__ import annotations
 
 import argparse
-import ctypes
-import ctypes.util
 import math
 import os
 import sys
 import threading
 import time
-from pathlib import Path
+from contextlib import nullcontext
 
 import numpy as np
+
+from .arguments import POSITIVE_SECONDS, SEED, check_settings, number, setting
+from .screenshot import screenshot
+from .video import (
+    SceneRenderer,
+    Snapshot,
+    frames_between_substeps,
+    scene_of,
+    snapshot_observation,
+    snapshot_physics,
+    yaw_of,
+)
 
 KEY_SPACE, KEY_RIGHT = 32, 262  # GLFW key codes
 KEYS = """keys and mouse:
@@ -171,96 +181,87 @@ class RealTime:
         self._last = end
 
 
-def _x11_window_rect(title_prefix: str) -> tuple[int, int, int, int] | None:
-    """(x, y, width, height) on the X screen of the first window whose name starts with
-    ``title_prefix``, found through Xlib; None where Xlib or the window cannot be found."""
-    name = ctypes.util.find_library("X11")
-    if not name:
-        return None
-    x = ctypes.CDLL(name)
-    x.XOpenDisplay.restype = ctypes.c_void_p
-    x.XOpenDisplay.argtypes = [ctypes.c_char_p]
-    x.XDefaultRootWindow.restype = ctypes.c_ulong
-    x.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
-    window_p = ctypes.POINTER(ctypes.c_ulong)
-    x.XQueryTree.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p, window_p,
-                             ctypes.POINTER(window_p), ctypes.POINTER(ctypes.c_uint)]
-    x.XFetchName.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.POINTER(ctypes.c_char_p)]
-    x.XGetGeometry.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p] + \
-        [ctypes.POINTER(ctypes.c_int)] * 2 + [ctypes.POINTER(ctypes.c_uint)] * 4
-    x.XTranslateCoordinates.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_ulong,
-                                        ctypes.c_int, ctypes.c_int, ctypes.POINTER(ctypes.c_int),
-                                        ctypes.POINTER(ctypes.c_int), window_p]
-    x.XFree.argtypes = [ctypes.c_void_p]
-    x.XCloseDisplay.argtypes = [ctypes.c_void_p]
-    display = x.XOpenDisplay(None)
-    if not display:
-        return None
-    root = x.XDefaultRootWindow(display)
-
-    def find(window: int, depth: int = 0):
-        title = ctypes.c_char_p()
-        if x.XFetchName(display, window, ctypes.byref(title)) and title.value is not None:
-            found = title.value.decode(errors="replace").startswith(title_prefix)
-            x.XFree(title)
-            if found:
-                return window
-        if depth > 3:
-            return None
-        root_r, parent, children, count = ctypes.c_ulong(), ctypes.c_ulong(), window_p(), ctypes.c_uint()
-        if not x.XQueryTree(display, window, ctypes.byref(root_r), ctypes.byref(parent),
-                            ctypes.byref(children), ctypes.byref(count)):
-            return None
-        try:
-            for i in range(count.value):
-                hit = find(children[i], depth + 1)
-                if hit is not None:
-                    return hit
-        finally:
-            if children:
-                x.XFree(children)
-        return None
-
-    try:
-        window = find(root)
-        if window is None:
-            return None
-        ints = [ctypes.c_int() for _ in range(2)]
-        uints = [ctypes.c_uint() for _ in range(4)]
-        root_r = ctypes.c_ulong()
-        x.XGetGeometry(display, window, ctypes.byref(root_r), *(ctypes.byref(v) for v in ints),
-                       *(ctypes.byref(v) for v in uints))
-        left, top, child = ctypes.c_int(), ctypes.c_int(), ctypes.c_ulong()
-        x.XTranslateCoordinates(display, window, root, 0, 0, ctypes.byref(left), ctypes.byref(top),
-                                ctypes.byref(child))
-        return left.value, top.value, uints[0].value, uints[1].value
-    finally:
-        x.XCloseDisplay(display)
-
-
-def screenshot(path, title_prefix: str = "MuJoCo") -> str:
-    """Save the viewer window as it is on the X screen to ``path`` (PNG); returns what was saved
-    (the window, or the whole screen where the window cannot be found)."""
-    from PIL import ImageGrab
-
-    image = ImageGrab.grab(xdisplay=os.environ.get("DISPLAY"))
-    rect = _x11_window_rect(title_prefix)
-    what = "the whole screen"
-    if rect is not None:
-        left, top, width, height = rect
-        box = (max(left, 0), max(top, 0), min(left + width, image.width), min(top + height, image.height))
-        if box[2] > box[0] and box[3] > box[1]:
-            image = image.crop(box)
-            what = f"the window ({box[2] - box[0]} x {box[3] - box[1]} px)"
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    image.convert("RGB").save(path)
-    return what
-
-
 def _ascii(text: str) -> str:
     for old, new in ASCII.items():
         text = text.replace(old, new)
     return text
+
+
+class Window:
+    """MuJoCo's viewer on the display model: the videos' follow camera, arrows and text.
+
+    Parameters
+    ----------
+    scene : SceneRenderer
+        The display model (without an offscreen context).
+    snap : Snapshot
+        The first state shown: the camera starts behind it.
+    keys : Keys
+        Reads the window's keys.
+    forces, overlay : bool
+        Force arrows (and their legend); text.
+    """
+
+    def __init__(self, scene: SceneRenderer, snap: Snapshot, keys: Keys, *, forces: bool, overlay: bool):
+        import mujoco
+        import mujoco.viewer
+
+        before = set(threading.enumerate())
+        self.viewer = viewer = mujoco.viewer.launch_passive(
+            scene.model, scene.data, key_callback=keys.press, show_left_ui=False, show_right_ui=False)
+        self._threads = set(threading.enumerate()) - before  # the viewer's window and render loop
+        self.scene, self.overlay = scene, overlay
+        self.legend = ("arrows: " + ", ".join(f"{name} {colour}" for name, colour in
+                                              (("sail", "red"), ("keel", "green"), ("rudder", "orange"))
+                                              if forces) + (", " if forces else "")
+                       + "wind cyan (where it blows to)")
+        with viewer.lock():  # the videos' follow camera; it moves with the boat, the mouse turns it
+            cam = viewer.cam
+            cam.type = mujoco.mjtCamera.mjCAMERA_FREE
+            cam.lookat[:] = snap.position + np.array([0.0, 0.0, 0.45 * scene.h])
+            cam.distance = scene.follow_distance
+            cam.azimuth = math.degrees(yaw_of(snap.rotation) + scene.follow_bearing + math.pi)
+            cam.elevation = scene.follow_elevation
+            viewer.opt.sitegroup[:] = 0
+        self.texts = LatestTexts(viewer)
+        self._followed = snap.position.copy()
+
+    def show(self, snap: Snapshot, note: str | None = None) -> None:
+        """Pose the boat as ``snap``, move the camera with it, redraw arrows and text.
+
+        Parameters
+        ----------
+        snap : Snapshot
+            The state shown.
+        note : str, optional
+            An extra last line of text.
+        """
+        import mujoco
+
+        viewer, scene = self.viewer, self.scene
+        with viewer.lock():
+            scene.pose(snap)
+            viewer.cam.lookat[:2] += snap.position[:2] - self._followed[:2]
+            self._followed = snap.position.copy()
+            user = viewer.user_scn
+            user.ngeom = 0
+            scene.decorate(user, snap)
+        if self.overlay:
+            lines = scene.text_lines(snap)
+            if note:
+                lines.append(note)
+            self.texts.put([(mujoco.mjtFontScale.mjFONTSCALE_150, mujoco.mjtGridPos.mjGRID_TOPLEFT,
+                             _ascii("\n".join(lines)), ""),
+                            (mujoco.mjtFontScale.mjFONTSCALE_100, mujoco.mjtGridPos.mjGRID_BOTTOMLEFT,
+                             self.legend, "")])
+        viewer.sync()
+
+    def close(self) -> None:
+        """Stop the text thread and close the window (gone before Python and GLFW shut down)."""
+        self.texts.close()
+        self.viewer.close()
+        for thread in self._threads:
+            thread.join(5.0)
 
 
 def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
@@ -269,86 +270,85 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
           controller_options: dict | None = None, **options) -> dict:
     """Run ``task`` on ``boat`` under ``controller`` in MuJoCo's viewer, at real time.
 
-    ``seconds`` stops the run (and closes the window) after that much simulated time; without
-    it the task runs to its end and the window stays open, showing the last state, until it
-    is closed. ``screenshot_path`` saves the window as a PNG at the end. ``options`` go to
-    :func:`sailmujoco.suite.load`. Returns ``sim_time`` (s), ``wall_time`` (s spent running,
-    pauses excluded), ``real_time_factor``, ``distance`` (m from the start), ``stopped`` (the
-    stop reason of an early end, or None) and ``screenshot`` (what was saved).
+    Parameters
+    ----------
+    boat, task, world : str
+        As :func:`sailmujoco.suite.load`.
+    controller : str
+        A registered controller (:func:`sailmujoco.sweep.make_controller`).
+    seconds : float, optional
+        Stop the run (and close the window) after this much simulated time; without it the
+        task runs to its end and the window stays open, showing the last state, until it is
+        closed.
+    seed : int
+        Seeds the task and the controller.
+    fps : float
+        Frames per simulated second.
+    forces, overlay : bool
+        Force arrows; text.
+    paused : bool
+        Start paused (space runs).
+    screenshot_path : path, optional
+        Save the window as a PNG at the end.
+    controller_options : dict, optional
+        Keywords of the controller's factory.
+    **options
+        Passed to :func:`sailmujoco.suite.load`.
 
-    Raises :class:`NoDisplay` where no window can be opened (before loading anything).
+    Returns
+    -------
+    dict
+        ``sim_time`` (s), ``wall_time`` (s spent running, pauses excluded),
+        ``real_time_factor``, ``distance`` (m from the start), ``stopped`` (the stop reason of
+        an early end, or None) and ``screenshot`` (what was saved).
+
+    Raises
+    ------
+    NoDisplay
+        No window can be opened (raised before anything is loaded).
     """
     if not (math.isfinite(fps) and fps > 0):
         raise ValueError(f"fps must be a number > 0, got {fps!r}")
     open_display()
-    import mujoco
-    import mujoco.viewer
-
     from .suite import load
     from .sweep import make_controller
-    from .video import (
-        SceneRenderer,
-        _frames_between_substeps,
-        _no_hook,
-        _yaw_of,
-        scene_of,
-        snapshot_observation,
-        snapshot_physics,
-    )
 
     env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
     policy = make_controller(controller, env, **(controller_options or {}))
     if hasattr(policy, "reset"):
         policy.reset(seed)
-    physics = env.physics
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
                           labels=f"{boat} · {task} · {controller} ({world})", offscreen=False)
     timestep = env.reset()
-    snap = snapshot_physics(physics) if mujoco_world else snapshot_observation(timestep.observation)
+    snap = snapshot_physics(env.physics) if mujoco_world else snapshot_observation(timestep.observation)
     start = snap.position.copy()
     scene.pose(snap)
 
     keys = Keys(paused)
-    before = set(threading.enumerate())
-    viewer = mujoco.viewer.launch_passive(scene.model, scene.data, key_callback=keys.press,
-                                          show_left_ui=False, show_right_ui=False)
-    window_threads = set(threading.enumerate()) - before  # the viewer's window and render loop
+    window = Window(scene, snap, keys, forces=forces, overlay=overlay)
     clock = RealTime()
-    legend = ("arrows: " + ", ".join(f"{name} {colour}" for name, colour in
-                                     (("sail", "red"), ("keel", "green"), ("rudder", "orange"))
-                                     if forces) + (", " if forces else "")
-              + "wind cyan (where it blows to)")
-    with viewer.lock():  # the videos' follow camera; it moves with the boat, the mouse turns it
-        cam = viewer.cam
-        cam.type = mujoco.mjtCamera.mjCAMERA_FREE
-        cam.lookat[:] = snap.position + np.array([0.0, 0.0, 0.45 * scene.h])
-        cam.distance = scene.follow_distance
-        cam.azimuth = math.degrees(_yaw_of(snap.rotation) + scene.follow_bearing + math.pi)
-        cam.elevation = scene.follow_elevation
-        viewer.opt.sitegroup[:] = 0
-    texts = LatestTexts(viewer)
-    followed = {"position": snap.position.copy()}
+    try:
+        snap, interrupted = _sail(env, policy, timestep, snap, window, keys, clock, fps, mujoco_world)
+        stopped = env.task.metrics().get("stopped") or ("interrupted" if interrupted else None)
+        what = _end(window, snap, stopped, seconds, screenshot_path, interrupted)
+    finally:
+        window.close()
+    sim_time = float(snap.time)
+    return {"sim_time": sim_time, "wall_time": clock.running_wall,
+            "real_time_factor": sim_time / clock.running_wall if clock.running_wall > 0 else float("nan"),
+            "distance": float(np.linalg.norm(snap.position[:2] - start[:2])), "stopped": stopped,
+            "screenshot": what}
 
-    def show(snap, note: str | None = None) -> None:
-        with viewer.lock():
-            scene.pose(snap)
-            viewer.cam.lookat[:2] += snap.position[:2] - followed["position"][:2]
-            followed["position"] = snap.position.copy()
-            user = viewer.user_scn
-            user.ngeom = 0
-            scene.decorate(user, snap)
-        if overlay:
-            lines = scene.text_lines(snap)
-            if note:
-                lines.append(note)
-            lines_and_legend = [(mujoco.mjtFontScale.mjFONTSCALE_150, mujoco.mjtGridPos.mjGRID_TOPLEFT,
-                      _ascii("\n".join(lines)), ""),
-                     (mujoco.mjtFontScale.mjFONTSCALE_100, mujoco.mjtGridPos.mjGRID_BOTTOMLEFT,
-                      legend, "")]
-            texts.put(lines_and_legend)
-        viewer.sync()
 
+PAUSE_NOTE = "PAUSED: space runs, right arrow steps"
+
+
+def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clock: RealTime,
+          fps: float, mujoco_world: bool) -> tuple[Snapshot, bool]:
+    """Run the episode in the window at real time; returns the last state and whether Ctrl+C
+    ended it. In the MuJoCo world the frames are drawn between the physics sub-steps."""
+    physics = env.physics
     frame = {"next": 0.0}
 
     def due() -> float:
@@ -357,63 +357,55 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     def emit() -> None:
         now = snapshot_physics(physics)
         frame["next"] = (math.floor(now.time * fps + 0.5) + 1) / fps
-        show(now)
+        window.show(now)
         clock.wait(now.time)
 
-    hook = _frames_between_substeps(physics, emit, due) if mujoco_world else _no_hook()
-    pause_note = "PAUSED: space runs, right arrow steps"
+    hook = frames_between_substeps(physics, emit, due) if mujoco_world else nullcontext()
     interrupted = False
+    window.show(snap)
+    with hook:
+        try:
+            while window.viewer.is_running() and not timestep.last():
+                if not keys.may_step():
+                    window.show(snap, PAUSE_NOTE)
+                    clock.restart()
+                    time.sleep(1.0 / fps)
+                    continue
+                timestep = env.step(policy(timestep))
+                snap = snapshot_physics(physics) if mujoco_world else \
+                    snapshot_observation(timestep.observation)
+                if not mujoco_world:  # sample and hold at the control steps
+                    window.show(snap)
+                    clock.wait(snap.time)
+        except KeyboardInterrupt:  # Ctrl+C in the terminal: stop as if the window closed
+            interrupted = True
+    return snap, interrupted
+
+
+def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, interrupted: bool):
+    """The last state with its note, the screenshot, and (without ``seconds``) the window held
+    open until it is closed; returns what the screenshot saved, or None."""
+    viewer = window.viewer
+    running = viewer.is_running() and not interrupted
+    if running:
+        window.show(snap, f"stopped at t = {snap.time:.1f} s: {stopped}" if stopped else
+                    ("finished: close the window" if seconds is None else None))
     what = None
-    try:
-        show(snap)
-        with hook:
-            try:
-                while viewer.is_running() and not timestep.last():
-                    if not keys.may_step():
-                        show(snap, pause_note)
-                        clock.restart()
-                        time.sleep(1.0 / fps)
-                        continue
-                    timestep = env.step(policy(timestep))
-                    snap = snapshot_physics(physics) if mujoco_world else \
-                        snapshot_observation(timestep.observation)
-                    if not mujoco_world:  # sample and hold at the control steps
-                        show(snap)
-                        clock.wait(snap.time)
-            except KeyboardInterrupt:  # Ctrl+C in the terminal: stop as if the window closed
-                interrupted = True
-        stopped = env.task.metrics().get("stopped") or ("interrupted" if interrupted else None)
-        running = viewer.is_running() and not interrupted
-        if running:
-            show(snap, f"stopped at t = {snap.time:.1f} s: {stopped}" if stopped else
-                 ("finished: close the window" if seconds is None else None))
-        if screenshot_path is not None and running:
-            time.sleep(1.0)  # let the viewer draw the last frame and its text
-            what = screenshot(screenshot_path)
-        if seconds is None and running:
-            try:
-                while viewer.is_running():  # hold the last state until the window is closed
-                    time.sleep(0.05)
-            except KeyboardInterrupt:
-                pass
-    finally:
-        texts.close()
-        viewer.close()
-        for thread in window_threads:  # the window is gone before Python (and GLFW) shut down
-            thread.join(5.0)
-    sim_time = float(snap.time)
-    return {"sim_time": sim_time, "wall_time": clock.running_wall,
-            "real_time_factor": sim_time / clock.running_wall if clock.running_wall > 0 else float("nan"),
-            "distance": float(np.linalg.norm(snap.position[:2] - start[:2])), "stopped": stopped,
-            "screenshot": what}
+    if screenshot_path is not None and running:
+        time.sleep(1.0)  # let the viewer draw the last frame and its text
+        what = screenshot(screenshot_path)
+    if seconds is None and running:
+        try:
+            while viewer.is_running():  # hold the last state until the window is closed
+                time.sleep(0.05)
+        except KeyboardInterrupt:
+            pass
+    return what
 
 
 # ----------------------------------------------------------------------------- command line
 def add_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view`` to the ``sailmujoco`` sub-commands; returns its parser."""
-    from .cli import POSITIVE_SECONDS, SEED, _number
-    from .video import _setting
-
     parser = subparsers.add_parser(
         "view", help="watch a task run in MuJoCo's interactive viewer (needs a display)",
         formatter_class=argparse.RawDescriptionHelpFormatter, epilog=KEYS,
@@ -429,7 +421,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--seconds", type=POSITIVE_SECONDS,
                         help="stop after this much simulated time and close the window (default: run "
                              "the task to its end and keep the window open until it is closed)")
-    parser.add_argument("--fps", type=_number(0.0, low_open=True, unit="frames per simulated second"),
+    parser.add_argument("--fps", type=number(0.0, low_open=True, unit="frames per simulated second"),
                         default=30.0, help="frames per simulated second (default 30)")
     parser.add_argument("--paused", action="store_true", help="start paused (space runs)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
@@ -437,7 +429,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--seed", type=SEED, default=0)
     parser.add_argument("--screenshot", metavar="PATH",
                         help="at the end, save the window as this PNG (X11 displays)")
-    parser.add_argument("--set", type=_setting, action="append", default=[], metavar="KEY=VALUE",
+    parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper (repeatable)")
     parser.set_defaults(func=run_cli)
     return parser
@@ -446,7 +438,6 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 def run_cli(args) -> int:
     """The ``view`` sub-command."""
     from .sweep import validate
-    from .video import check_settings
 
     check_settings(args.set)
 
