@@ -28,7 +28,31 @@ STEADY_WINDOW_S = 20.0  # s, a point's speed is the mean over the last this many
 def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
                duration: float = 60.0, steady_window: float = STEADY_WINDOW_S, controller_grid=None,
                options: dict | None = None) -> dict:
-    """The sweep description of one polar (TWS x TWA, heading north)."""
+    """The sweep description of one polar (TWS x TWA, heading north).
+
+    Parameters
+    ----------
+    boat, controller : str
+        The boat and the registered controller.
+    tws, twa : iterable of float
+        True wind speeds (m/s) and true wind angles (deg, off the starboard bow); every pair is
+        one run.
+    world : {"mujoco", "paper"}
+        The simulation.
+    duration : float
+        Simulated seconds per point.
+    steady_window : float
+        A point's speed is the mean over the last this many seconds.
+    controller_grid : dict, optional
+        Controller options swept at every point (``{"controller.sail_deg": [...]}``).
+    options : dict, optional
+        More sweep options (``"task.x"`` / ``"env.x"`` keys).
+
+    Returns
+    -------
+    dict
+        The sweep description (:mod:`sailmujoco.sweep`).
+    """
     tws_axis, twa_axis = [], []
     for s in tws:
         for a in twa:
@@ -50,7 +74,37 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
 def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
             world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
             progress: bool = True, options: dict | None = None):
-    """Run a polar; returns a DataFrame with columns tws, twa, speed, heel (and status)."""
+    """Run a polar on the sweep engine.
+
+    Parameters
+    ----------
+    boat : str
+        The boat.
+    controller : str
+        A registered controller, or ``"best"``: every fixed sail angle of :data:`BEST_SAIL_DEG`,
+        the fastest kept point by point.
+    out : path
+        Folder; the sweep writes into ``<out>/sweep-<controller>``.
+    tws, twa : iterable of float
+        True wind speeds (m/s) and angles (deg).
+    world : {"mujoco", "paper"}
+        The simulation.
+    duration : float
+        Simulated seconds per point.
+    scheduler : str, optional
+        Dask scheduler address, or ``"serial"``; default an embedded cluster.
+    workers : int, optional
+        Worker processes of the embedded cluster.
+    progress : bool
+        Show a progress bar.
+    options : dict, optional
+        More sweep options.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns tws, twa, speed, heel (and sail_deg for ``best``), the runs that finished.
+    """
     grid = {"controller.sail_deg": list(BEST_SAIL_DEG)} if controller == "best" else None
     name = "fixed_sail" if controller == "best" else controller
     spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
@@ -70,7 +124,18 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
 
 
 def best_vmg(frame):
-    """Per TWS: (twa, vmg) of the best upwind and downwind velocity made good."""
+    """Per TWS: (twa, vmg) of the best upwind and downwind velocity made good.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        A polar (:func:`compute`).
+
+    Returns
+    -------
+    dict
+        TWS -> ``{"upwind": (twa_deg, vmg), "downwind": (twa_deg, vmg)}`` (m/s).
+    """
     out = {}
     for tws, group in frame.groupby("tws"):
         twa = np.radians(group["twa"].to_numpy())
@@ -84,7 +149,17 @@ def best_vmg(frame):
 
 
 def plot_polar(frame, path, title: str) -> None:
-    """The classic polar: speed against TWA, one curve per TWS, best VMG marked."""
+    """The classic polar: speed against TWA, one curve per TWS, best VMG marked.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        A polar (:func:`compute`).
+    path : path
+        The PNG written.
+    title : str
+        The figure's title.
+    """
     from . import figures
 
     plt = figures.pyplot()
@@ -113,7 +188,17 @@ def plot_polar(frame, path, title: str) -> None:
 
 
 def plot_comparison(frames: dict, path, title: str) -> None:
-    """Speed against TWA for several sail laws (one panel per TWS)."""
+    """Speed against TWA for several sail laws (one panel per TWS).
+
+    Parameters
+    ----------
+    frames : dict
+        Controller name -> its polar (:func:`compute`).
+    path : path
+        The PNG written.
+    title : str
+        The figure's title.
+    """
     from . import figures
 
     plt = figures.pyplot()
@@ -140,10 +225,21 @@ TWA_BANDS = (("close-hauled", 0.0, 60.0), ("close reach", 60.0, 90.0), ("beam to
 
 
 def comparison_table(frames: dict):
-    """One row per (TWS, TWA): each controller's steady speed [m/s] and, when ``best`` is among
-    ``frames``, each other controller's ratio to it (``<name>/best``: speed / best speed, a plain
-    ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller did not finish is
-    missing (NaN) in its columns."""
+    """One row per (TWS, TWA): each controller's steady speed [m/s] and the ratios to ``best``.
+
+    When ``best`` is among ``frames``, each other controller's ratio to it (``<name>/best``: speed /
+    best speed, a plain ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller
+    did not finish is missing (NaN) in its columns.
+
+    Parameters
+    ----------
+    frames : dict
+        Controller name -> its polar (:func:`compute`).
+
+    Returns
+    -------
+    pandas.DataFrame
+    """
     table = None
     for name, frame in frames.items():
         part = frame[["tws", "twa", "speed"]].rename(columns={"speed": name})
@@ -156,9 +252,22 @@ def comparison_table(frames: dict):
 
 
 def ratio_summary(table, bands=TWA_BANDS):
-    """Per controller and TWA band (``bands``: label, from TWA included to TWA excluded, deg): the
-    lowest and highest ``<name>/best`` ratio over every TWS in the band, and where each is (TWS,
-    TWA, the controller's and the best speed). Empty when the table has no ratio columns."""
+    """Per controller and TWA band: the lowest and highest ``<name>/best`` ratio and where each is.
+
+    Where: TWS, TWA, the controller's and the best speed, over every TWS in the band.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        From :func:`comparison_table`.
+    bands : tuple of (str, float, float)
+        Label, from TWA (included) to TWA (excluded), deg.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Empty when the table has no ratio columns.
+    """
     import pandas as pd
 
     rows = []
@@ -180,7 +289,19 @@ def ratio_summary(table, bands=TWA_BANDS):
 
 
 def comparison_markdown(table, summary, command: str = "", settings: str = "") -> str:
-    """``compare.md``: the summary by TWA band, then the full table (speeds in m/s)."""
+    """``compare.md``: the summary by TWA band, then the full table (speeds in m/s).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        From :func:`comparison_table`.
+    summary : pandas.DataFrame
+        From :func:`ratio_summary`.
+    command : str
+        The command that made it, quoted in the text ("" for none).
+    settings : str
+        Its settings, after the command ("" for none).
+    """
     lines = ["# Steady speed by sail law", ""]
     if command:
         lines += [f"Made by `{command}`" + (f" ({settings})" if settings else "") + ". *speed*: the "

@@ -22,9 +22,7 @@ from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
-import threading
 import time
 from contextlib import nullcontext
 
@@ -39,8 +37,8 @@ from .video import (
     scene_of,
     snapshot_observation,
     snapshot_physics,
-    yaw_of,
 )
+from .window import NoDisplay, Window, open_display
 
 KEY_SPACE, KEY_RIGHT = 32, 262  # GLFW key codes
 KEYS = """keys and mouse:
@@ -52,54 +50,33 @@ KEYS = """keys and mouse:
   Tab, Shift+Tab   show or hide MuJoCo's left and right panels
   Ctrl+P           MuJoCo's own screenshot (screenshot.png in the current folder)
   closing the window stops the run"""
-ASCII = {"°": " deg", "·": "-", "→": "->"}  # MuJoCo's overlay font is ASCII only
-
-
-class NoDisplay(RuntimeError):
-    """No window can be opened here (no display, or no OpenGL context on it)."""
-
-
 def _video_hint(args) -> str:
     return (f"record a video instead: sailmujoco video {args.boat} {args.task} "
             f"--controller {args.controller}{' --world ' + args.world if args.world != 'mujoco' else ''}"
             f" --out results/{args.boat}_{args.task}.mp4")
 
 
-def open_display() -> None:
-    """Check that GLFW can open a window with an OpenGL context here; else :class:`NoDisplay`."""
-    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
-        raise NoDisplay("no display (DISPLAY is not set)")
-    try:
-        import glfw
-        import mujoco.viewer  # noqa: F401  (it needs GLFW's library)
-    except Exception as err:  # ImportError, RuntimeError: GLFW's library is missing
-        raise NoDisplay(f"GLFW cannot load ({type(err).__name__}: {err})") from None
-    reporting = glfw.ERROR_REPORTING
-    glfw.ERROR_REPORTING = "raise"
-    try:
-        if not glfw.init():
-            raise NoDisplay("GLFW could not initialise")
-        glfw.window_hint(glfw.VISIBLE, glfw.FALSE)
-        window = glfw.create_window(16, 16, "sailmujoco probe", None, None)
-        if not window:
-            raise NoDisplay("GLFW could not open a window with an OpenGL context")
-        glfw.destroy_window(window)
-        glfw.default_window_hints()
-    except glfw.GLFWError as err:  # its message: "(code) b'description'"
-        text = str(err)
-        raise NoDisplay("GLFW: " + text[text.find("b'") + 2:-1] if "b'" in text else text) from None
-    finally:
-        glfw.ERROR_REPORTING = reporting
-
-
 class Keys:
-    """The keyboard state the loop reads; ``press`` is the viewer's key callback (its thread)."""
+    """The keyboard state the loop reads; ``press`` is the viewer's key callback (its thread).
+
+    Parameters
+    ----------
+    paused : bool
+        Start paused.
+    """
 
     def __init__(self, paused: bool = False):
         self.paused = paused
         self.steps = 0  # control steps asked for while paused
 
     def press(self, key: int) -> None:
+        """The viewer's key callback: space pauses or resumes, the right arrow asks for a step.
+
+        Parameters
+        ----------
+        key : int
+            GLFW key code.
+        """
         if key == KEY_SPACE:
             self.paused = not self.paused
             self.steps = 0
@@ -114,40 +91,6 @@ class Keys:
             self.steps -= 1
             return True
         return False
-
-
-class LatestTexts:
-    """Hands the overlay text to the viewer from a thread of its own: the viewer's ``set_texts``
-    waits for its next drawn frame, which would pace the simulation to the drawing rate."""
-
-    def __init__(self, viewer):
-        self._viewer = viewer
-        self._texts = None
-        self._ready = threading.Condition()
-        self._stop = False
-        self._thread = threading.Thread(target=self._run, name="sailmujoco-view-texts", daemon=True)
-        self._thread.start()
-
-    def put(self, texts) -> None:
-        with self._ready:
-            self._texts = texts
-            self._ready.notify()
-
-    def _run(self) -> None:
-        while True:
-            with self._ready:
-                self._ready.wait_for(lambda: self._stop or self._texts is not None)
-                if self._stop:
-                    return
-                texts, self._texts = self._texts, None
-            if self._viewer.is_running():
-                self._viewer.set_texts(texts)
-
-    def close(self, timeout: float = 1.0) -> None:
-        with self._ready:
-            self._stop = True
-            self._ready.notify()
-        self._thread.join(timeout)
 
 
 class RealTime:
@@ -166,7 +109,13 @@ class RealTime:
         self._last = None
 
     def wait(self, sim_time: float) -> None:
-        """Sleep until the wall clock reaches ``sim_time`` (from the anchor)."""
+        """Sleep until the wall clock reaches ``sim_time`` (from the anchor).
+
+        Parameters
+        ----------
+        sim_time : float
+            Simulated time (s).
+        """
         now = time.perf_counter()
         if self.anchor is None:
             self.anchor = (now, sim_time)
@@ -179,89 +128,6 @@ class RealTime:
         if self._last is not None:
             self.running_wall += end - self._last
         self._last = end
-
-
-def _ascii(text: str) -> str:
-    for old, new in ASCII.items():
-        text = text.replace(old, new)
-    return text
-
-
-class Window:
-    """MuJoCo's viewer on the display model: the videos' follow camera, arrows and text.
-
-    Parameters
-    ----------
-    scene : SceneRenderer
-        The display model (without an offscreen context).
-    snap : Snapshot
-        The first state shown: the camera starts behind it.
-    keys : Keys
-        Reads the window's keys.
-    forces, overlay : bool
-        Force arrows (and their legend); text.
-    """
-
-    def __init__(self, scene: SceneRenderer, snap: Snapshot, keys: Keys, *, forces: bool, overlay: bool):
-        import mujoco
-        import mujoco.viewer
-
-        before = set(threading.enumerate())
-        self.viewer = viewer = mujoco.viewer.launch_passive(
-            scene.model, scene.data, key_callback=keys.press, show_left_ui=False, show_right_ui=False)
-        self._threads = set(threading.enumerate()) - before  # the viewer's window and render loop
-        self.scene, self.overlay = scene, overlay
-        self.legend = ("arrows: " + ", ".join(f"{name} {colour}" for name, colour in
-                                              (("sail", "red"), ("keel", "green"), ("rudder", "orange"))
-                                              if forces) + (", " if forces else "")
-                       + "wind cyan (where it blows to)")
-        with viewer.lock():  # the videos' follow camera; it moves with the boat, the mouse turns it
-            cam = viewer.cam
-            cam.type = mujoco.mjtCamera.mjCAMERA_FREE
-            cam.lookat[:] = snap.position + np.array([0.0, 0.0, 0.45 * scene.h])
-            cam.distance = scene.follow_distance
-            cam.azimuth = math.degrees(yaw_of(snap.rotation) + scene.follow_bearing + math.pi)
-            cam.elevation = scene.follow_elevation
-            viewer.opt.sitegroup[:] = 0
-        self.texts = LatestTexts(viewer)
-        self._followed = snap.position.copy()
-
-    def show(self, snap: Snapshot, note: str | None = None) -> None:
-        """Pose the boat as ``snap``, move the camera with it, redraw arrows and text.
-
-        Parameters
-        ----------
-        snap : Snapshot
-            The state shown.
-        note : str, optional
-            An extra last line of text.
-        """
-        import mujoco
-
-        viewer, scene = self.viewer, self.scene
-        with viewer.lock():
-            scene.pose(snap)
-            viewer.cam.lookat[:2] += snap.position[:2] - self._followed[:2]
-            self._followed = snap.position.copy()
-            user = viewer.user_scn
-            user.ngeom = 0
-            scene.decorate(user, snap)
-        if self.overlay:
-            lines = scene.text_lines(snap)
-            if note:
-                lines.append(note)
-            self.texts.put([(mujoco.mjtFontScale.mjFONTSCALE_150, mujoco.mjtGridPos.mjGRID_TOPLEFT,
-                             _ascii("\n".join(lines)), ""),
-                            (mujoco.mjtFontScale.mjFONTSCALE_100, mujoco.mjtGridPos.mjGRID_BOTTOMLEFT,
-                             self.legend, "")])
-        viewer.sync()
-
-    def close(self) -> None:
-        """Stop the text thread and close the window (gone before Python and GLFW shut down)."""
-        self.texts.close()
-        self.viewer.close()
-        for thread in self._threads:
-            thread.join(5.0)
 
 
 def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
@@ -326,7 +192,7 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     scene.pose(snap)
 
     keys = Keys(paused)
-    window = Window(scene, snap, keys, forces=forces, overlay=overlay)
+    window = Window(scene, snap, keys.press, forces=forces, overlay=overlay)
     clock = RealTime()
     try:
         snap, interrupted = _sail(env, policy, timestep, snap, window, keys, clock, fps, mujoco_world)
@@ -405,7 +271,18 @@ def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, inte
 
 # ----------------------------------------------------------------------------- command line
 def add_parser(subparsers) -> argparse.ArgumentParser:
-    """Add ``view`` to the ``sailmujoco`` sub-commands; returns its parser."""
+    """Add ``view`` to the ``sailmujoco`` sub-commands.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        From ``ArgumentParser.add_subparsers``.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The ``view`` parser.
+    """
     parser = subparsers.add_parser(
         "view", help="watch a task run in MuJoCo's interactive viewer (needs a display)",
         formatter_class=argparse.RawDescriptionHelpFormatter, epilog=KEYS,
@@ -436,7 +313,18 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
 
 
 def run_cli(args) -> int:
-    """The ``view`` sub-command."""
+    """The ``view`` sub-command.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The arguments of :func:`add_parser`'s parser.
+
+    Returns
+    -------
+    int
+        0, or 2 where no window can be opened (one line on stderr that points to ``sailmujoco video``).
+    """
     from .sweep import validate
 
     check_settings(args.set)
