@@ -38,7 +38,22 @@ def pyplot():
 
 
 def save(fig, path, dpi: float | None = None) -> Path:
-    """Check, write (tight bounding box: nothing clipped) and close a figure; returns its path."""
+    """Check, write (tight bounding box: nothing clipped) and close a figure.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    path : path
+        The file written.
+    dpi : float, optional
+        Resolution; matplotlib's default without it.
+
+    Returns
+    -------
+    Path
+        ``path``.
+    """
     import matplotlib.pyplot as plt
 
     for problem in problems(fig):
@@ -49,8 +64,19 @@ def save(fig, path, dpi: float | None = None) -> Path:
 
 
 def legend_below(fig, axes=None, ncol: int = 3, **kwargs):
-    """One legend for the figure, below the axes (outside the data), of the unique labels of
-    ``axes`` (default: every axes of the figure)."""
+    """One legend for the figure, below the axes (outside the data), of the unique labels of ``axes``.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+    axes : Axes or list of Axes, optional
+        Whose labels (default: every axes of the figure).
+    ncol : int
+        Columns of the legend.
+    **kwargs
+        Passed to ``fig.legend``.
+    """
     handles, labels = [], []
     for ax in (fig.axes if axes is None else np.atleast_1d(axes).ravel()):
         for handle, label in zip(*ax.get_legend_handles_labels(), strict=True):
@@ -62,11 +88,25 @@ def legend_below(fig, axes=None, ncol: int = 3, **kwargs):
 
 
 def robust_limits(values, percentiles=ROBUST_PERCENTILES) -> tuple[float, float, str]:
-    """Colour limits that one outlier cannot take over: the ``percentiles`` of the finite values
-    (a single extreme cell of a grid lies beyond them) when the full range is more than twice
-    as wide and there are at least ``MIN_ROBUST`` values, else the full range. Returns (vmin, vmax,
-    extend) with extend as matplotlib's colorbar takes it ('neither', 'min', 'max', 'both':
-    which ends are clipped)."""
+    """Colour limits that one outlier cannot take over.
+
+    The ``percentiles`` of the finite values (a single extreme cell of a grid lies beyond them) when
+    the full range is more than twice as wide and there are at least ``MIN_ROBUST`` values, else the
+    full range.
+
+    Parameters
+    ----------
+    values : array_like
+        The values coloured.
+    percentiles : tuple of float
+        Lower and upper percentile.
+
+    Returns
+    -------
+    tuple
+        (vmin, vmax, extend) with extend as matplotlib's colorbar takes it ('neither', 'min', 'max',
+        'both': which ends are clipped).
+    """
     finite = np.asarray(values, dtype=float)
     finite = finite[np.isfinite(finite)]
     if finite.size == 0:
@@ -85,17 +125,35 @@ def robust_limits(values, percentiles=ROBUST_PERCENTILES) -> tuple[float, float,
 
 
 def moment_unit(largest: float) -> tuple[float, str]:
-    """(divisor, unit) for a moment whose largest magnitude is ``largest`` N m: N m below
-    1 kN m (a 15 kg robot), kN m above (a yacht)."""
+    """(divisor, unit) for a moment: N m below 1 kN m (a 15 kg robot), kN m above (a yacht).
+
+    Parameters
+    ----------
+    largest : float
+        The moment's largest magnitude (N m).
+    """
     return (1e3, "kN m") if abs(largest) >= 1e3 else (1.0, "N m")
 
 
 def wind_arrow(ax, towards_deg: float, text: str, *, length: float = 0.16, swing_deg: float = 0.0,
                color: str = "red") -> None:
-    """An arrow showing where the wind blows *to* (``towards_deg``: compass, 0 north, 90 east,
-    on axes whose x is east and y north), with ``text`` (say the speed and 'from ...'), in the
-    corner of the axes where the plotted data leave the most room; ``swing_deg`` draws the
-    direction's swing as two thin arrows."""
+    """An arrow showing where the wind blows *to*, in the corner where the data leave the most room.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Axes whose x is east and y north.
+    towards_deg : float
+        Where the wind blows to (compass deg: 0 north, 90 east).
+    text : str
+        The label (say the speed and 'from ...').
+    length : float
+        Arrow length, fraction of the axes.
+    swing_deg : float
+        The direction's swing, drawn as two thin arrows (deg; none at 0).
+    color : str
+        Colour.
+    """
     corner = _emptiest_corner(ax)
     x0, y0 = corner
     for swing, alpha, lw in ((0.0, 1.0, 2.5), (swing_deg, 0.45, 1.2), (-swing_deg, 0.45, 1.2)):
@@ -130,8 +188,20 @@ def _emptiest_corner(ax) -> tuple[float, float]:
 
 # ----------------------------------------------------------------------------- the check
 def problems(fig) -> list[str]:
-    """What a reader would trip over in ``fig`` (drawn here): axes without a unit, legends and
-    text boxes over plotted data, text outside the canvas. Empty when the figure is clean."""
+    """What a reader would trip over in ``fig`` (drawn here).
+
+    Axes without a unit, legends and text boxes over plotted data, text outside the canvas.
+
+    Parameters
+    ----------
+    fig : matplotlib.figure.Figure
+        The figure.
+
+    Returns
+    -------
+    list of str
+        Empty when the figure is clean.
+    """
     fig.canvas.draw()
     renderer = fig.canvas.get_renderer()
     found = []

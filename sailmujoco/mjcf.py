@@ -3,7 +3,9 @@
 ``xml/<boat>/<boat>.xml`` is :func:`boat_spec` of the default parameters, written by
 ``python -m sailmujoco.mjcf`` (a test checks the committed file is up to date);
 ``xml/<boat>/scene.xml`` (hand-written) adds water, sky, light and a fixed camera and
-includes it. At run time the boat is rebuilt from its (possibly changed) parameters.
+includes it. At run time the boat is rebuilt from its (possibly changed) parameters. Its
+shapes and mass properties (hull mesh, inertia of each body, sheet geometry) come from
+:mod:`sailmujoco.boat_geometry`.
 
 Bodies: ``hull`` (free joint ``root``; the keel is part of it) with children ``rudder``
 (hinge ``rudder`` about the stock) and ``boom`` (hinge ``sail`` about the mast). Both hinge
@@ -32,116 +34,19 @@ from pathlib import Path
 import mujoco
 import numpy as np
 
+from .boat_geometry import hull_inertial, hull_mesh, rig_inertia, sheet_angle, sheet_geometry, sheet_length
 from .constants import GRAVITY
 from .params import BoatParams, get_boat
+
+__all__ = ["REFERENCE_WIND", "SAIL_MODES", "SERVO_ERROR", "SERVO_FREQUENCY", "TIMESTEP", "boat_spec",
+           "boat_xml", "compile_model", "hull_inertial", "scene_xml", "sheet_angle", "sheet_geometry",
+           "sheet_length", "write_default_xml", "xml_root"]
 
 SAIL_MODES = ("actuated", "sheeted")
 TIMESTEP = 0.005  # s, physics step of both boats
 SERVO_FREQUENCY = 30.0  # rad/s, bandwidth of the rudder and sail servos (>> 1/T)
 SERVO_ERROR = math.radians(1.0)  # rad, static error of the sail servo at the reference load
 REFERENCE_WIND = 15.0  # m/s, apparent wind of the reference sail load
-
-
-def _rig_inertia(p: BoatParams):
-    """Mass, CG (body frame) and inertia about its CG of the boom+sail and of the rudder."""
-    s = p.sail
-    ms = s.mass
-    cs = np.array([s.mast_x - s.ce_aft, 0.0, s.ce_height])  # triangle centroid = CE
-    # thin triangle in the boom's x-z plane (+1 % on the in-plane axes for the boom's bulk)
-    bulk = 0.01 * (s.luff**2 + s.foot**2)
-    i_s = ms / 18.0 * np.diag([s.luff**2 + bulk, s.luff**2 + s.foot**2, s.foot**2 + bulk])
-    r = p.rudder
-    mr = r.mass
-    cr = np.array([r.x, 0.0, r.z])
-    t = r.thickness_ratio * r.chord  # a solid blade: span x chord x thickness box
-    i_r = mr / 12.0 * np.diag([r.span**2 + t**2, r.span**2 + r.chord**2, r.chord**2 + t**2])
-    return (ms, cs, i_s), (mr, cr, i_r)
-
-
-def _shift(inertia, mass, d):
-    """Parallel-axis term: inertia of a body about a point ``d`` away from its CG."""
-    d = np.asarray(d, dtype=float)
-    return inertia + mass * (d @ d * np.eye(3) - np.outer(d, d))
-
-
-def hull_inertial(p: BoatParams):
-    """(mass, CG, full inertia) of the hull body so that hull + rudder + boom matches ``p``.
-
-    The papers give the whole boat's mass and inertia about its CG; the turning parts are
-    subtracted (parallel-axis theorem) so the composite rigid body is exactly the paper's.
-    """
-    (ms, cs, i_s), (mr, cr, i_r) = _rig_inertia(p)
-    m = p.mass
-    c = np.array([p.cg_x, 0.0, p.cg_z])
-    ixx, iyy, izz = p.inertia
-    total = np.array([[ixx, 0.0, p.inertia_xz], [0.0, iyy, 0.0], [p.inertia_xz, 0.0, izz]])
-    mh = m - ms - mr
-    ch = (m * c - ms * cs - mr * cr) / mh
-    ih = total - _shift(i_s, ms, cs - c) - _shift(i_r, mr, cr - c)
-    ih = ih - mh * ((ch - c) @ (ch - c) * np.eye(3) - np.outer(ch - c, ch - c))
-    eig = np.linalg.eigvalsh(ih)
-    if mh <= 0 or eig.min() <= 0 or 2 * eig.max() > eig.sum() + 1e-9:
-        raise ValueError(f"{p.name}: the rig is too heavy for the given total mass/inertia")
-    return mh, ch, ih
-
-
-def _hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
-    """Vertices and faces of the hull: half-ellipse sections, straight topsides flared out to
-    the deck edge at k b(x) (vertical when k = 1), flat deck."""
-    h = p.hull
-    xs = np.linspace(-0.5 * h.length, 0.5 * h.length, n_stations)
-    verts, rings = [], []
-    theta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, n_section)
-    for x in xs:
-        f = max(1.0 - (2.0 * x / h.length) ** 2, 0.03)
-        b, t = h.half_beam * f, h.canoe_draft * f
-        ring = [(x, -h.flare * b, h.freeboard)]
-        ring += [(x, b * np.sin(th), -t * np.cos(th)) for th in theta]
-        ring += [(x, h.flare * b, h.freeboard)]
-        rings.append(list(range(len(verts), len(verts) + len(ring))))
-        verts += ring
-    # wound outward (positive signed volume), so back-face culling shows the outside; the
-    # ring wraps from the port deck edge to the starboard one, which closes the deck
-    faces = []
-    for a, b in zip(rings[:-1], rings[1:], strict=True):
-        k = len(a)
-        for i in range(k):
-            j = (i + 1) % k
-            faces += [(a[i], b[j], b[i]), (a[i], a[j], b[j])]
-    for ring, flip in ((rings[0], True), (rings[-1], False)):
-        for i in range(1, len(ring) - 1):
-            tri = (ring[0], ring[i], ring[i + 1])
-            faces.append(tri[::-1] if flip else tri)
-    return np.array(verts, dtype=float).ravel(), np.array(faces, dtype=int).ravel()
-
-
-def sheet_geometry(p: BoatParams):
-    """(block, boom_end) positions: the sheet block on the hull, the boom end on the boom.
-
-    The block sits on the centreline below the boom end's position at lambda = 0, so the sheet
-    length is L(lambda) = sqrt((2 l sin(lambda/2))^2 + dz^2) with l the boom length: it grows
-    monotonically with |lambda| up to 180 deg.
-    """
-    s = p.sail
-    boom = s.foot
-    block = np.array([s.mast_x - boom, 0.0, max(s.boom_height - 0.15 * boom, 0.5 * p.hull.freeboard)])
-    boom_end = np.array([-boom, 0.0, 0.0])  # in the boom body frame
-    return block, boom_end
-
-
-def sheet_length(p: BoatParams, angle):
-    """Sheet length (m) that lets the boom out to ``angle`` (rad)."""
-    block, end = sheet_geometry(p)
-    dz = p.sail.boom_height - block[2]
-    return np.sqrt((2.0 * p.sail.foot * np.sin(0.5 * np.asarray(angle))) ** 2 + dz**2)
-
-
-def sheet_angle(p: BoatParams, length):
-    """Largest boom angle (rad) a sheet of ``length`` allows (inverse of :func:`sheet_length`)."""
-    block, _ = sheet_geometry(p)
-    dz = p.sail.boom_height - block[2]
-    horizontal = np.sqrt(np.maximum(np.asarray(length) ** 2 - dz**2, 0.0))
-    return 2.0 * np.arcsin(np.clip(horizontal / (2.0 * p.sail.foot), 0.0, 1.0))
 
 
 def _sail_reference_moment(p: BoatParams) -> float:
@@ -156,11 +61,47 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     ``dofs=6``: the hull is free. ``dofs=4``: heave and pitch held, as in Wille's and Saoud's
     reduced models: slide x, slide y, hinge yaw (world z), hinge roll (the yawed body x), so
     R = Rz(yaw) Rx(roll) with CO on the waterline.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    sail_mode : {"actuated", "sheeted"}
+        See the module docstring.
+    dofs : {6, 4}
+        The hull's degrees of freedom.
+
+    Returns
+    -------
+    mujoco.MjSpec
+        Built part by part, in this order (the order fixes the model's element ids): options,
+        materials, hull, keel, mast, hull sites, cameras, rudder, boom and sail, rudder servo,
+        sail servo or sheet, home keyframe.
     """
     if sail_mode not in SAIL_MODES:
         raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
     if dofs not in (4, 6):
         raise ValueError(f"dofs must be 6 (free hull) or 4 (heave and pitch held), got {dofs!r}")
+    spec = _empty_spec(p)
+    visual = _visual_default(spec)
+    hull = _add_hull(spec, p, dofs, visual)
+    _add_keel(hull, p, visual)
+    mast_radius = _add_mast(hull, p, visual)
+    _add_hull_sites(hull, p)
+    _add_cameras(hull, p)
+    _add_rudder(hull, p, visual)
+    _add_boom_and_sail(spec, hull, p, visual, mast_radius)
+    _add_rudder_servo(spec, p)
+    home_ctrl = _add_sail_servo(spec, p) if sail_mode == "actuated" else _add_sheet(spec, p)
+    key = spec.add_key(name="home")
+    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0] if dofs == 6 else [0.0] * 6
+    key.ctrl = home_ctrl
+    key.act = home_ctrl
+    return spec
+
+
+def _empty_spec(p: BoatParams) -> mujoco.MjSpec:
+    """The spec's compiler settings and physics options, nothing in its world yet."""
     spec = mujoco.MjSpec()
     spec.modelname = p.name
     spec.compiler.degree = False
@@ -176,18 +117,25 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     # A non-finite state must stop the run with its reason (physics.SimulationStopped), not be
     # silently reset to the keyframe by MuJoCo.
     spec.option.disableflags |= mujoco.mjtDisableBit.mjDSBL_AUTORESET
+    return spec
 
+
+def _visual_default(spec: mujoco.MjSpec):
+    """The ``visual`` default class (no contacts, no mass, group 2) and the three materials."""
     visual = spec.add_default("visual", spec.default)
     visual.geom.contype = 0
     visual.geom.conaffinity = 0
     visual.geom.group = 2
     visual.geom.mass = 0.0
-    white = spec.add_material(name="hull_white", rgba=[0.93, 0.93, 0.9, 1.0])
-    dark = spec.add_material(name="foil_dark", rgba=[0.15, 0.17, 0.2, 1.0])
-    sailcloth = spec.add_material(name="sailcloth", rgba=[0.97, 0.95, 0.85, 0.92])
-    del white, dark, sailcloth
+    spec.add_material(name="hull_white", rgba=[0.93, 0.93, 0.9, 1.0])
+    spec.add_material(name="foil_dark", rgba=[0.15, 0.17, 0.2, 1.0])
+    spec.add_material(name="sailcloth", rgba=[0.97, 0.95, 0.85, 0.92])
+    return visual
 
-    verts, faces = _hull_mesh(p)
+
+def _add_hull(spec: mujoco.MjSpec, p: BoatParams, dofs: int, visual):
+    """The hull body: its mesh, its inertia (the boat's less the turning parts), its joints."""
+    verts, faces = hull_mesh(p)
     mesh = spec.add_mesh(name="hull_mesh")
     mesh.uservert = verts.tolist()
     mesh.userface = faces.tolist()
@@ -207,22 +155,40 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
         hull.add_joint(name="roll", type=mujoco.mjtJoint.mjJNT_HINGE, axis=[1.0, 0.0, 0.0])
     hull.add_geom(name="hull", default=visual, type=mujoco.mjtGeom.mjGEOM_MESH,
                   meshname="hull_mesh", material="hull_white")
+    return hull
 
+
+def _add_keel(hull, p: BoatParams, visual) -> None:
+    """The keel: a box below the canoe body, part of the hull."""
     k = p.keel
     top = -p.hull.canoe_draft * 0.9
     hull.add_geom(name="keel", default=visual, type=mujoco.mjtGeom.mjGEOM_BOX,
                   pos=[k.x, 0.0, top - 0.5 * k.span],
                   size=[0.5 * k.chord, 0.5 * k.thickness_ratio * k.chord, 0.5 * k.span],
                   material="foil_dark")
+
+
+def _add_mast(hull, p: BoatParams, visual) -> float:
+    """The mast, from half the freeboard to the masthead; returns its radius (m)."""
     s = p.sail
     mast_radius = 0.012 * s.luff
     hull.add_geom(name="mast", default=visual, type=mujoco.mjtGeom.mjGEOM_CYLINDER,
                   fromto=[s.mast_x, 0.0, 0.5 * p.hull.freeboard, s.mast_x, 0.0, s.masthead_height],
                   size=[mast_radius, 0, 0], material="foil_dark")
+    return mast_radius
+
+
+def _add_hull_sites(hull, p: BoatParams) -> None:
+    """``keel_cp``, ``masthead``, ``mast_step`` and ``cog`` on the hull."""
+    k, s = p.keel, p.sail
     hull.add_site(name="keel_cp", pos=[k.x, 0.0, k.z])
     hull.add_site(name="masthead", pos=[s.mast_x, 0.0, s.masthead_height])
     hull.add_site(name="mast_step", pos=[s.mast_x, 0.0, s.boom_height])
     hull.add_site(name="cog", pos=[p.cg_x, 0.0, p.cg_z])
+
+
+def _add_cameras(hull, p: BoatParams) -> None:
+    """The ``follow`` and ``side`` cameras, tracking the hull's centre of mass."""
     scale = p.hull.length
     hull.add_camera(name="follow", mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM,
                     pos=[-1.6 * scale, -1.4 * scale, 0.9 * scale],
@@ -230,7 +196,10 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     hull.add_camera(name="side", mode=mujoco.mjtCamLight.mjCAMLIGHT_TRACKCOM,
                     pos=[0.0, -2.2 * scale, 0.4 * scale], xyaxes=[1.0, 0.0, 0.0, 0.0, 0.18, 0.98])
 
-    (ms, cs, i_s), (mr, cr, i_r) = _rig_inertia(p)
+
+def _add_rudder(hull, p: BoatParams, visual) -> None:
+    """The rudder body on its ``rudder`` hinge (axis down), its blade and ``rudder_cp``."""
+    _, (mr, cr, i_r) = rig_inertia(p)
     r = p.rudder
     rudder = hull.add_body(name="rudder", pos=[r.x, 0.0, 0.0])
     rudder.explicitinertial = True
@@ -247,6 +216,12 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
                     material="foil_dark")
     rudder.add_site(name="rudder_cp", pos=[0.0, 0.0, r.z])
 
+
+def _add_boom_and_sail(spec: mujoco.MjSpec, hull, p: BoatParams, visual, mast_radius: float) -> None:
+    """The boom body on its ``sail`` hinge about the mast (axis down): boom, triangular sail,
+    ``sail_ce`` and ``boom_end``; and the sheet's block ``sheet_block`` on the hull."""
+    (ms, cs, i_s), _ = rig_inertia(p)
+    s = p.sail
     boom = hull.add_body(name="boom", pos=[s.mast_x, 0.0, s.boom_height])
     boom.explicitinertial = True
     boom.mass = ms
@@ -268,9 +243,12 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     boom.add_site(name="boom_end", pos=boom_end.tolist())
     hull.add_site(name="sheet_block", pos=block.tolist())
 
-    # Servos: natural frequency SERVO_FREQUENCY, critically damped. The sail servo holds the
-    # reference aerodynamic moment within SERVO_ERROR; the armature is the motor's reflected
-    # inertia that makes that stiffness stable at the bandwidth.
+
+def _add_rudder_servo(spec: mujoco.MjSpec, p: BoatParams) -> None:
+    """The rudder's position servo: natural frequency SERVO_FREQUENCY, critically damped, on
+    the blade's inertia plus an armature (the motor's reflected inertia)."""
+    _, (mr, _, i_r) = rig_inertia(p)
+    r = p.rudder
     rudder_arm = max(0.0, 0.2 * mr * r.chord**2)
     rudder_kp = (rudder_arm + i_r[2, 2]) * SERVO_FREQUENCY**2
     act = spec.add_actuator(name="rudder", target="rudder", trntype=mujoco.mjtTrn.mjTRN_JOINT)
@@ -280,43 +258,61 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
     spec.joint("rudder").armature = rudder_arm
 
-    boom_inertia = i_s[2, 2] + ms * s.ce_aft**2
-    if sail_mode == "actuated":
-        kp = _sail_reference_moment(p) / SERVO_ERROR
-        armature = max(0.0, kp / SERVO_FREQUENCY**2 - boom_inertia)
-        spec.joint("sail").armature = armature
-        act = spec.add_actuator(name="sail", target="sail", trntype=mujoco.mjtTrn.mjTRN_JOINT)
-        act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * (armature + boom_inertia)),
-                            timeconst=s.time_constant)
-        act.ctrlrange = [-s.max_angle, s.max_angle]
-        act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
-        home_ctrl = [0.0, 0.0]
-    else:
-        sheet = spec.add_tendon(name="sheet")
-        sheet.wrap_site("sheet_block")
-        sheet.wrap_site("boom_end")
-        # A stiff rope: it stretches 1 cm under the reference load, and only pulls.
-        load = _sail_reference_moment(p) / s.foot
-        kp = load / 0.01
-        act = spec.add_actuator(name="sheet", target="sheet", trntype=mujoco.mjtTrn.mjTRN_TENDON)
-        act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * ms), timeconst=s.time_constant)
-        length_max = float(sheet_length(p, s.max_angle))
-        length_min = float(sheet_length(p, 0.0))
-        act.ctrlrange = [length_min, length_max]
-        act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
-        act.forcerange = [-20.0 * load, 0.0]
-        act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
-        home_ctrl = [0.0, length_max]
 
-    key = spec.add_key(name="home")
-    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0] if dofs == 6 else [0.0] * 6
-    key.ctrl = home_ctrl
-    key.act = home_ctrl
-    return spec
+def _add_sail_servo(spec: mujoco.MjSpec, p: BoatParams) -> list[float]:
+    """The actuated sail's position servo: it holds the reference aerodynamic moment within
+    SERVO_ERROR; the armature makes that stiffness stable at SERVO_FREQUENCY. Returns the home
+    controls."""
+    (ms, _, i_s), _ = rig_inertia(p)
+    s = p.sail
+    boom_inertia = i_s[2, 2] + ms * s.ce_aft**2
+    kp = _sail_reference_moment(p) / SERVO_ERROR
+    armature = max(0.0, kp / SERVO_FREQUENCY**2 - boom_inertia)
+    spec.joint("sail").armature = armature
+    act = spec.add_actuator(name="sail", target="sail", trntype=mujoco.mjtTrn.mjTRN_JOINT)
+    act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * (armature + boom_inertia)),
+                        timeconst=s.time_constant)
+    act.ctrlrange = [-s.max_angle, s.max_angle]
+    act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    return [0.0, 0.0]
+
+
+def _add_sheet(spec: mujoco.MjSpec, p: BoatParams) -> list[float]:
+    """The sheeted sail: a sheet from ``sheet_block`` to ``boom_end`` and its length servo.
+
+    A stiff rope: it stretches 1 cm under the reference load, and only pulls. Returns the
+    home controls (the sheet let out to the sail's largest angle).
+    """
+    (ms, _, _), _ = rig_inertia(p)
+    s = p.sail
+    sheet = spec.add_tendon(name="sheet")
+    sheet.wrap_site("sheet_block")
+    sheet.wrap_site("boom_end")
+    load = _sail_reference_moment(p) / s.foot
+    kp = load / 0.01
+    act = spec.add_actuator(name="sheet", target="sheet", trntype=mujoco.mjtTrn.mjTRN_TENDON)
+    act.set_to_position(kp=kp, kv=2.0 * math.sqrt(kp * ms), timeconst=s.time_constant)
+    length_max = float(sheet_length(p, s.max_angle))
+    length_min = float(sheet_length(p, 0.0))
+    act.ctrlrange = [length_min, length_max]
+    act.ctrllimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    act.forcerange = [-20.0 * load, 0.0]
+    act.forcelimited = mujoco.mjtLimited.mjLIMITED_TRUE
+    return [0.0, length_max]
 
 
 def boat_xml(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> str:
-    """MJCF text of the boat (what ``xml/<boat>/<boat>.xml`` holds for default parameters)."""
+    """MJCF text of the boat (what ``xml/<boat>/<boat>.xml`` holds for default parameters).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    sail_mode : {"actuated", "sheeted"}
+        See the module docstring.
+    dofs : {6, 4}
+        The hull's degrees of freedom.
+    """
     spec = boat_spec(p, sail_mode, dofs)
     spec.compile()  # validates
     return spec.to_xml()
@@ -338,7 +334,13 @@ def xml_root():
 
 
 def scene_xml(boat: str) -> str:
-    """The hand-written ``xml/<boat>/scene.xml`` shipped with the package."""
+    """The hand-written ``xml/<boat>/scene.xml`` shipped with the package.
+
+    Parameters
+    ----------
+    boat : str
+        The boat's name.
+    """
     path = xml_root().joinpath(boat, "scene.xml")
     if not path.is_file():
         raise ValueError(f"no scene for boat {boat!r} in {xml_root()}")
@@ -346,13 +348,34 @@ def scene_xml(boat: str) -> str:
 
 
 def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjModel:
-    """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``)."""
+    """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    sail_mode : {"actuated", "sheeted"}
+        See the module docstring.
+    dofs : {6, 4}
+        The hull's degrees of freedom.
+    """
     return mujoco.MjModel.from_xml_string(
         scene_xml(p.name), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs).encode()})
 
 
 def write_default_xml(root) -> list:
-    """Write ``<root>/<boat>/<boat>.xml`` for every registered boat; returns the paths."""
+    """Write ``<root>/<boat>/<boat>.xml`` for every registered boat.
+
+    Parameters
+    ----------
+    root : path
+        The ``xml/`` folder.
+
+    Returns
+    -------
+    list of Path
+        The files written.
+    """
     from .params import BOATS
 
     paths = []

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from . import sweep
+from .arguments import out_folder
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
@@ -27,7 +28,31 @@ STEADY_WINDOW_S = 20.0  # s, a point's speed is the mean over the last this many
 def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
                duration: float = 60.0, steady_window: float = STEADY_WINDOW_S, controller_grid=None,
                options: dict | None = None) -> dict:
-    """The sweep description of one polar (TWS x TWA, heading north)."""
+    """The sweep description of one polar (TWS x TWA, heading north).
+
+    Parameters
+    ----------
+    boat, controller : str
+        The boat and the registered controller.
+    tws, twa : iterable of float
+        True wind speeds (m/s) and true wind angles (deg, off the starboard bow); every pair is
+        one run.
+    world : {"mujoco", "paper"}
+        The simulation.
+    duration : float
+        Simulated seconds per point.
+    steady_window : float
+        A point's speed is the mean over the last this many seconds.
+    controller_grid : dict, optional
+        Controller options swept at every point (``{"controller.sail_deg": [...]}``).
+    options : dict, optional
+        More sweep options (``"task.x"`` / ``"env.x"`` keys).
+
+    Returns
+    -------
+    dict
+        The sweep description (:mod:`sailmujoco.sweep`).
+    """
     tws_axis, twa_axis = [], []
     for s in tws:
         for a in twa:
@@ -49,13 +74,43 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
 def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
             world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
             progress: bool = True, options: dict | None = None):
-    """Run a polar; returns a DataFrame with columns tws, twa, speed, heel (and status)."""
+    """Run a polar on the sweep engine.
+
+    Parameters
+    ----------
+    boat : str
+        The boat.
+    controller : str
+        A registered controller, or ``"best"``: every fixed sail angle of :data:`BEST_SAIL_DEG`,
+        the fastest kept point by point.
+    out : path
+        Folder; the sweep writes into ``<out>/sweep-<controller>``.
+    tws, twa : iterable of float
+        True wind speeds (m/s) and angles (deg).
+    world : {"mujoco", "paper"}
+        The simulation.
+    duration : float
+        Simulated seconds per point.
+    scheduler : str, optional
+        Dask scheduler address, or ``"serial"``; default an embedded cluster.
+    workers : int, optional
+        Worker processes of the embedded cluster.
+    progress : bool
+        Show a progress bar.
+    options : dict, optional
+        More sweep options.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Columns tws, twa, speed, heel (and sail_deg for ``best``), the runs that finished.
+    """
     grid = {"controller.sail_deg": list(BEST_SAIL_DEG)} if controller == "best" else None
     name = "fixed_sail" if controller == "best" else controller
     spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
                       options=options)
     # a polar re-run with other winds or duration goes into the same folder (the table keeps
-    # this run's rows only), as before the sweep library refused other specs by default
+    # this run's rows only): the sweep may replace another spec there (exclusive=False)
     table = sweep.run(spec, Path(out) / f"sweep-{controller}", scheduler=scheduler, workers=workers,
                       progress=progress, exclusive=False)
     table = table.rename(columns={"task.wind_speed": "tws", "task.wind_from_deg": "twa",
@@ -69,7 +124,18 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
 
 
 def best_vmg(frame):
-    """Per TWS: (twa, vmg) of the best upwind and downwind velocity made good."""
+    """Per TWS: (twa, vmg) of the best upwind and downwind velocity made good.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        A polar (:func:`compute`).
+
+    Returns
+    -------
+    dict
+        TWS -> ``{"upwind": (twa_deg, vmg), "downwind": (twa_deg, vmg)}`` (m/s).
+    """
     out = {}
     for tws, group in frame.groupby("tws"):
         twa = np.radians(group["twa"].to_numpy())
@@ -83,7 +149,17 @@ def best_vmg(frame):
 
 
 def plot_polar(frame, path, title: str) -> None:
-    """The classic polar: speed against TWA, one curve per TWS, best VMG marked."""
+    """The classic polar: speed against TWA, one curve per TWS, best VMG marked.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        A polar (:func:`compute`).
+    path : path
+        The PNG written.
+    title : str
+        The figure's title.
+    """
     from . import figures
 
     plt = figures.pyplot()
@@ -112,7 +188,17 @@ def plot_polar(frame, path, title: str) -> None:
 
 
 def plot_comparison(frames: dict, path, title: str) -> None:
-    """Speed against TWA for several sail laws (one panel per TWS)."""
+    """Speed against TWA for several sail laws (one panel per TWS).
+
+    Parameters
+    ----------
+    frames : dict
+        Controller name -> its polar (:func:`compute`).
+    path : path
+        The PNG written.
+    title : str
+        The figure's title.
+    """
     from . import figures
 
     plt = figures.pyplot()
@@ -139,10 +225,21 @@ TWA_BANDS = (("close-hauled", 0.0, 60.0), ("close reach", 60.0, 90.0), ("beam to
 
 
 def comparison_table(frames: dict):
-    """One row per (TWS, TWA): each controller's steady speed [m/s] and, when ``best`` is among
-    ``frames``, each other controller's ratio to it (``<name>/best``: speed / best speed, a plain
-    ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller did not finish is
-    missing (NaN) in its columns."""
+    """One row per (TWS, TWA): each controller's steady speed [m/s] and the ratios to ``best``.
+
+    When ``best`` is among ``frames``, each other controller's ratio to it (``<name>/best``: speed /
+    best speed, a plain ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller
+    did not finish is missing (NaN) in its columns.
+
+    Parameters
+    ----------
+    frames : dict
+        Controller name -> its polar (:func:`compute`).
+
+    Returns
+    -------
+    pandas.DataFrame
+    """
     table = None
     for name, frame in frames.items():
         part = frame[["tws", "twa", "speed"]].rename(columns={"speed": name})
@@ -155,9 +252,22 @@ def comparison_table(frames: dict):
 
 
 def ratio_summary(table, bands=TWA_BANDS):
-    """Per controller and TWA band (``bands``: label, from TWA included to TWA excluded, deg): the
-    lowest and highest ``<name>/best`` ratio over every TWS in the band, and where each is (TWS,
-    TWA, the controller's and the best speed). Empty when the table has no ratio columns."""
+    """Per controller and TWA band: the lowest and highest ``<name>/best`` ratio and where each is.
+
+    Where: TWS, TWA, the controller's and the best speed, over every TWS in the band.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        From :func:`comparison_table`.
+    bands : tuple of (str, float, float)
+        Label, from TWA (included) to TWA (excluded), deg.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Empty when the table has no ratio columns.
+    """
     import pandas as pd
 
     rows = []
@@ -179,7 +289,19 @@ def ratio_summary(table, bands=TWA_BANDS):
 
 
 def comparison_markdown(table, summary, command: str = "", settings: str = "") -> str:
-    """``compare.md``: the summary by TWA band, then the full table (speeds in m/s)."""
+    """``compare.md``: the summary by TWA band, then the full table (speeds in m/s).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        From :func:`comparison_table`.
+    summary : pandas.DataFrame
+        From :func:`ratio_summary`.
+    command : str
+        The command that made it, quoted in the text ("" for none).
+    settings : str
+        Its settings, after the command ("" for none).
+    """
     lines = ["# Steady speed by sail law", ""]
     if command:
         lines += [f"Made by `{command}`" + (f" ({settings})" if settings else "") + ". *speed*: the "
@@ -212,3 +334,59 @@ def comparison_markdown(table, summary, command: str = "", settings: str = "") -
 
 def _cell(value, digits: int) -> str:
     return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
+
+
+def run_cli(args) -> int:
+    """The ``polar`` sub-command: the polar of a boat and sail law (and comparisons), PNG + CSV.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``boat``, ``controller``, ``compare`` (comma separated, or None), ``world``, ``tws``,
+        ``twa``, ``duration``, ``out``, ``scheduler``, ``workers``, ``no_progress``.
+
+    Returns
+    -------
+    int
+        0.
+    """
+    from .params import get_boat
+
+    get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    out = out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
+    names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
+    frames = {}
+    for name in names:
+        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
+              f"({args.world}, {args.duration:g} s per point)")
+        frames[name] = compute(args.boat, name, out, tws=args.tws, twa=args.twa,
+                               world=args.world, duration=args.duration,
+                               scheduler=args.scheduler, workers=args.workers,
+                               progress=not args.no_progress)
+        frames[name].to_csv(out / f"polar_{name}.csv", index=False)
+    main_frame = frames[args.controller]
+    png = out / f"polar_{args.controller}.png"
+    plot_polar(main_frame, png, f"{args.boat}, {args.controller} ({args.world})")
+    for tws, best in best_vmg(main_frame).items():
+        (au, vu), (ad, vd) = best["upwind"], best["downwind"]
+        print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
+              f"downwind {vd:.2f} m/s at {ad:g} deg")
+    print(f"wrote {png} and {out / f'polar_{args.controller}.csv'}")
+    if len(frames) > 1:
+        _write_comparison(args, frames, out)
+    return 0
+
+
+def _write_comparison(args, frames: dict, out: Path) -> None:
+    """compare.png, compare.csv and compare.md of the ``--compare`` sail laws."""
+    compare = out / "compare.png"
+    plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
+    table = comparison_table(frames)
+    table.to_csv(out / "compare.csv", index=False)
+    command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
+    settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
+                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.duration:g} s per point")
+    summary = ratio_summary(table)
+    (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
+                                    encoding="utf-8")
+    print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")

@@ -22,7 +22,13 @@ from collections.abc import Mapping
 
 
 def is_terminal(stream) -> bool:
-    """Whether ``stream`` is an interactive terminal (what tqdm's ``disable=None`` checks)."""
+    """Whether ``stream`` is an interactive terminal (what tqdm's ``disable=None`` checks).
+
+    Parameters
+    ----------
+    stream : file
+        The stream.
+    """
     isatty = getattr(stream, "isatty", None)
     try:
         return bool(isatty and isatty())
@@ -89,7 +95,15 @@ class Progress:
                 self.bar.set_postfix(self.counts, refresh=False)
 
     def update(self, n: int = 1, **counts: int) -> None:
-        """``n`` more units done; ``counts`` add to the named tallies (e.g. ``stopped=1``)."""
+        """``n`` more units done; ``counts`` add to the named tallies (e.g. ``stopped=1``).
+
+        Parameters
+        ----------
+        n : int
+            Units done.
+        **counts : int
+            Added to the named tallies.
+        """
         self.done += n
         for name, value in counts.items():
             self.counts[name] = self.counts.get(name, 0) + value

@@ -32,7 +32,17 @@ def _columns(p: BoatParams, nx: int, ntheta: int) -> np.ndarray:
 
 
 def equilibrium_heave(p: BoatParams, heel: float, columns: np.ndarray) -> float:
-    """Height of CO (m) at which the heeled hull displaces its weight."""
+    """Height of CO (m) at which the heeled hull displaces its weight (trim level).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heel : float
+        Heel (rad).
+    columns : ndarray
+        The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column.
+    """
     rot = matrix_from_euler(heel, 0.0, 0.0)
     target = p.displaced_volume
     span = p.hull.freeboard + p.hull.canoe_draft + 2 * p.hull.half_beam * p.hull.flare
@@ -44,7 +54,18 @@ def equilibrium_heave(p: BoatParams, heel: float, columns: np.ndarray) -> float:
 
 
 def righting_moment(p: BoatParams, heel: float, columns: np.ndarray | None = None) -> float:
-    """Geometric righting moment about the CG at ``heel`` (N m, positive restores)."""
+    """Geometric righting moment about the CG at ``heel`` (N m, positive restores).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heel : float
+        Heel (rad).
+    columns : ndarray
+        The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column;
+        default 48 x 48 columns.
+    """
     if columns is None:
         columns = _columns(p, 48, 48)
     rot = matrix_from_euler(heel, 0.0, 0.0)
@@ -57,7 +78,21 @@ def righting_moment(p: BoatParams, heel: float, columns: np.ndarray | None = Non
 
 
 def righting_curve(p: BoatParams, heels) -> dict[str, np.ndarray]:
-    """Righting moments (N m) over ``heels`` (rad): geometric, Wille eq. 20, Saoud eq. 4."""
+    """Righting moments (N m) over ``heels`` (rad): geometric, Wille eq. 20, Saoud eq. 4.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heels : array_like
+        Heels (rad).
+
+    Returns
+    -------
+    dict
+        ``heel``, ``geometric``, ``sin_cos`` (Wille eq. 20), ``sin`` (Saoud eq. 4) and ``linear``
+        (rho g V GM_t phi).
+    """
     heels = np.asarray(heels, dtype=float)
     columns = _columns(p, 48, 48)
     stiffness = p.rho_water * GRAVITY * p.displaced_volume * p.gm_t
@@ -76,6 +111,17 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
 
     Two conditions: submerged volume = m / rho, and no pitch moment about the CG (the centre of
     buoyancy lies on the vertical through the CG). Newton's method from ``guess``.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heel : float
+        Heel (rad).
+    columns : ndarray
+        The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column.
+    guess : tuple of float
+        (height of CO, trim) to start from (m, rad).
     """
     target = p.displaced_volume
     cg = np.array([p.cg_x, 0.0, p.cg_z])
@@ -135,8 +181,20 @@ class FloatingTable:
 
 def floating_table(p: BoatParams, max_heel: float = np.radians(89.0),
                    step: float = np.radians(0.25)) -> FloatingTable:
-    """The :class:`FloatingTable` of ``p`` on a uniform heel grid (linear interpolation between
-    nodes 0.25 deg apart changes the righting moment by < 1e-5 of its value)."""
+    """The :class:`FloatingTable` of ``p`` on a uniform heel grid.
+
+    Linear interpolation between nodes 0.25 deg apart changes the righting moment by < 1e-5 of its
+    value.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    max_heel : float
+        Largest heel of the grid (rad); the table mirrors it to -max_heel.
+    step : float
+        Heel between nodes (rad).
+    """
     columns = _columns(p, 24, 16)  # the quadrature the physics step integrates
     n = int(round(max_heel / step))
     heels = np.arange(0, n + 1) * step
@@ -162,14 +220,29 @@ WILLE_WORKING_HEEL = np.radians(10.0)  # rad, phi_w of Wille (2016b) §4 (+-10 d
 
 
 def gz_curves(p: BoatParams, heels, working_heels=(WILLE_WORKING_HEEL,)) -> dict[str, np.ndarray]:
-    """Righting arms GZ (m) over ``heels`` (rad, >= 0): the geometric hull floating freely
-    (:func:`floating_table`), Wille (2016a) eq. 20, GM_t sin(phi) cos(phi), and Wille (2016b)
-    eq. 66 about each working heel phi_w in ``working_heels``.
+    """Righting arms GZ (m) over ``heels``: geometric hull, Wille (2016a) eq. 20, Wille (2016b) eq. 66.
+
+    The geometric hull floats freely (:func:`floating_table`); eq. 20 is GM_t sin(phi) cos(phi);
+    eq. 66 is taken about each working heel phi_w in ``working_heels``.
 
     Eq. 66 is printed as rho g V GM_t ((1 - 2 sin^2 phi_w) phi + C_1) with eq. 67
     C_1 = rho g V GM_t cos(phi_w) sin(phi_w); read as the tangent of eq. 20 at phi_w (the
     printed form doubles rho g V GM_t in C_1 and drops phi_w from phi - phi_w):
     GZ = GM_t ((1 - 2 sin^2 phi_w) (phi - phi_w) + sin(phi_w) cos(phi_w)).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heels : array_like
+        Heels (rad, >= 0).
+    working_heels : iterable of float
+        Working heels phi_w of eq. 66 (rad).
+
+    Returns
+    -------
+    dict
+        ``geometric``, ``eq20`` and ``eq66_<phi_w in deg>`` (m).
     """
     heels = np.asarray(heels, dtype=float)
     table = floating_table(p, max_heel=max(float(heels.max()), np.radians(1.0)),
@@ -186,8 +259,21 @@ def gz_curves(p: BoatParams, heels, working_heels=(WILLE_WORKING_HEEL,)) -> dict
 
 def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None,
               working_heels_deg=(10.0, 25.0)) -> None:
-    """Write the GZ-curve figure (PNG) of ``boat``: ours vs eq. 20 vs eq. 66 (and ``compare``,
-    another hull of the same boat, dashed). ``python -m sailmujoco.stability --gz-figure PATH``."""
+    """Write the GZ-curve figure (PNG) of ``boat``: ours vs eq. 20 vs eq. 66.
+
+    ``python -m sailmujoco.stability --gz-figure PATH``.
+
+    Parameters
+    ----------
+    path : path
+        The PNG written.
+    boat : str
+        A registered boat.
+    compare : BoatParams, optional
+        Another hull of the same boat, drawn dashed.
+    working_heels_deg : iterable of float
+        Working heels of eq. 66 (deg).
+    """
     import matplotlib
 
     matplotlib.use("Agg")
@@ -203,7 +289,7 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
     ax.plot(deg, c["geometric"], "k", lw=2, label="geometric hull (ours, floating freely)")
     if compare is not None:
         ax.plot(deg, gz_curves(compare, heels, ())["geometric"], "k--", lw=1,
-                label="geometric hull before issue 16")
+                label="geometric hull, CG on the waterline, vertical topsides")
     ax.plot(deg, c["eq20"], "C0", label="Wille (2016a) eq. 20: GM sin cos")
     for w, colour in zip(working_heels_deg, ("C1", "C2"), strict=False):
         ax.plot(deg, c[f"eq66_{w:g}"], colour, lw=1,
@@ -221,8 +307,9 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
     plt.close(fig)
 
 
-def _previous_wille_hull() -> BoatParams:
-    """The yacht as it was up to issue 16: CG on the waterline, vertical topsides."""
+def _waterline_cg_hull() -> BoatParams:
+    """The yacht with its CG on the waterline and vertical topsides, drawn dashed beside the
+    yacht to show what the CG height and the flare change in its GZ curve."""
     from .hull import design_for
     from .params import wille_yacht
 
@@ -239,5 +326,5 @@ if __name__ == "__main__":  # python -m sailmujoco.stability --gz-figure PATH [-
     parser.add_argument("--boat", default="wille_yacht")
     args = parser.parse_args()
     gz_figure(args.gz_figure, args.boat,
-              compare=_previous_wille_hull() if args.boat == "wille_yacht" else None)
+              compare=_waterline_cg_hull() if args.boat == "wille_yacht" else None)
     print(f"wrote {args.gz_figure}")

@@ -21,16 +21,25 @@ command prints one line that points to ``sailmujoco video`` and exits with statu
 from __future__ import annotations
 
 import argparse
-import ctypes
-import ctypes.util
 import math
-import os
 import sys
-import threading
 import time
-from pathlib import Path
+from contextlib import nullcontext
 
 import numpy as np
+
+from .arguments import POSITIVE_SECONDS, SEED, check_settings, number, setting
+from .options import World, choices
+from .screenshot import screenshot
+from .video import (
+    SceneRenderer,
+    Snapshot,
+    frames_between_substeps,
+    scene_of,
+    snapshot_observation,
+    snapshot_physics,
+)
+from .window import NoDisplay, Window, open_display
 
 KEY_SPACE, KEY_RIGHT = 32, 262  # GLFW key codes
 KEYS = """keys and mouse:
@@ -42,54 +51,33 @@ KEYS = """keys and mouse:
   Tab, Shift+Tab   show or hide MuJoCo's left and right panels
   Ctrl+P           MuJoCo's own screenshot (screenshot.png in the current folder)
   closing the window stops the run"""
-ASCII = {"°": " deg", "·": "-", "→": "->"}  # MuJoCo's overlay font is ASCII only
-
-
-class NoDisplay(RuntimeError):
-    """No window can be opened here (no display, or no OpenGL context on it)."""
-
-
 def _video_hint(args) -> str:
     return (f"record a video instead: sailmujoco video {args.boat} {args.task} "
             f"--controller {args.controller}{' --world ' + args.world if args.world != 'mujoco' else ''}"
             f" --out results/{args.boat}_{args.task}.mp4")
 
 
-def open_display() -> None:
-    """Check that GLFW can open a window with an OpenGL context here; else :class:`NoDisplay`."""
-    if not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
-        raise NoDisplay("no display (DISPLAY is not set)")
-    try:
-        import glfw
-        import mujoco.viewer  # noqa: F401  (it needs GLFW's library)
-    except Exception as err:  # ImportError, RuntimeError: GLFW's library is missing
-        raise NoDisplay(f"GLFW cannot load ({type(err).__name__}: {err})") from None
-    reporting = glfw.ERROR_REPORTING
-    glfw.ERROR_REPORTING = "raise"
-    try:
-        if not glfw.init():
-            raise NoDisplay("GLFW could not initialise")
-        glfw.window_hint(glfw.VISIBLE, glfw.FALSE)
-        window = glfw.create_window(16, 16, "sailmujoco probe", None, None)
-        if not window:
-            raise NoDisplay("GLFW could not open a window with an OpenGL context")
-        glfw.destroy_window(window)
-        glfw.default_window_hints()
-    except glfw.GLFWError as err:  # its message: "(code) b'description'"
-        text = str(err)
-        raise NoDisplay("GLFW: " + text[text.find("b'") + 2:-1] if "b'" in text else text) from None
-    finally:
-        glfw.ERROR_REPORTING = reporting
-
-
 class Keys:
-    """The keyboard state the loop reads; ``press`` is the viewer's key callback (its thread)."""
+    """The keyboard state the loop reads; ``press`` is the viewer's key callback (its thread).
+
+    Parameters
+    ----------
+    paused : bool
+        Start paused.
+    """
 
     def __init__(self, paused: bool = False):
         self.paused = paused
         self.steps = 0  # control steps asked for while paused
 
     def press(self, key: int) -> None:
+        """The viewer's key callback: space pauses or resumes, the right arrow asks for a step.
+
+        Parameters
+        ----------
+        key : int
+            GLFW key code.
+        """
         if key == KEY_SPACE:
             self.paused = not self.paused
             self.steps = 0
@@ -104,40 +92,6 @@ class Keys:
             self.steps -= 1
             return True
         return False
-
-
-class LatestTexts:
-    """Hands the overlay text to the viewer from a thread of its own: the viewer's ``set_texts``
-    waits for its next drawn frame, which would pace the simulation to the drawing rate."""
-
-    def __init__(self, viewer):
-        self._viewer = viewer
-        self._texts = None
-        self._ready = threading.Condition()
-        self._stop = False
-        self._thread = threading.Thread(target=self._run, name="sailmujoco-view-texts", daemon=True)
-        self._thread.start()
-
-    def put(self, texts) -> None:
-        with self._ready:
-            self._texts = texts
-            self._ready.notify()
-
-    def _run(self) -> None:
-        while True:
-            with self._ready:
-                self._ready.wait_for(lambda: self._stop or self._texts is not None)
-                if self._stop:
-                    return
-                texts, self._texts = self._texts, None
-            if self._viewer.is_running():
-                self._viewer.set_texts(texts)
-
-    def close(self, timeout: float = 1.0) -> None:
-        with self._ready:
-            self._stop = True
-            self._ready.notify()
-        self._thread.join(timeout)
 
 
 class RealTime:
@@ -156,7 +110,13 @@ class RealTime:
         self._last = None
 
     def wait(self, sim_time: float) -> None:
-        """Sleep until the wall clock reaches ``sim_time`` (from the anchor)."""
+        """Sleep until the wall clock reaches ``sim_time`` (from the anchor).
+
+        Parameters
+        ----------
+        sim_time : float
+            Simulated time (s).
+        """
         now = time.perf_counter()
         if self.anchor is None:
             self.anchor = (now, sim_time)
@@ -171,184 +131,91 @@ class RealTime:
         self._last = end
 
 
-def _x11_window_rect(title_prefix: str) -> tuple[int, int, int, int] | None:
-    """(x, y, width, height) on the X screen of the first window whose name starts with
-    ``title_prefix``, found through Xlib; None where Xlib or the window cannot be found."""
-    name = ctypes.util.find_library("X11")
-    if not name:
-        return None
-    x = ctypes.CDLL(name)
-    x.XOpenDisplay.restype = ctypes.c_void_p
-    x.XOpenDisplay.argtypes = [ctypes.c_char_p]
-    x.XDefaultRootWindow.restype = ctypes.c_ulong
-    x.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
-    window_p = ctypes.POINTER(ctypes.c_ulong)
-    x.XQueryTree.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p, window_p,
-                             ctypes.POINTER(window_p), ctypes.POINTER(ctypes.c_uint)]
-    x.XFetchName.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.POINTER(ctypes.c_char_p)]
-    x.XGetGeometry.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p] + \
-        [ctypes.POINTER(ctypes.c_int)] * 2 + [ctypes.POINTER(ctypes.c_uint)] * 4
-    x.XTranslateCoordinates.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_ulong,
-                                        ctypes.c_int, ctypes.c_int, ctypes.POINTER(ctypes.c_int),
-                                        ctypes.POINTER(ctypes.c_int), window_p]
-    x.XFree.argtypes = [ctypes.c_void_p]
-    x.XCloseDisplay.argtypes = [ctypes.c_void_p]
-    display = x.XOpenDisplay(None)
-    if not display:
-        return None
-    root = x.XDefaultRootWindow(display)
-
-    def find(window: int, depth: int = 0):
-        title = ctypes.c_char_p()
-        if x.XFetchName(display, window, ctypes.byref(title)) and title.value is not None:
-            found = title.value.decode(errors="replace").startswith(title_prefix)
-            x.XFree(title)
-            if found:
-                return window
-        if depth > 3:
-            return None
-        root_r, parent, children, count = ctypes.c_ulong(), ctypes.c_ulong(), window_p(), ctypes.c_uint()
-        if not x.XQueryTree(display, window, ctypes.byref(root_r), ctypes.byref(parent),
-                            ctypes.byref(children), ctypes.byref(count)):
-            return None
-        try:
-            for i in range(count.value):
-                hit = find(children[i], depth + 1)
-                if hit is not None:
-                    return hit
-        finally:
-            if children:
-                x.XFree(children)
-        return None
-
-    try:
-        window = find(root)
-        if window is None:
-            return None
-        ints = [ctypes.c_int() for _ in range(2)]
-        uints = [ctypes.c_uint() for _ in range(4)]
-        root_r = ctypes.c_ulong()
-        x.XGetGeometry(display, window, ctypes.byref(root_r), *(ctypes.byref(v) for v in ints),
-                       *(ctypes.byref(v) for v in uints))
-        left, top, child = ctypes.c_int(), ctypes.c_int(), ctypes.c_ulong()
-        x.XTranslateCoordinates(display, window, root, 0, 0, ctypes.byref(left), ctypes.byref(top),
-                                ctypes.byref(child))
-        return left.value, top.value, uints[0].value, uints[1].value
-    finally:
-        x.XCloseDisplay(display)
-
-
-def screenshot(path, title_prefix: str = "MuJoCo") -> str:
-    """Save the viewer window as it is on the X screen to ``path`` (PNG); returns what was saved
-    (the window, or the whole screen where the window cannot be found)."""
-    from PIL import ImageGrab
-
-    image = ImageGrab.grab(xdisplay=os.environ.get("DISPLAY"))
-    rect = _x11_window_rect(title_prefix)
-    what = "the whole screen"
-    if rect is not None:
-        left, top, width, height = rect
-        box = (max(left, 0), max(top, 0), min(left + width, image.width), min(top + height, image.height))
-        if box[2] > box[0] and box[3] > box[1]:
-            image = image.crop(box)
-            what = f"the window ({box[2] - box[0]} x {box[3] - box[1]} px)"
-    Path(path).parent.mkdir(parents=True, exist_ok=True)
-    image.convert("RGB").save(path)
-    return what
-
-
-def _ascii(text: str) -> str:
-    for old, new in ASCII.items():
-        text = text.replace(old, new)
-    return text
-
-
 def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
           seconds: float | None = None, seed: int = 0, fps: float = 30.0, forces: bool = True,
           overlay: bool = True, paused: bool = False, screenshot_path=None,
           controller_options: dict | None = None, **options) -> dict:
     """Run ``task`` on ``boat`` under ``controller`` in MuJoCo's viewer, at real time.
 
-    ``seconds`` stops the run (and closes the window) after that much simulated time; without
-    it the task runs to its end and the window stays open, showing the last state, until it
-    is closed. ``screenshot_path`` saves the window as a PNG at the end. ``options`` go to
-    :func:`sailmujoco.suite.load`. Returns ``sim_time`` (s), ``wall_time`` (s spent running,
-    pauses excluded), ``real_time_factor``, ``distance`` (m from the start), ``stopped`` (the
-    stop reason of an early end, or None) and ``screenshot`` (what was saved).
+    Parameters
+    ----------
+    boat, task, world : str
+        As :func:`sailmujoco.suite.load`.
+    controller : str
+        A registered controller (:func:`sailmujoco.sweep.make_controller`).
+    seconds : float, optional
+        Stop the run (and close the window) after this much simulated time; without it the
+        task runs to its end and the window stays open, showing the last state, until it is
+        closed.
+    seed : int
+        Seeds the task and the controller.
+    fps : float
+        Frames per simulated second.
+    forces, overlay : bool
+        Force arrows; text.
+    paused : bool
+        Start paused (space runs).
+    screenshot_path : path, optional
+        Save the window as a PNG at the end.
+    controller_options : dict, optional
+        Keywords of the controller's factory.
+    **options
+        Passed to :func:`sailmujoco.suite.load`.
 
-    Raises :class:`NoDisplay` where no window can be opened (before loading anything).
+    Returns
+    -------
+    dict
+        ``sim_time`` (s), ``wall_time`` (s spent running, pauses excluded),
+        ``real_time_factor``, ``distance`` (m from the start), ``stopped`` (the stop reason of
+        an early end, or None) and ``screenshot`` (what was saved).
+
+    Raises
+    ------
+    NoDisplay
+        No window can be opened (raised before anything is loaded).
     """
     if not (math.isfinite(fps) and fps > 0):
         raise ValueError(f"fps must be a number > 0, got {fps!r}")
     open_display()
-    import mujoco
-    import mujoco.viewer
-
     from .suite import load
     from .sweep import make_controller
-    from .video import (
-        SceneRenderer,
-        _frames_between_substeps,
-        _no_hook,
-        _yaw_of,
-        scene_of,
-        snapshot_observation,
-        snapshot_physics,
-    )
 
     env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
     policy = make_controller(controller, env, **(controller_options or {}))
     if hasattr(policy, "reset"):
         policy.reset(seed)
-    physics = env.physics
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
                           labels=f"{boat} · {task} · {controller} ({world})", offscreen=False)
     timestep = env.reset()
-    snap = snapshot_physics(physics) if mujoco_world else snapshot_observation(timestep.observation)
+    snap = snapshot_physics(env.physics) if mujoco_world else snapshot_observation(timestep.observation)
     start = snap.position.copy()
     scene.pose(snap)
 
     keys = Keys(paused)
-    before = set(threading.enumerate())
-    viewer = mujoco.viewer.launch_passive(scene.model, scene.data, key_callback=keys.press,
-                                          show_left_ui=False, show_right_ui=False)
-    window_threads = set(threading.enumerate()) - before  # the viewer's window and render loop
+    window = Window(scene, snap, keys.press, forces=forces, overlay=overlay)
     clock = RealTime()
-    legend = ("arrows: " + ", ".join(f"{name} {colour}" for name, colour in
-                                     (("sail", "red"), ("keel", "green"), ("rudder", "orange"))
-                                     if forces) + (", " if forces else "")
-              + "wind cyan (where it blows to)")
-    with viewer.lock():  # the videos' follow camera; it moves with the boat, the mouse turns it
-        cam = viewer.cam
-        cam.type = mujoco.mjtCamera.mjCAMERA_FREE
-        cam.lookat[:] = snap.position + np.array([0.0, 0.0, 0.45 * scene.h])
-        cam.distance = scene.follow_distance
-        cam.azimuth = math.degrees(_yaw_of(snap.rotation) + scene.follow_bearing + math.pi)
-        cam.elevation = scene.follow_elevation
-        viewer.opt.sitegroup[:] = 0
-    texts = LatestTexts(viewer)
-    followed = {"position": snap.position.copy()}
+    try:
+        snap, interrupted = _sail(env, policy, timestep, snap, window, keys, clock, fps, mujoco_world)
+        stopped = env.task.metrics().get("stopped") or ("interrupted" if interrupted else None)
+        what = _end(window, snap, stopped, seconds, screenshot_path, interrupted)
+    finally:
+        window.close()
+    sim_time = float(snap.time)
+    return {"sim_time": sim_time, "wall_time": clock.running_wall,
+            "real_time_factor": sim_time / clock.running_wall if clock.running_wall > 0 else float("nan"),
+            "distance": float(np.linalg.norm(snap.position[:2] - start[:2])), "stopped": stopped,
+            "screenshot": what}
 
-    def show(snap, note: str | None = None) -> None:
-        with viewer.lock():
-            scene.pose(snap)
-            viewer.cam.lookat[:2] += snap.position[:2] - followed["position"][:2]
-            followed["position"] = snap.position.copy()
-            user = viewer.user_scn
-            user.ngeom = 0
-            scene.decorate(user, snap)
-        if overlay:
-            lines = scene.text_lines(snap)
-            if note:
-                lines.append(note)
-            lines_and_legend = [(mujoco.mjtFontScale.mjFONTSCALE_150, mujoco.mjtGridPos.mjGRID_TOPLEFT,
-                      _ascii("\n".join(lines)), ""),
-                     (mujoco.mjtFontScale.mjFONTSCALE_100, mujoco.mjtGridPos.mjGRID_BOTTOMLEFT,
-                      legend, "")]
-            texts.put(lines_and_legend)
-        viewer.sync()
 
+PAUSE_NOTE = "PAUSED: space runs, right arrow steps"
+
+
+def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clock: RealTime,
+          fps: float, mujoco_world: bool) -> tuple[Snapshot, bool]:
+    """Run the episode in the window at real time; returns the last state and whether Ctrl+C
+    ended it. In the MuJoCo world the frames are drawn between the physics sub-steps."""
+    physics = env.physics
     frame = {"next": 0.0}
 
     def due() -> float:
@@ -357,63 +224,66 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     def emit() -> None:
         now = snapshot_physics(physics)
         frame["next"] = (math.floor(now.time * fps + 0.5) + 1) / fps
-        show(now)
+        window.show(now)
         clock.wait(now.time)
 
-    hook = _frames_between_substeps(physics, emit, due) if mujoco_world else _no_hook()
-    pause_note = "PAUSED: space runs, right arrow steps"
+    hook = frames_between_substeps(physics, emit, due) if mujoco_world else nullcontext()
     interrupted = False
+    window.show(snap)
+    with hook:
+        try:
+            while window.viewer.is_running() and not timestep.last():
+                if not keys.may_step():
+                    window.show(snap, PAUSE_NOTE)
+                    clock.restart()
+                    time.sleep(1.0 / fps)
+                    continue
+                timestep = env.step(policy(timestep))
+                snap = snapshot_physics(physics) if mujoco_world else \
+                    snapshot_observation(timestep.observation)
+                if not mujoco_world:  # sample and hold at the control steps
+                    window.show(snap)
+                    clock.wait(snap.time)
+        except KeyboardInterrupt:  # Ctrl+C in the terminal: stop as if the window closed
+            interrupted = True
+    return snap, interrupted
+
+
+def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, interrupted: bool):
+    """The last state with its note, the screenshot, and (without ``seconds``) the window held
+    open until it is closed; returns what the screenshot saved, or None."""
+    viewer = window.viewer
+    running = viewer.is_running() and not interrupted
+    if running:
+        window.show(snap, f"stopped at t = {snap.time:.1f} s: {stopped}" if stopped else
+                    ("finished: close the window" if seconds is None else None))
     what = None
-    try:
-        show(snap)
-        with hook:
-            try:
-                while viewer.is_running() and not timestep.last():
-                    if not keys.may_step():
-                        show(snap, pause_note)
-                        clock.restart()
-                        time.sleep(1.0 / fps)
-                        continue
-                    timestep = env.step(policy(timestep))
-                    snap = snapshot_physics(physics) if mujoco_world else \
-                        snapshot_observation(timestep.observation)
-                    if not mujoco_world:  # sample and hold at the control steps
-                        show(snap)
-                        clock.wait(snap.time)
-            except KeyboardInterrupt:  # Ctrl+C in the terminal: stop as if the window closed
-                interrupted = True
-        stopped = env.task.metrics().get("stopped") or ("interrupted" if interrupted else None)
-        running = viewer.is_running() and not interrupted
-        if running:
-            show(snap, f"stopped at t = {snap.time:.1f} s: {stopped}" if stopped else
-                 ("finished: close the window" if seconds is None else None))
-        if screenshot_path is not None and running:
-            time.sleep(1.0)  # let the viewer draw the last frame and its text
-            what = screenshot(screenshot_path)
-        if seconds is None and running:
-            try:
-                while viewer.is_running():  # hold the last state until the window is closed
-                    time.sleep(0.05)
-            except KeyboardInterrupt:
-                pass
-    finally:
-        texts.close()
-        viewer.close()
-        for thread in window_threads:  # the window is gone before Python (and GLFW) shut down
-            thread.join(5.0)
-    sim_time = float(snap.time)
-    return {"sim_time": sim_time, "wall_time": clock.running_wall,
-            "real_time_factor": sim_time / clock.running_wall if clock.running_wall > 0 else float("nan"),
-            "distance": float(np.linalg.norm(snap.position[:2] - start[:2])), "stopped": stopped,
-            "screenshot": what}
+    if screenshot_path is not None and running:
+        time.sleep(1.0)  # let the viewer draw the last frame and its text
+        what = screenshot(screenshot_path)
+    if seconds is None and running:
+        try:
+            while viewer.is_running():  # hold the last state until the window is closed
+                time.sleep(0.05)
+        except KeyboardInterrupt:
+            pass
+    return what
 
 
 # ----------------------------------------------------------------------------- command line
 def add_parser(subparsers) -> argparse.ArgumentParser:
-    """Add ``view`` to the ``sailmujoco`` sub-commands; returns its parser."""
-    from .cli import POSITIVE_SECONDS, SEED, _number
-    from .video import _setting
+    """Add ``view`` to the ``sailmujoco`` sub-commands.
 
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        From ``ArgumentParser.add_subparsers``.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The ``view`` parser.
+    """
     parser = subparsers.add_parser(
         "view", help="watch a task run in MuJoCo's interactive viewer (needs a display)",
         formatter_class=argparse.RawDescriptionHelpFormatter, epilog=KEYS,
@@ -424,12 +294,12 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("boat")
     parser.add_argument("task")
     parser.add_argument("--controller", required=True, help="registered controller (pid, saoud, ...)")
-    parser.add_argument("--world", default="mujoco", choices=("mujoco", "paper"),
+    parser.add_argument("--world", default="mujoco", choices=choices(World),
                         help="paper: the paper's reduced model, drawn as the 6-DOF boat posed from its state")
     parser.add_argument("--seconds", type=POSITIVE_SECONDS,
                         help="stop after this much simulated time and close the window (default: run "
                              "the task to its end and keep the window open until it is closed)")
-    parser.add_argument("--fps", type=_number(0.0, low_open=True, unit="frames per simulated second"),
+    parser.add_argument("--fps", type=number(0.0, low_open=True, unit="frames per simulated second"),
                         default=30.0, help="frames per simulated second (default 30)")
     parser.add_argument("--paused", action="store_true", help="start paused (space runs)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
@@ -437,16 +307,26 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--seed", type=SEED, default=0)
     parser.add_argument("--screenshot", metavar="PATH",
                         help="at the end, save the window as this PNG (X11 displays)")
-    parser.add_argument("--set", type=_setting, action="append", default=[], metavar="KEY=VALUE",
+    parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper (repeatable)")
     parser.set_defaults(func=run_cli)
     return parser
 
 
 def run_cli(args) -> int:
-    """The ``view`` sub-command."""
+    """The ``view`` sub-command.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        The arguments of :func:`add_parser`'s parser.
+
+    Returns
+    -------
+    int
+        0, or 2 where no window can be opened (one line on stderr that points to ``sailmujoco video``).
+    """
     from .sweep import validate
-    from .video import check_settings
 
     check_settings(args.set)
 

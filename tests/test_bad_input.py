@@ -180,8 +180,8 @@ def test_on_off_force_switches_take_true_or_false_only(option, value):
 
 
 def test_set_takes_tomls_true_and_false():
-    from sailmujoco.video import _setting
+    from sailmujoco.arguments import setting
 
-    assert _setting("windage=false") == ("windage", False)
-    assert _setting("keel_downwash=True") == ("keel_downwash", True)
-    assert _setting("case=3") == ("case", 3)
+    assert setting("windage=false") == ("windage", False)
+    assert setting("keel_downwash=True") == ("keel_downwash", True)
+    assert setting("case=3") == ("case", 3)

@@ -42,7 +42,7 @@ FOUR_PER_CORE = 4 * (os.cpu_count() or 1)  # local worker processes beyond this 
      f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), got '-1'"),
     (["study", "all", "--workers", "two"],
      f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), got 'two'"),
-    (["sweep", "x.toml", "--workers", "100000"],  # used to start 100000 processes and hang
+    (["sweep", "x.toml", "--workers", "100000"],  # beyond the bound: 100000 processes would only queue
      f"argument --workers: must be an integer >= 0 and <= {FOUR_PER_CORE} (0: all cores), "
      "got '100000'"),
 ])

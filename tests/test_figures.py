@@ -85,11 +85,11 @@ def _captured(monkeypatch):
 
 
 def test_the_robots_righting_curve_is_in_newton_metres(monkeypatch, tmp_path):
-    from sailmujoco.cli import _plot_righting_curve
+    from sailmujoco.health import plot_righting_curve
     from sailmujoco.params import get_boat
 
     saved = _captured(monkeypatch)
-    _plot_righting_curve(get_boat("saoud_robot"), tmp_path / "r.png")
+    plot_righting_curve(get_boat("saoud_robot"), tmp_path / "r.png")
     (_, fig), = saved
     ax = fig.axes[0]
     assert ax.get_ylabel() == "righting moment [N m]"

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from conftest import BOATS, gusty, load
 
-from sailmujoco import mjcf
+from sailmujoco import boat_geometry, mjcf
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.params import get_boat
 
@@ -108,7 +108,7 @@ def test_hull_mesh_is_closed_and_wound_outward(boat):
     from sailmujoco import hull
 
     p = get_boat(boat)
-    verts, faces = mjcf._hull_mesh(p)
+    verts, faces = boat_geometry.hull_mesh(p)
     v, f = verts.reshape(-1, 3), faces.reshape(-1, 3)
     signed = np.sum(np.einsum("ij,ij->i", v[f[:, 0]], np.cross(v[f[:, 1]], v[f[:, 2]]))) / 6.0
     # topsides: every section's trapezoid of height freeboard between half-breadths b and k b

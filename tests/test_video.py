@@ -194,14 +194,14 @@ def test_display_hull_is_closed_and_wound_outward():
     outward = [(0, 2, 1), (0, 3, 2), (0, 1, 5), (0, 5, 4), (1, 2, 6), (1, 6, 5), (2, 3, 7),
                (2, 7, 6), (3, 0, 4), (3, 4, 7)]
     inward = np.array(outward)[:, ::-1]
-    verts, faces = video._close_outward(v.ravel(), inward.ravel())
+    verts, faces = video.close_outward(v.ravel(), inward.ravel())
     verts, faces = verts.reshape(-1, 3), faces.reshape(-1, 3)
     volume = np.einsum("ij,ij->i", verts[faces[:, 0]], np.cross(verts[faces[:, 1]],
                                                                  verts[faces[:, 2]])).sum() / 6
     assert volume == pytest.approx(1.0)
     edges = {(f[a], f[b]) for f in faces for a, b in ((0, 1), (1, 2), (2, 0))}
     assert all((b, a) in edges for a, b in edges)  # closed and consistently wound
-    again = video._close_outward(verts.ravel(), faces.ravel())
+    again = video.close_outward(verts.ravel(), faces.ravel())
     np.testing.assert_array_equal(again[1], faces.ravel())  # closed and outward: unchanged
 
 

@@ -1,0 +1,391 @@
+"""The recording loop: a task run under a controller, drawn frame by frame and encoded as an mp4.
+
+Frame k shows the state at t = k / fps whatever the control rate. In the MuJoCo world each
+control step's physics sub-steps are split at the frame times (:func:`frames_between_substeps`),
+which leaves the trajectory unchanged bit for bit (:meth:`sailmujoco.physics.BoatPhysics.step`).
+A paper world moves by whole control steps (its integrator is adaptive), so frame k shows the
+state at the end of the control step that contains t = k / fps. A ``seconds`` run gives
+``round(seconds * fps)`` frames; a run that stops early (capsize) ends with its last frame,
+marked with the reason, held for one second. The mp4 is encoded by the ffmpeg binary that the
+``imageio-ffmpeg`` package ships.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+import time
+from collections.abc import Callable
+from contextlib import contextmanager, nullcontext
+from dataclasses import dataclass
+from pathlib import Path
+
+from ..progress import Progress
+from .gl import import_gl
+from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snapshot_physics
+
+
+@dataclass
+class Recording:
+    """What :func:`record` wrote."""
+
+    path: Path
+    frames: int
+    fps: float
+    sim_time: float  # s simulated
+    wall_time: float  # s, all of it (loading the boat and the controller included)
+    loop_time: float  # s, from the first frame to the end (simulating, drawing, encoding)
+    metrics: dict  # the task's metrics (``stopped`` holds the reason of an early end)
+
+    @property
+    def render_rate(self) -> float:
+        """Frames per wall-clock second while recording (simulation, drawing and encoding)."""
+        return self.frames / self.loop_time if self.loop_time > 0 else float("nan")
+
+
+@contextmanager
+def frames_between_substeps(physics, emit: Callable[[], None], due: Callable[[], float | None]):
+    """Split each ``physics.step(n)`` at the times returned by ``due()`` and call ``emit()`` there.
+
+    ``BoatPhysics`` gives the same trajectory whatever the split (forces before every sub-step).
+
+    Parameters
+    ----------
+    physics : BoatPhysics
+        The simulation; its ``step`` is wrapped while the context is open.
+    emit : callable
+        Draws a frame of the current state.
+    due : callable
+        The time of the next frame (s), or None when no more frames are due.
+    """
+    original = physics.step
+    dt = float(physics.timestep())
+
+    def step(nstep: int = 1) -> None:
+        remaining = int(nstep)
+        while remaining > 0:
+            t_frame = due()
+            if t_frame is None:
+                original(remaining)
+                return
+            # sub-steps until the time is within half a step of the frame time
+            count = math.ceil((t_frame - float(physics.data.time)) / dt - 0.5)
+            count = min(max(count, 1), remaining)
+            original(count)
+            remaining -= count
+            while (t := due()) is not None and float(physics.data.time) >= t - 0.5 * dt:
+                emit()
+
+    physics.step = step
+    try:
+        yield
+    finally:
+        del physics.step
+
+
+def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | None]:
+    """What a scene of ``env`` draws. A paper world is drawn as the named boat with an actuated sail.
+
+    Parameters
+    ----------
+    boat : str
+        The boat's name, as loaded.
+    env : environment
+        From :func:`sailmujoco.suite.load`.
+    options : dict
+        The environment options it was loaded with (``boat_options``).
+
+    Returns
+    -------
+    tuple
+        (whether it is the MuJoCo world, the boat's parameters, the sail mode, the task's
+        target area or None).
+    """
+    from ..params import get_boat
+    from ..physics import BoatPhysics
+
+    physics = env.physics
+    mujoco_world = isinstance(physics, BoatPhysics)
+    if mujoco_world:
+        params, sail_mode = physics.params, physics.sail_mode
+    else:
+        params, sail_mode = get_boat(boat, **(options.get("boat_options") or {})), "actuated"
+    target = None
+    if getattr(env.task, "target", None) is not None:
+        target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
+                  "radii": (env.task.d_target, env.task.d_prearrival)}
+    return mujoco_world, params, sail_mode, target
+
+
+def _even(name: str, value: int) -> int:
+    value = int(value)
+    if value < 16 or value % 2:
+        raise ValueError(f"{name} must be an even number of pixels >= 16 (H.264, yuv420p), got {value}")
+    return value
+
+
+def check_arguments(*, camera: str, fps, seconds, width, height, follow_distance,
+                    follow_bearing_deg: float, quality: float, options: dict) -> tuple[float, int, int]:
+    """Refuse bad arguments of :func:`record` before anything is loaded (one-line ``ValueError``).
+
+    Parameters
+    ----------
+    camera, fps, seconds, width, height, follow_distance, follow_bearing_deg, quality, options
+        As :func:`record`.
+
+    Returns
+    -------
+    tuple
+        (fps as a float, width, height).
+    """
+    if camera not in CAMERAS:
+        raise ValueError(f"unknown camera {camera!r}; choose one of {CAMERAS}")
+    try:
+        fps = float(fps)
+    except (TypeError, ValueError):
+        raise ValueError(f"fps must be a positive number, got {fps!r}") from None
+    if not (math.isfinite(fps) and fps > 0):
+        raise ValueError(f"fps must be a positive number, got {fps!r}")
+    if seconds is not None and not (math.isfinite(seconds) and seconds > 0):
+        raise ValueError(f"seconds must be a positive number of simulated seconds, got {seconds!r}")
+    width, height = _even("width", width), _even("height", height)
+    if follow_distance is not None and not (math.isfinite(follow_distance) and follow_distance > 0):
+        raise ValueError(f"follow_distance (--distance) must be a number > 0 m, got {follow_distance!r}")
+    if not math.isfinite(follow_bearing_deg):
+        raise ValueError(f"follow_bearing_deg (--bearing) must be a finite angle in degrees, "
+                         f"got {follow_bearing_deg!r}")
+    for key, option in (("time_limit", "seconds (--seconds)"), ("seed", "seed (--seed)")):
+        if key in options:
+            raise ValueError(f"{key} is set by the argument {option}, not as an environment option")
+    if not 1 <= quality <= 10:
+        raise ValueError(f"quality must be between 1 and 10, got {quality!r}")
+    return fps, width, height
+
+
+def _encoder():
+    """The ``imageio_ffmpeg`` module (its ffmpeg binary encodes the mp4)."""
+    try:
+        import imageio_ffmpeg
+    except ImportError as err:
+        raise ImportError("video needs imageio-ffmpeg: pip install imageio-ffmpeg") from err
+    return imageio_ffmpeg
+
+
+def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, controller_options,
+              options: dict):
+    """(env, policy, controller name) of the run, the policy reset with ``seed``."""
+    from ..suite import load
+    from ..sweep import make_controller
+
+    env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
+    if isinstance(controller, str):
+        name = controller
+        policy = make_controller(controller, env, **(controller_options or {}))
+    else:
+        name = getattr(controller, "__name__", type(controller).__name__)
+        policy = controller(env)
+    if hasattr(policy, "reset"):
+        policy.reset(seed)
+    return env, policy, name
+
+
+class _Frames:
+    """The frames of one recording: when the next one is due, drawing it and sending it to ffmpeg."""
+
+    def __init__(self, renderer: SceneRenderer, path: Path, fps: float, n_frames: int,
+                 quality: float, progress: bool):
+        self.renderer, self.fps, self.n_frames = renderer, fps, n_frames
+        self.count = 0
+        self.last = None  # (snapshot, frame) of the last frame drawn
+        self.writer = _encoder().write_frames(
+            str(path), (renderer.width, renderer.height), fps=fps, codec="libx264", quality=quality,
+            macro_block_size=1, ffmpeg_log_level="error",
+            output_params=["-preset", "faster", "-movflags", "+faststart"])
+        self.writer.send(None)
+        self.bar = Progress(n_frames, "video", show=progress, unit="frame")
+
+    def due(self) -> float | None:
+        return self.count / self.fps if self.count < self.n_frames else None
+
+    def emit(self, snap: Snapshot) -> None:
+        frame = self.renderer.render(snap)
+        self.writer.send(frame)
+        self.count += 1
+        self.last = (snap, frame)
+        self.bar.update()
+
+    def hold(self, frame, n: int) -> None:
+        """Send ``frame`` ``n`` more times."""
+        for _ in range(n):
+            self.writer.send(frame)
+            self.count += 1
+
+    def close(self) -> None:
+        self.writer.close()
+        self.renderer.close()
+        self.bar.close()
+
+
+@contextmanager
+def _partial_file(out_path: Path):
+    """A hidden name beside ``out_path`` (its folders made) to write to; renamed to ``out_path``
+    when the block ends without error, removed otherwise."""
+    out_path.parent.mkdir(parents=True, exist_ok=True)
+    partial = out_path.with_name(f".{out_path.stem}.partial{out_path.suffix or '.mp4'}")
+    ok = False
+    try:
+        yield partial
+        ok = True
+    finally:
+        if ok:
+            os.replace(partial, out_path)
+        else:
+            partial.unlink(missing_ok=True)
+
+
+def _sail(env, policy, frames: _Frames, mujoco_world: bool) -> float:
+    """Run the episode, drawing each frame when due; returns the wall time of the first frame."""
+    physics = env.physics
+    timestep = env.reset()
+    start_loop = time.perf_counter()
+    frames.emit(snapshot_physics(physics) if mujoco_world else snapshot_observation(timestep.observation))
+    hook = (frames_between_substeps(physics, lambda: frames.emit(snapshot_physics(physics)), frames.due)
+            if mujoco_world else nullcontext())
+    with hook:
+        while not timestep.last():
+            timestep = env.step(policy(timestep))
+            if not mujoco_world:  # sample and hold at the control steps
+                snap = snapshot_observation(timestep.observation)
+                while (t := frames.due()) is not None and snap.time >= t - 1e-9:
+                    frames.emit(snap)
+    return start_loop
+
+
+def _finish(env, frames: _Frames, still) -> dict:
+    """The task's metrics; a run that stopped early ends with its last frame, marked, for 1 s."""
+    metrics = env.task.metrics()
+    final = frames.last[1]
+    if metrics.get("stopped"):
+        snap = frames.last[0]
+        final = frames.renderer.render(snap, note=f"stopped at t = {snap.time:.1f} s: {metrics['stopped']}")
+        frames.hold(final, max(1, round(frames.fps)))
+    if still is not None:
+        from PIL import Image
+
+        Path(still).parent.mkdir(parents=True, exist_ok=True)
+        Image.fromarray(final).save(still, optimize=True)
+    return metrics
+
+
+def record(boat: str, task: str, controller, out_path, seconds: float | None = None,
+           world: str = "mujoco", fps: float = 25, width: int = 640, height: int = 480,
+           camera: str = "follow", overlay: bool = True, forces: bool = True, seed: int = 0, *,
+           controller_options: dict | None = None, still=None, quality: float = 6.0,
+           progress: bool = False, follow_distance: float | None = None,
+           follow_bearing_deg: float = 150.0, follow_elevation_deg: float = -14.0,
+           follow_lag: float = 3.0, top_center=None, top_extent: float | None = None,
+           **options) -> Recording:
+    """Run ``task`` on ``boat`` under ``controller`` and write the video to ``out_path`` (mp4).
+
+    Parameters
+    ----------
+    boat, task, world : str
+        As :func:`sailmujoco.suite.load`. In a paper world the drawn boat is ``boat``.
+    controller : str or callable
+        A registered controller name (:func:`sailmujoco.sweep.make_controller`, with
+        ``controller_options``) or a factory ``factory(env) -> controller``.
+    out_path : path
+        The mp4 (H.264, yuv420p); written to a temporary name and renamed when complete.
+    seconds : float, optional
+        Simulated time (default: the task's duration); ``round(seconds * fps)`` frames.
+    fps : float
+        Frames per simulated second, independent of the control rate.
+    width, height : int
+        Frame size, even pixels.
+    camera : {"follow", "top", "side"}
+        See :mod:`sailmujoco.video`.
+    overlay, forces : bool
+        Text box; sail/keel/rudder force arrows.
+    seed : int
+        Seeds the task (initial state, wind) and the controller.
+    controller_options : dict, optional
+        Keywords of a named controller's factory.
+    still : path, optional
+        Also write the last frame as a PNG.
+    quality : float
+        imageio-ffmpeg quality, 1-10 (6: x264 CRF 20).
+    progress : bool
+        Progress over frames on stderr: a bar on a terminal, a plain line per tenth elsewhere.
+    follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
+        Camera settings, see :class:`~sailmujoco.video.SceneRenderer`.
+    **options
+        Passed to :func:`sailmujoco.suite.load`: environment options (``hydrostatics``,
+        ``dofs``, ``control_timestep``, ``boat_options`` ...) and task options (``case=3``...).
+
+    Returns
+    -------
+    Recording
+        Path, frame count, simulated and wall time, and the task's metrics.
+
+    Raises
+    ------
+    RenderingUnavailable
+        No OpenGL platform (the message names the fix: ``MUJOCO_GL=egl`` or OSMesa).
+    """
+    fps, width, height = check_arguments(
+        camera=camera, fps=fps, seconds=seconds, width=width, height=height, follow_distance=follow_distance,
+        follow_bearing_deg=follow_bearing_deg, quality=quality, options=options)
+    import_gl()
+    _encoder()
+    start_wall = time.perf_counter()
+    env, policy, name = _load_run(boat, task, world, controller, seed, seconds, controller_options, options)
+    mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
+    duration = float(seconds) if seconds is not None else float(env.task.duration)
+    renderer = SceneRenderer(params, width, height, camera, forces=forces, overlay=overlay,
+                             sail_mode=sail_mode, target=target,
+                             labels=f"{boat} · {task} · {name} ({world})",
+                             follow_distance=follow_distance, follow_bearing_deg=follow_bearing_deg,
+                             follow_elevation_deg=follow_elevation_deg, follow_lag=follow_lag,
+                             top_center=top_center, top_extent=top_extent)
+    with _partial_file(Path(out_path)) as partial:
+        frames = _Frames(renderer, partial, fps, max(1, round(duration * fps)), quality, progress)
+        try:
+            start_loop = _sail(env, policy, frames, mujoco_world)
+            metrics = _finish(env, frames, still)
+        finally:
+            frames.close()
+    end = time.perf_counter()  # the encoder has finished
+    return Recording(path=Path(out_path), frames=frames.count, fps=fps, sim_time=float(env.physics.time()),
+                     wall_time=end - start_wall, loop_time=end - start_loop, metrics=metrics)
+
+
+def record_study_scenario(out, boat: str, task: str, controller, *, seconds: float = 60.0,
+                          name: str | None = None, **kwargs) -> Recording:
+    """The video a study writes for its ``--video`` option: ``<out>/<name>.mp4``.
+
+    A thin wrapper over :func:`record`. In a study::
+
+        if video:
+            from sailmujoco.video import record_study_scenario
+            record_study_scenario(out, "wille_yacht", "beam_reach_roll", "wille_roll", seconds=60)
+
+    Raises :class:`~sailmujoco.video.RenderingUnavailable` where no OpenGL platform loads.
+
+    Parameters
+    ----------
+    out : path
+        The study's results folder.
+    boat, task : str
+        As :func:`record`.
+    controller : str or callable
+        As :func:`record`.
+    seconds : float
+        Simulated time (s).
+    name : str, optional
+        The file's stem; default ``<boat>_<task>_<controller>``.
+    **kwargs
+        Passed to :func:`record` (``world``, ``camera``, task options...).
+    """
+    label = controller if isinstance(controller, str) else getattr(controller, "__name__", "controller")
+    path = Path(out) / f"{name or f'{boat}_{task}_{label}'}.mp4"
+    return record(boat, task, controller, path, seconds=seconds, **kwargs)
