@@ -264,11 +264,10 @@ def _eq4_sentence(eq4, faster, slower) -> str:
         rudder = max(abs(eq4(law, "rudder", a)) for law in LAWS for a in lost)
         return ("With eq. 4 switched into the 6-DOF world (rows 15-16) the robot still does not "
                 f"hold heading 0 in the {', '.join(f'{a:g}°' for a in lost)} segment(s) (rudder up "
-                f"to {rudder:.0f}°): a righting moment as large as Saoud's does not stop it. (Up to "
-                "0bcfa2b eq. 4 was applied about the heeled body axes; heeled and trimmed, that "
-                "moment had a yaw part, 24 % of the rudder's as measured on 0bcfa2b, which held the boat "
-                "on heading. "
-                "Restoring is a couple of vertical forces and has no yaw part.)")
+                f"to {rudder:.0f}°): a righting moment as large as Saoud's does not stop it. (Eq. 4 applied about the "
+                "heeled body axes instead, restoring_axes='body', has a yaw part when the boat is "
+                "heeled and trimmed, which can hold a boat on heading; restoring as a couple of "
+                "vertical forces, as here, has no yaw part.)")
     text = "With eq. 4 switched into the 6-DOF world (rows 15-16) it sails the whole trial on heading; "
     text += f"S is faster than Bm in {', '.join(f'{a:g}°' for a in faster) or 'no'} segment(s)"
     if slower:

@@ -61,7 +61,7 @@ def _table2_rows(a: Analysis, smoke: bool) -> list[dict]:
                              "cause": causes.get((world, law, key), "")})
         rows.append({"quantity": "error reduction, course vs heading controller", "world": label,
                      "paper": PAPER_REDUCTION, "ours": a.reduction[world],
-                     "cause": "done-when (paper world): ≥ 0.80" if world == "paper" else ""})
+                     "cause": "reproduced if ≥ 0.80 (paper world)" if world == "paper" else ""})
     return rows
 
 
@@ -174,8 +174,8 @@ def _causes(a: Analysis) -> str:
    {pc['error_deg']:.2f}° (heading / course controller; as built {hm['error_deg']:.2f}° /
    {cm['error_deg']:.2f}°), reduction {100 * (1 - pc['error_deg'] / ph['error_deg']):.0f} %, rudder rms
    {ph['rudder_rms_deg']:.0f}° / {pc['rudder_rms_deg']:.0f}°, surge {ph['mean_surge']:.2f} /
-   {pc['mean_surge']:.2f} m/s. In exploratory runs on the 6-DOF model of 0bcfa2b (before the hydrodynamics
-   of issue 15; not repeated here) it also limit-cycled at
+   {pc['mean_surge']:.2f} m/s. In exploratory runs with the other hydrodynamic forms of the physics
+   options (added-mass coupling, vertical damping, restoring axes; not repeated here) it also limit-cycled at
    100 Hz, with heave and pitch held (dofs = 4), with the paper's hydrostatics, and with
    K_d = 3e5, while the paper world with the rigid-hull yaw kinematics (``paper_model="rigid"``)
    at 50 Hz was quiet (rudder rms < 1°). Among what is left, the likeliest is the MuJoCo rudder, a

@@ -58,7 +58,7 @@ def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
     text.comparison(_table1_rows(a, smoke))
     text.paragraph(f"Reductions of the roll amplitude (the paper: sim 1 → sim 2 "
                    f"{100 * PAPER_REDUCTION['sim2']:.0f} %, sim 1 → sim 3 {100 * PAPER_REDUCTION['sim3']:.0f} %; "
-                   "done-when, paper world: both at least 60 %), from the seed means and per seed:")
+                   "reproduced if both are at least 60 % in the paper world), from the seed means and per seed:")
     text.table(_reduction_rows(r, smoke), ["world", "case", "seed", "sim 1 mean heel [deg]",
                                            "sim 1 → sim 2", "sim 1 (mean wind) → sim 2 (mean wind)",
                                            "sim 1 → sim 3", "sim 1 (mean wind) → sim 3"])
