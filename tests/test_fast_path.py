@@ -92,14 +92,14 @@ for boat, hydrostatics, forms, sail_mode in itertools.product(
     physics = BoatPhysics.load(boat, sail_mode=sail_mode,
                                forces=ForceSwitches(hydrostatics=hydrostatics, **switches))
     physics.step(3)
-    entries.append(physics._kernel._entry is not None)
-from sailmujoco import native, physics as physics_module
+    entries.append(physics._kernel.compiled)
+from sailmujoco import four_dof, native
 for boat, hydrostatics in itertools.product(sorted(BOATS), ("geometric", "paper")):
     four = BoatPhysics.load(boat, dofs=4, forces=ForceSwitches(hydrostatics=hydrostatics))
     four.step(3)
     four.model.opt.integrator = 0  # Euler: the split path calls it too
     four.step(3)
-entries.append(physics_module._FORCES_4DOF._entry is not None)
+entries.append(four_dof.FORCES_4DOF.compiled)
 print(json.dumps({"signatures": len(kernels.boat_forces.signatures),
                   "signatures_4dof": len(native.forces_4dof.signatures), "entries": entries}))
 """
