@@ -16,8 +16,8 @@ import pytest
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
-from sailmujoco.reference.wille import Wille4DOF
 from sailmujoco.reference.viel import VielWorld
+from sailmujoco.reference.wille import Wille4DOF
 from sailmujoco.tasks.base import PaperPhysics, measure
 from sailmujoco.tasks.world import VielPhysics, World
 
