@@ -49,7 +49,7 @@ def evaluate(boat: str, hydrostatics: str, seed: int, switches: dict | None = No
     return out
 
 
-# the papers' forms, and the boat as built (issue 16: residuary resistance, finite-wing foils,
+# the papers' forms, and the boat as built (residuary resistance, finite-wing foils,
 # keel downwash, windage) on both boats
 PAPER = {"resistance": "friction", "foils": "paper", "keel_downwash": False, "windage": False}
 BUILT = {"resistance": "dsyhs", "foils": "finite", "keel_downwash": True, "windage": True}
@@ -110,7 +110,7 @@ def test_the_compiled_kernel_stays_on_its_fast_path():
     (and the 4-DOF boats the compiled 4-DOF stage) with one numba signature, so each physics
     calls its compiled entry point directly. A second
     signature (an int where a float was, a new array type) would silently put every step back
-    through numba's type dispatch, about 4x slower (issue 18): this test fails instead. It runs
+    through numba's type dispatch, about 4x slower: this test fails instead. It runs
     in a fresh process so that no other test's calls are counted."""
     out = subprocess.run([sys.executable, "-c", FAST_PATH_CHECK], capture_output=True, text=True,
                          timeout=600, env={k: v for k, v in os.environ.items()

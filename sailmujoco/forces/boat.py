@@ -64,12 +64,12 @@ from .windage import (
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
 HYDROSTATIC_MODES = ("off", "paper", "geometric")
-# Each modelling choice of issue 15 keeps the form it replaced, so its effect can be measured
+# Each of these modelling choices keeps its alternative form, so its effect can be measured
 # (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
 ADDED_MASS_COUPLINGS = ("manoeuvring", "kirchhoff")  # heave/pitch forward-speed terms out / in
 VERTICAL_DAMPING_FORMS = ("world", "body")  # heave/pitch damping on vertical motion / body w, q
 RESTORING_AXES = ("horizontal", "body")  # paper restoring moments about level axes / body axes
-# The boat as built (issue 16); the first value of each is the papers' form:
+# The boat as built; the first value of each is the papers' form:
 RESISTANCE_FORMS = ("friction", "dsyhs")  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
 FOIL_FORMS = ("paper", "finite")  # the papers' foil coefficients / finite-wing slope and stall
 

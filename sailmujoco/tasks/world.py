@@ -299,15 +299,18 @@ class VielPhysics:
     # what the tasks read
     def measure(self) -> tuple[dict, dict]:
         """(observation, record) of the world now (:meth:`World.measure`): the observation
-        of :func:`sailmujoco.reference.viel.observation_from_world`, the record from the
-        accessors below."""
-        observation = observation_from_world(self.world)
+        of :meth:`observation`, the record from the accessors below."""
+        observation = self.observation()
         body = self.body_velocity()
         record = {"t": self.time(), "position": np.array(self.position()[:2]),
                   "heading": self.heading(), "heel": self.heel(),
                   "roll_rate": float(self.angular_velocity()[0]), "surge": float(body[0]),
                   "course": self.course(), "speed": self.speed_over_ground()}
         return observation, record
+
+    def observation(self) -> dict:
+        """The observation of :func:`sailmujoco.reference.viel.observation_from_world`."""
+        return observation_from_world(self.world)
 
     def diagnostic_record(self) -> dict:
         """None for Viel's 3-DOF world (:meth:`World.diagnostic_record`): an empty dict."""
