@@ -1,4 +1,4 @@
-"""One decorator for the force kernels.
+"""One decorator for the force kernels, and the compiled entry point of a kernel.
 
 Every force model is written once, in plain Python and numpy. ``kernel`` compiles it with
 numba (the fast path). With ``NUMBA_DISABLE_JIT=1`` in the environment numba hands back the
@@ -65,3 +65,49 @@ def kernel(fn=None, *, inline: bool = False):
                           inline="always" if inline else "never")(f)
 
     return build if fn is None else build(fn)
+
+
+def entry_point(dispatcher):
+    """The compiled entry point of a one-signature kernel (skips numba's type dispatch).
+
+    Parameters
+    ----------
+    dispatcher : numba dispatcher or function
+        A kernel made by :func:`kernel`. With NUMBA_DISABLE_JIT it is the plain function,
+        handed back unchanged.
+
+    Returns
+    -------
+    callable
+        A :class:`LazyEntry` around the dispatcher, or the plain function.
+    """
+    if not hasattr(dispatcher, "overloads"):
+        return dispatcher
+    return LazyEntry(dispatcher)
+
+
+class LazyEntry:
+    """Calls through the dispatcher once, then through the compiled entry point.
+
+    Parameters
+    ----------
+    dispatcher : numba dispatcher
+        The kernel; its first call compiles it (or loads it from the cache).
+    """
+
+    def __init__(self, dispatcher):
+        self._dispatcher = dispatcher
+        self._entry = None
+
+    @property
+    def compiled(self) -> bool:
+        """Whether calls now go straight to the compiled entry point."""
+        return self._entry is not None
+
+    def __call__(self, *args):
+        if self._entry is None:
+            result = self._dispatcher(*args)
+            if len(self._dispatcher.signatures) == 1:
+                self._entry = self._dispatcher.overloads[self._dispatcher.signatures[0]].entry_point
+            return result
+        return self._entry(*args)

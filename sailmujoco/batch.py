@@ -24,7 +24,7 @@ import numpy as np
 
 from . import native
 from .forces import boat as kernels
-from .physics import _RK4, BoatPhysics
+from .physics import RK4, BoatPhysics
 
 
 class BoatBatch:
@@ -83,36 +83,30 @@ class BoatBatch:
         which = np.ones(len(boats), dtype=bool) if which is None else np.asarray(which, dtype=bool)
         if which.shape != (len(boats),):
             raise ValueError(f"which must be one bool per boat ({len(boats)}), got {which.shape}")
-        rk4 = {b.model.ptr.opt.integrator == _RK4 for b in boats}
+        rk4 = {b.model.ptr.opt.integrator == RK4 for b in boats}
         if len(rk4) != 1:
             raise ValueError("all boats of a batch must use the same integrator")
         rk4 = rk4.pop()
         active = [i for i, (boat, chosen) in enumerate(zip(boats, which, strict=True))
                   if chosen and boat.stop_reason is None]  # a stopped boat does not step again
         self._status[:] = -1
+        rows = {}
         for i in active:
-            boat = boats[i]
-            boat._prepare(nstep * boat.model.ptr.opt.timestep)
-            np.copyto(boat._warnings_before, boat._warnings)
+            rows[i] = boats[i].begin_batch_step(nstep)
             self._status[i] = kernels.STATUS_OK
         if not active:
             return self.running
         models = np.array([b.model.ptr._address for b in boats], dtype=np.int64)
         datas = np.array([b.data.ptr._address for b in boats], dtype=np.int64)
         slots = np.zeros(len(boats), dtype=np.int64)
-        with native.Stepping([int(datas[i]) for i in active], [boats[i]._row for i in active]) as held:
+        with native.Stepping([int(datas[i]) for i in active], [rows[i] for i in active]) as held:
             slots[active] = held
             native.batch_steps(models, datas, nstep, slots, rk4, self._saved, self._status,
                                self._done, self._warned)
         for i, boat in enumerate(boats):
             if self._status[i] == -1:
                 continue
-            boat._fresh = False
-            if self._status[i] != kernels.STATUS_OK:
-                boat._record_stop(int(self._status[i]))
-            elif self._warned[i] and boat._warnings_cause_exception:  # as step()'s PhysicsError
-                boat._record_stop(kernels.STATUS_NONFINITE, "non-finite or out-of-range state "
-                                  f"({boat._warnings_message()})")
+            boat.end_batch_step(int(self._status[i]), bool(self._warned[i]))
         return self.running
 
 

@@ -36,13 +36,14 @@ import numpy as np
 
 from .boat_geometry import hull_inertial, hull_mesh, rig_inertia, sheet_angle, sheet_geometry, sheet_length
 from .constants import GRAVITY
+from .options import Dofs, SailMode, choices
 from .params import BoatParams, get_boat
 
 __all__ = ["REFERENCE_WIND", "SAIL_MODES", "SERVO_ERROR", "SERVO_FREQUENCY", "TIMESTEP", "boat_spec",
            "boat_xml", "compile_model", "hull_inertial", "scene_xml", "sheet_angle", "sheet_geometry",
            "sheet_length", "write_default_xml", "xml_root"]
 
-SAIL_MODES = ("actuated", "sheeted")
+SAIL_MODES = choices(SailMode)
 TIMESTEP = 0.005  # s, physics step of both boats
 SERVO_FREQUENCY = 30.0  # rad/s, bandwidth of the rudder and sail servos (>> 1/T)
 SERVO_ERROR = math.radians(1.0)  # rad, static error of the sail servo at the reference load
@@ -80,7 +81,7 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     """
     if sail_mode not in SAIL_MODES:
         raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
-    if dofs not in (4, 6):
+    if dofs not in choices(Dofs):
         raise ValueError(f"dofs must be 6 (free hull) or 4 (heave and pitch held), got {dofs!r}")
     spec = _empty_spec(p)
     visual = _visual_default(spec)

@@ -1,22 +1,21 @@
 """MuJoCo's C API called from compiled code: a whole control step in one call.
 
-:meth:`sailmujoco.physics.BoatPhysics.step` used to run, per RK4 stage, a Python callback that
-called the force kernel (26 arrays handed to numba) and ``mj_factorM``: about 8 us of Python
-per stage, 4 stages per sub-step, 20 sub-steps per control step (issue 18). Here the same work
-runs without Python:
+Each RK4 stage of :meth:`sailmujoco.physics.BoatPhysics.step` calls the force kernel (26
+arrays) and ``mj_factorM``; from a Python callback that costs about 8 us per stage, 4 stages
+per sub-step, 20 sub-steps per control step. Here the same work runs without Python:
 
 * :func:`rk4_steps` calls ``mj_step`` n times from numba through the C library's own symbols;
   MuJoCo's control callback (``mjcb_control``, called at each of RK4's four stages) is a numba
   ``cfunc`` (:func:`stage_callback`), that finds the stepping boat's arrays in a registry (below), calls
   the force kernel with this stage's time and state, and refactorises the augmented mass matrix.
-  It is MuJoCo's own RK4 and the same kernel on the same arrays as before, so the trajectory is
+  It is MuJoCo's own RK4 and the same kernel on the same arrays as the Python callback, so the trajectory is
   the same to the last bit (tests/test_native_step.py).
 * :func:`split_steps` does the same for the first-order integrators: ``mj_step1``, the kernel,
   ``mj_factorM``, ``mj_step2``.
 * The 4-DOF boat (heave and pitch held) steps the same way: its row says so (``R_DOFS``), and
   its stage (:func:`_forces_4dof`) fills the kernel's pseudo free joint from MuJoCo's four hull
   joints, calls the kernel, adds the floating hydrostatics and maps the forces and the added
-  mass back onto the joints, as ``BoatPhysics._forces_4dof_python`` does in Python.
+  mass back onto the joints, as the Python reference in :mod:`sailmujoco.four_dof` does.
 
 The registry is one int64 array (:data:`REGISTRY`): a row per boat *while it steps*, holding the
 address of its MjData, a status word, a stage counter and the address and shape of every array

@@ -6,11 +6,11 @@ import numpy as np
 import pytest
 from conftest import CALM, load
 
-from sailmujoco.tasks.sailing import diagnostic_record, diagnostic_summary
+from sailmujoco.tasks.sailing import diagnostic_summary
 
 
 def accessor_diagnostic_record(physics) -> dict:
-    """diagnostic_record as it was built from the named accessors (the reference)."""
+    """The diagnostic record built from the named accessors (the reference)."""
     c_n, c_t = physics.sail_coefficients()
     terms = physics.force_terms()
     p = physics.params
@@ -52,7 +52,7 @@ def test_diagnostic_record_equals_the_accessors_bit_for_bit(boat, dofs, hydrosta
     for _ in range(60):
         physics.set_control(rng.uniform(low, high))
         physics.step(int(rng.integers(1, 25)))
-        new = diagnostic_record(physics)
+        new = physics.diagnostic_record()
         physics._fresh = False  # the reference refreshes the state again
         ref = accessor_diagnostic_record(physics)
         assert list(new) == list(ref)
@@ -67,7 +67,7 @@ def _rows(physics, steps=200):
     rows = []
     for _ in range(steps):
         physics.step(5)
-        rows.append(diagnostic_record(physics))
+        rows.append(physics.diagnostic_record())
     return rows
 
 
@@ -87,7 +87,7 @@ def test_omega3_term_vanishes_at_zero_heel():
     physics = load("wille_yacht", hydrostatics="geometric", sail=False)
     physics.place((0, 0), 0.0, 2.0)
     physics.data.qvel[5] = 0.3  # turning hard, upright
-    row = diagnostic_record(physics)
+    row = physics.diagnostic_record()
     assert row["omega3_term"] == 0.0
 
 
@@ -122,14 +122,14 @@ def test_roll_shares_sum_to_one_and_restoring_balances_a_heeled_hull():
                    rudder=False, damping=False)
     with physics.reset_context():
         physics.data.qpos[3:7] = frames.quat_from_euler(math.radians(5.0), 0.0, 0.0)
-    summary = diagnostic_summary([diagnostic_record(physics)])
+    summary = diagnostic_summary([physics.diagnostic_record()])
     shares = [v for k, v in summary.items() if k.startswith("roll_share_")]
     assert sum(shares) == pytest.approx(1.0)
     assert summary["roll_share_hydrostatics"] == pytest.approx(1.0)
     # the restoring moment about CO is buoyancy plus the weight acting at the (deep) CG:
     # weight's roll moment = m g z_G sin(phi), which here does most of the righting
     p = physics.params
-    restoring = diagnostic_record(physics)["restoring"]
+    restoring = physics.diagnostic_record()["restoring"]
     buoyancy = physics.force_term("hydrostatics")[3]
     weight = p.mass * 9.81 * p.cg_z * math.sin(math.radians(5.0))
     assert restoring - buoyancy == pytest.approx(weight, rel=1e-9)

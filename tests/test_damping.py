@@ -1,4 +1,4 @@
-"""Hull damping: heave and pitch damping act on the vertical motion only (issue 15, defect 2)."""
+"""Hull damping: heave and pitch damping act on the vertical motion only."""
 
 import math
 
@@ -63,7 +63,7 @@ def test_upright_values_and_dissipation(rng):
 def test_boat_floats_at_its_weight_in_steady_sailing(boat, wind_speed):
     """Sailing straight in a steady wind (no gusts), heeled and trimmed: the buoyancy equals the
     weight to 0.1 % and the damping has no vertical force. With damping on body w and q (the
-    form up to 0bcfa2b) the boat is pushed deeper."""
+    ``body`` form) the boat is pushed deeper."""
     def run(vertical_damping_form):
         env = suite.load(boat, "heading_hold", "mujoco", seed=0, time_limit=90.0, gusts=False,
                          wander=False, wind_speed=wind_speed, wind_from_deg=60.0,

@@ -1,4 +1,4 @@
-"""Energy of the free, undamped boat: an oscillation keeps its energy (issue 15, defect 6).
+"""Energy of the free, undamped boat: an oscillation keeps its energy.
 
 The boat floats in calm water with the foils, the sail force and the hull damping switched
 off, and the rudder and sail servos undamped (kv = 0: a lossless spring on each hinge). What
@@ -34,11 +34,11 @@ column and world height z(s) = z_CO + R20 x + R21 y + R22 s,
 -K sin(phi) (Saoud) on the heel angle gives 1/2 K sin^2(phi) or K (1 - cos(phi)); the pitch
 moment k_theta sin(theta) about the level axis y1 gives k_theta (1 - cos(theta)), with
 K = rho g V GM_t, k_z = rho g A_wp, k_theta = rho g V GM_L. The moments act about level axes,
-so none does work on a yaw rate. (Taken about body axes, as up to 0bcfa2b, their component
+so none does work on a yaw rate. (Taken about body axes, the form kept to measure it, their component
 about the world vertical does: +3.2 % in 60 s for the yacht given 0.05 rad/s of yaw rate,
 whatever the integrator.) Both modes start with a yaw rate.
 
-The tolerance is the issue's: under 1 % of the oscillation energy E(0) - E(home) in 60 s at
+The tolerance: under 1 % of the oscillation energy E(0) - E(home) in 60 s at
 the default step. MuJoCo's first-order integrators treat the velocity-dependent forces and
 the configuration-dependent mass matrix at the start of the step and miss it by up to 17 %
 (the last test shows the check can tell).

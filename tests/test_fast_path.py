@@ -49,7 +49,7 @@ def evaluate(boat: str, hydrostatics: str, seed: int, switches: dict | None = No
     return out
 
 
-# the papers' forms, and the boat as built (issue 16: residuary resistance, finite-wing foils,
+# the papers' forms, and the boat as built (residuary resistance, finite-wing foils,
 # keel downwash, windage) on both boats
 PAPER = {"resistance": "friction", "foils": "paper", "keel_downwash": False, "windage": False}
 BUILT = {"resistance": "dsyhs", "foils": "finite", "keel_downwash": True, "windage": True}
@@ -92,14 +92,14 @@ for boat, hydrostatics, forms, sail_mode in itertools.product(
     physics = BoatPhysics.load(boat, sail_mode=sail_mode,
                                forces=ForceSwitches(hydrostatics=hydrostatics, **switches))
     physics.step(3)
-    entries.append(physics._kernel._entry is not None)
-from sailmujoco import native, physics as physics_module
+    entries.append(physics._kernel.compiled)
+from sailmujoco import four_dof, native
 for boat, hydrostatics in itertools.product(sorted(BOATS), ("geometric", "paper")):
     four = BoatPhysics.load(boat, dofs=4, forces=ForceSwitches(hydrostatics=hydrostatics))
     four.step(3)
     four.model.opt.integrator = 0  # Euler: the split path calls it too
     four.step(3)
-entries.append(physics_module._FORCES_4DOF._entry is not None)
+entries.append(four_dof.FORCES_4DOF.compiled)
 print(json.dumps({"signatures": len(kernels.boat_forces.signatures),
                   "signatures_4dof": len(native.forces_4dof.signatures), "entries": entries}))
 """
@@ -110,7 +110,7 @@ def test_the_compiled_kernel_stays_on_its_fast_path():
     (and the 4-DOF boats the compiled 4-DOF stage) with one numba signature, so each physics
     calls its compiled entry point directly. A second
     signature (an int where a float was, a new array type) would silently put every step back
-    through numba's type dispatch, about 4x slower (issue 18): this test fails instead. It runs
+    through numba's type dispatch, about 4x slower: this test fails instead. It runs
     in a fresh process so that no other test's calls are counted."""
     out = subprocess.run([sys.executable, "-c", FAST_PATH_CHECK], capture_output=True, text=True,
                          timeout=600, env={k: v for k, v in os.environ.items()

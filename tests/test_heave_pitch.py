@@ -1,4 +1,4 @@
-"""Free heave and pitch of the 6-DOF yacht under way (issue 15, defect 1).
+"""Free heave and pitch of the 6-DOF yacht under way.
 
 A displacement yacht towed at constant speed keeps a small, steady trim: towing tanks run them
 to Froude 0.75 (Delft series) without pitch divergence. With the unbounded-fluid Kirchhoff
@@ -67,8 +67,7 @@ def _wille_sim1(dofs):
 
 def test_free_heave_and_pitch_cost_no_speed_in_wille_sim1():
     """Wille (2016b) sim 1 (gusty 10 m/s beam reach, seed 1, lambda_100 sail, roll control off),
-    last 50 s: the free yacht sails within 5 % of the heave-and-pitch-held one and trims < 3 deg
-    (on 0bcfa2b: 5.61 against 7.20 m/s and 3.7 deg)."""
+    last 50 s: the free yacht sails within 5 % of the heave-and-pitch-held one and trims < 3 deg."""
     free, trim = _wille_sim1(6)
     held, _ = _wille_sim1(4)
     assert free["stopped"] is None and held["stopped"] is None

@@ -67,7 +67,7 @@ def test_small_heel_restoring_moment(boat, mode):
 @pytest.mark.parametrize("mode", ["paper", "geometric"])
 def test_undamped_roll_free_decay_period(mode):
     """T = 2 pi sqrt((Ixx - K_pdot) / (rho g V GM_t)) within 3 %, Wille yacht (CG 0.575 m
-    below CO since issue 16)."""
+    below CO)."""
     physics = only_hull("wille_yacht", hydrostatics=mode)
     p = physics.params
     heel0 = math.radians(3.0)
@@ -142,7 +142,7 @@ def test_paper_restoring_is_a_couple_of_vertical_forces(yaw_deg):
     # pitch: about -y1 (the axis pitch turns about, bow up), -k_theta sin(theta)
     y1 = np.cross([0.0, 0.0, 1.0], heading)
     assert about_cg @ -y1 == pytest.approx(-5.0e5 * math.sin(pitch), rel=1e-12)
-    # the body-axes form (up to 0bcfa2b) has a yaw part: the switch keeps it measurable
+    # the body-axes form has a yaw part: the switch keeps it measurable
     _, old, _, _ = _paper_restoring(20.0, 5.0, yaw_deg, body_axes=True)
     assert abs(old[2]) > 0.01 * abs(roll)
 
@@ -157,7 +157,7 @@ def _hull_volume_below_water(p, heave, trim, heel):
 @pytest.mark.parametrize("heel_deg", [10.0, 20.0, 30.0])
 def test_four_dof_geometric_boat_floats_at_its_weight(boat, heel_deg):
     """Heave and pitch held, the hydrostatics come from the hull floating at this heel: its
-    displacement is the weight's volume within 1 % (on 0bcfa2b the held pose gave +34 % at 20
+    displacement is the weight's volume within 1 % (the held pose would give +34 % at 20
     deg), and its righting moment is the freely floating hull's (stability.righting_moment)."""
     physics = load(boat, hydrostatics="geometric", dofs=4)
     p = physics.params

@@ -1,9 +1,9 @@
 """The lean observation of a MuJoCo boat, and of Wille's paper world, equals the accessor-built
-one, bit for bit.
+one, bit for bit; every world meets the World protocol.
 
-:func:`sailmujoco.tasks.measurement.measure_boat` (one rotation, the physics' arrays) against
+``BoatPhysics.measure`` (one rotation, the physics' arrays) against
 :func:`sailmujoco.tasks.base.measure` (the named accessors, the definition of the observation)
-and the record against the accessor-built record of before the lean path (kept here), on
+and the record against the record built from the accessors (kept here), on
 real trajectories: heeled and moving in gusts, with a current, 4 and 6 DOF, both
 hydrostatics, a sheeted sail, and the states the tasks' own episodes pass through.
 """
@@ -16,9 +16,10 @@ import pytest
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
+from sailmujoco.reference.viel import VielWorld
 from sailmujoco.reference.wille import Wille4DOF
 from sailmujoco.tasks.base import PaperPhysics, measure
-from sailmujoco.tasks.measurement import measure_boat, measure_wille
+from sailmujoco.tasks.world import VielPhysics, World
 
 
 def assert_identical(new, ref, path="observation"):
@@ -38,7 +39,7 @@ def assert_identical(new, ref, path="observation"):
 
 
 def accessor_record(physics) -> dict:
-    """SailTask.record as it was built from the accessors before the lean path."""
+    """The task's record built from the named accessors (the reference)."""
     body = physics.body_velocity()
     return {"t": physics.time(), "position": np.array(physics.position()[:2]),
             "heading": physics.heading(), "heel": physics.heel(),
@@ -49,7 +50,7 @@ def accessor_record(physics) -> dict:
 def check_now(physics):
     """The lean measurement of the current state against the accessors, twice: on a state
     whose forces are stale (right after a step) and on the refreshed one."""
-    observation, record = measure_boat(physics)
+    observation, record = physics.measure()
     physics._fresh = False
     assert_identical(observation, measure(physics))
     assert_identical(record, accessor_record(physics), "record")
@@ -86,7 +87,7 @@ def test_boat_states(boat, dofs, hydrostatics, sail_mode):
     ("wille_yacht", "beam_reach_roll", {"world": "paper"})])
 def test_task_episodes(boat, task, options):
     """Each step's observation and record through suite.load(...).step() against the accessors
-    (with the task's references), MuJoCo boats and Wille's paper world (measure_wille)."""
+    (with the task's references), MuJoCo boats and the paper worlds."""
     env = suite.load(boat, task, seed=2, **options)
     if options.get("world") == "paper":
         assert isinstance(env.physics, PaperPhysics)
@@ -106,7 +107,7 @@ def test_task_episodes(boat, task, options):
 def test_every_scalar_is_its_own_array():
     """The 0-d arrays are distinct objects (as measure's were): writing one changes no other."""
     physics = BoatPhysics.load("saoud_robot")
-    observation, _ = measure_boat(physics)
+    observation, _ = physics.measure()
     observation["heel"][...] = 99.0
     assert float(observation["true_state"]["heel"]) != 99.0
     scalars = [v for v in (*observation.values(), *observation["true_state"].values())
@@ -118,7 +119,7 @@ def test_every_scalar_is_its_own_array():
                                         ("saoud_robot", "paper")])
 def test_wille_paper_world_states(boat, model):
     """Wille's 4-DOF world (heeled, turning, in a gusty wandering wind over a current, with an
-    external wrench): measure_wille against the accessors of the world behind PaperPhysics."""
+    external wrench): its measure() against the accessors of the world behind PaperPhysics."""
     wind = WindConfig(speed=11.0, direction_from=math.radians(70.0), seed=3, current_east=0.4,
                       current_north=-0.25)
     world = Wille4DOF(boat, wind=wind, model=model)
@@ -132,10 +133,24 @@ def test_wille_paper_world_states(boat, model):
         if k:
             world.set_control(rng.uniform(low, high))
             world.step(int(rng.integers(1, 30)))
-        observation, record = measure_wille(world)
+        observation, record = world.measure()
         assert_identical(observation, measure(physics))
         assert_identical(record, accessor_record(physics), "record")
         heels.append(abs(world.heel()))
     assert max(heels) > math.radians(3.0)  # heeled states, not only upright ones
     assert world.speed_over_ground() > 0.3
     assert np.any(observation["true_state"]["sail_wrench"] != 0.0)
+
+
+def test_every_world_meets_the_protocol():
+    """The MuJoCo boat and both paper worlds are Worlds: a task drives them all alike."""
+    worlds = [BoatPhysics.load("saoud_robot"), PaperPhysics(Wille4DOF("wille_yacht")),
+              VielPhysics(VielWorld())]
+    for world in worlds:
+        assert isinstance(world, World), type(world).__name__
+        observation, record = world.measure()
+        assert set(record) == {"t", "position", "heading", "heel", "roll_rate", "surge",
+                               "course", "speed"}
+        assert "true_state" in observation
+    assert worlds[0].diagnostic_record()["restoring"] == worlds[0].diagnostic_record()["restoring"]
+    assert worlds[1].diagnostic_record() == worlds[2].diagnostic_record() == {}

@@ -1,9 +1,9 @@
 """The compiled control step (sailmujoco/native.py) is the Python-driven step, bit for bit.
 
 The reference is the same MuJoCo step with the stage work (force kernel, added mass,
-refactorisation) called from Python, ``BoatPhysics.compiled_loop = False``: the path every
-result up to issue 18 came from. Equality is exact (``np.array_equal``), not a tolerance: the
-compiled loop calls the same C functions and the same kernel on the same arrays.
+refactorisation) called from Python, ``BoatPhysics.compiled_loop = False``. Equality is exact
+(``np.array_equal``), not a tolerance: the compiled loop calls the same C functions and the
+same kernel on the same arrays.
 """
 
 from __future__ import annotations

@@ -4,8 +4,8 @@ Two checks on the same scenarios (gusty and wandering wind, current, the Wille w
 and ``rigid`` models on both paper boats, Viel's two rudder laws, RK4 and RK45, a state that runs
 away), each a run of a few control periods with changing commands, then the diagnostics:
 
-* against trajectories written by the Python right-hand sides this issue replaced (commit 2c11c0a,
-  ``data/paper_worlds_before_issue18.json``, float.hex, so exact), by running this file as a
+* against trajectories written by the worlds' Python right-hand sides, which the kernels took
+  the place of (``data/paper_worlds_before_issue18.json``, float.hex, so exact), by running this file as a
   script: ``python tests/test_paper_world_identity.py --write`` (only to be rerun on purpose);
   a trajectory can absorb a last-bit change of a rate (the RK4 increment is far below the state's
   last bit), so each world's right-hand side and force terms are also compared at random states

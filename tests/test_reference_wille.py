@@ -21,7 +21,7 @@ def four_dof_params():
     """The yacht with only what a 4-DOF model has: no heave/pitch added mass or damping,
     massless turning parts (the paper's actuators move the sail and rudder kinematically), and
     the CG at CO on the waterline, where the paper writes its equations (§2); our yacht's CG
-    sits on its ballast keel below it (issue 16)."""
+    sits on its ballast keel below it."""
     p = get_boat("wille_yacht")
     a = list(p.added_mass)
     a[2] = a[4] = 0.0

@@ -20,7 +20,7 @@ import numpy as np
 from .. import hull as hull_geometry
 from .._jit import kernel
 from ..constants import GRAVITY
-from ..options import Hydrostatics
+from ..options import AddedMassCoupling, Foils, Hydrostatics, Resistance, RestoringAxes, VerticalDamping
 from ..options import choices as literal_choices
 from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
@@ -66,14 +66,14 @@ from .windage import (
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
 HYDROSTATIC_MODES = literal_choices(Hydrostatics)  # the index is the kernel's code for the mode
-# Each modelling choice of issue 15 keeps the form it replaced, so its effect can be measured
+# Each of these modelling choices keeps its alternative form, so its effect can be measured
 # (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
-ADDED_MASS_COUPLINGS = ("manoeuvring", "kirchhoff")  # heave/pitch forward-speed terms out / in
-VERTICAL_DAMPING_FORMS = ("world", "body")  # heave/pitch damping on vertical motion / body w, q
-RESTORING_AXES = ("horizontal", "body")  # paper restoring moments about level axes / body axes
-# The boat as built (issue 16); the first value of each is the papers' form:
-RESISTANCE_FORMS = ("friction", "dsyhs")  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
-FOIL_FORMS = ("paper", "finite")  # the papers' foil coefficients / finite-wing slope and stall
+ADDED_MASS_COUPLINGS = literal_choices(AddedMassCoupling)  # heave/pitch forward-speed terms out / in
+VERTICAL_DAMPING_FORMS = literal_choices(VerticalDamping)  # heave/pitch damping on vertical motion / w, q
+RESTORING_AXES = literal_choices(RestoringAxes)  # paper restoring moments about level axes / body axes
+# The boat as built; the first value of each is the papers' form:
+RESISTANCE_FORMS = literal_choices(Resistance)  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
+FOIL_FORMS = literal_choices(Foils)  # the papers' foil coefficients / finite-wing slope and stall
 
 # ---- layout of the packed parameter array P -------------------------------------------
 (P_RHO_W, P_RHO_A, P_NU_W, P_G, P_MASS, P_CG_X, P_CG_Z,

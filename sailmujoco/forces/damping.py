@@ -7,7 +7,7 @@ Heave and pitch damping (d33, d55) are ours: the papers hold heave and pitch. Th
 wave-radiation damping, which is a reaction to the hull's *vertical* motion. So they act on the
 motion that exists, not on body-frame w and q: a heeled and trimmed boat sailing straight has
 body w = U sin(trim) ... and body q = r sin(heel) in a turn while nothing moves vertically, and
-damping on those (the form used up to 0bcfa2b) pushed the boats 2-3 % deep in steady sailing.
+damping on those (the ``body`` form, kept to measure it) pushes the boats 2-3 % deep in steady sailing.
 Here (``vertical_damping``):
 
     F = -d33 dz_F/dt e_z      at the centre of flotation F (world vertical, through F)
@@ -117,7 +117,7 @@ def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu
     ``nu_r`` = (u, v, w, p, q, r) relative to the water. ``linear`` = (d11, d22, d33, d55, d66):
     eq. 13 gives d11, d22, d66; heave and pitch (d33, d55) are ours (the papers hold them),
     acting on the vertical motion (:func:`vertical_damping`), or, with
-    ``body_frame_vertical``, on body w and q as up to 0bcfa2b (kept to measure the difference).
+    ``body_frame_vertical``, on body w and q (kept to measure the difference).
     """
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
     fy_cf, mz_cf = crossflow_drag(v, r, rho, crossflow_cd, strip_x, strip_w, strip_draft)

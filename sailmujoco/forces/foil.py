@@ -256,7 +256,7 @@ def sail_forces(flow, sail_angles, tangential, suction_efficiency, suction_stall
             out[i, k] = force[k]
 
 
-# ---- finite-wing forms (issue 16, ForceSwitches.foils = "finite") ----------------------------
+# ---- finite-wing forms (ForceSwitches.foils = "finite") -------------------------------------
 #
 # Lift slope of a finite wing: Helmbold (1942), "Der unverwundene Ellipsenflügel als tragende
 # Fläche", Jahrbuch der deutschen Luftfahrtforschung, I 111-113:

@@ -110,7 +110,7 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
     + k_theta (1 - cos(theta)) + 1/2 k_z (z_G - z_G0)^2 - W z_G: an undamped boat keeps its
     energy (tests/test_energy.py). In the papers' 4-DOF models the body x axis *is* horizontal
     (theta = 0), so this is their eq. 20 / eq. 4. ``body_axes`` puts them about body x and y
-    instead, as up to 0bcfa2b: heeled and trimmed, that form has a world-vertical (yaw) part,
+    instead: heeled and trimmed, that form has a world-vertical (yaw) part,
     +725 N m on the yacht at heel -5 deg, pitch -1 deg, 44 % of the rudder's yaw moment under
     sail; it is kept only to measure that difference.
     """

@@ -219,7 +219,7 @@ def gust_cosines(t, frequency, phase, cache):
     ``cache[0]`` holds the time the cosines are for (NaN: none yet). The cosines depend on t
     alone, not on the height, so one force evaluation (sail, topsides and mast each at their
     own height) and RK4's two mid-step stages share them: 300 of the 400 cosines of a sub-step
-    were recomputed values (issue 18). The same expression as before, so the same bits.
+    would be recomputed values. The same expression either way, so the same bits.
     """
     if cache[0] == t:
         return
@@ -264,7 +264,7 @@ def gust_sums3(z0, z1, z2, cache, amplitude, log_z):
 
     Each height's sum adds the same terms in the same order as :func:`gust_sum`, so each is
     bit for bit that sum; the three chains of additions run side by side instead of one after
-    the other (the sum is bound by the latency of its additions, issue 18).
+    the other (the sum is bound by the latency of its additions).
     """
     j0, s0 = _gust_place(z0, log_z)
     j1, s1 = _gust_place(z1, log_z)

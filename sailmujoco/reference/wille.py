@@ -47,16 +47,21 @@ import math
 import numpy as np
 
 from .. import frames
+from ..errors import SimulationStopped  # the same stop as in 6 DOF
 from ..forces.foil import naca0015
 from ..forces.wind import WANDER_DT, WindConfig, WindField
 from ..hull import strip_quadrature
+from ..observation import PI, observation_dict, wrap, wrench_rows
+from ..options import PaperModel, choices
 from ..params import BoatParams, get_boat
-from ..physics import ForceSwitches, SimulationStopped  # the same switches and stop as in 6-DOF
+from ..physics import ForceSwitches  # the same switches as in 6 DOF
 from . import wille_model
 from .integrators import DOMAIN_ERROR, INTEGRATORS, MESSAGES, STATUS_RAN_AWAY, integrate, steps_for
 from .wille_model import TERMS
 
 STATE = ("x", "y", "phi", "psi", "u", "v", "p", "r", "sigma", "lam")
+_WRENCH_KEYS, _WRENCH_ROWS = wrench_rows(TERMS)
+_N_TERMS = len(TERMS)
 RK4_MAX_STEP = 0.05  # s, the longest RK4 step: a quarter of the fastest lag (the rudder's T_sigma 0.2 s)
 
 
@@ -84,8 +89,8 @@ class Wille4DOF:
     def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
                  wind: WindConfig | None = None, switches=None, model: str = "paper",
                  timestep: float = 0.005, integrator: str = "rk4", rtol: float = 1e-6, atol: float = 1e-8):
-        if model not in ("paper", "rigid"):
-            raise ValueError(f"model must be 'paper' or 'rigid', got {model!r}")
+        if model not in choices(PaperModel):
+            raise ValueError(f"model must be one of {choices(PaperModel)}, got {model!r}")
         if integrator not in INTEGRATORS:
             raise ValueError(f"integrator must be one of {INTEGRATORS}, got {integrator!r}")
         self.integrator = integrator
@@ -347,3 +352,64 @@ class Wille4DOF:
 
     def apparent_wind_speed(self) -> float:
         return float(np.hypot(*self.apparent_wind_masthead()[:2]))
+
+    # ------------------------------------------------------------------ the task's measurement
+    def measure(self) -> tuple[dict, dict]:
+        """(observation, record) of the world now, as the MuJoCo boat's
+        :meth:`~sailmujoco.accessors.BoatAccessors.measure`: what
+        :func:`sailmujoco.tasks.base.measure` and the accessors give, bit for bit, from one
+        rotation, one masthead flow and one packing of the kernels' arguments for the force terms
+        and the sail flow.
+
+        Returns
+        -------
+        observation : dict
+            The observation of the controllers (without the task's references).
+        record : dict
+            The task's per-step record (``t``, ``position``, ``heading``, ``heel``, ``roll_rate``,
+            ``surge``, ``course``, ``speed``).
+        """
+        state, t, wind = self.state, self._time, self.wind
+        heel = float(state[2])  # heel(); pitch() is 0
+        yaw = float(wrap(PI / 2.0 - state[3]))  # yaw(): frames.yaw_from_heading
+        heading = float(wrap(state[3]))  # heading()
+        rot = frames.matrix_from_euler(heel, 0.0, yaw)  # rotation()
+        body = self.body_velocity()
+        rates = self.angular_velocity()
+        current = wind.current
+        current_body = rot.T @ current
+        flow = self.masthead_flow(rot, body, rates)  # apparent_wind_masthead()
+        awa = float(np.arctan2(float(flow[1]), -float(flow[0])))  # frames.apparent_wind_angle
+        aws = float(np.hypot(*flow[:2]))
+        true_wind = wind.velocity(t, self.params.sail.ce_height * math.cos(heel))  # sail_wind()
+        frd, (vws_u, vws_v) = self.terms_and_sail_flow(t, state)  # forces(), _sail_flow()
+        # force_terms(): FRD (X, Y, K, N, M) -> FLU (Fx, Fy, Fz, Mx, My, Mz), a row of zeros after
+        terms = np.zeros((_N_TERMS + 1, 6))
+        terms[:_N_TERMS, 0] = frd[:, 0]
+        terms[:_N_TERMS, 1] = -frd[:, 1]
+        terms[:_N_TERMS, 3] = frd[:, 2]
+        terms[:_N_TERMS, 4] = -frd[:, 4]
+        terms[:_N_TERMS, 5] = -frd[:, 3]
+        ground = self.ground_velocity()
+        position = np.array([state[1], state[0]])
+        observation = observation_dict(
+            body, current_body, rates, (yaw, heel, 0.0, state[8], state[9], heading, awa, aws), wind,
+            t, np.asarray(true_wind[:2], dtype=np.float64), np.array([vws_u, -vws_v]),
+            dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)), position, ground)
+        record = {"t": t, "position": position.copy(), "heading": heading, "heel": heel,
+                  "roll_rate": float(rates[0]), "surge": float(body[0]),
+                  "course": float(math.atan2(ground[1], ground[0])),
+                  "speed": float(np.hypot(*ground))}
+        return observation, record
+
+    def diagnostic_record(self) -> dict:
+        """The assumption study's per-step diagnostics: none for a paper world.
+
+        Returns
+        -------
+        dict
+            Empty (the MuJoCo boat's :meth:`~sailmujoco.accessors.BoatAccessors.diagnostic_record`
+            measures what this model holds fixed).
+        """
+        return {}
+

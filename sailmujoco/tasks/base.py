@@ -1,10 +1,12 @@
 """The task layer: dm_control-style tasks that run on any world (MuJoCo 6-DOF or a paper world).
 
-A *world* is anything with the named SI accessors of :class:`sailmujoco.physics.BoatPhysics`
-(``position``, ``heading``, ``heel``, ``body_velocity`` ... see :func:`measure`) plus
-``step``, ``time``, ``timestep``, ``set_control``, ``place`` and ``stop_reason``. MuJoCo boats
-are ``BoatPhysics``; the papers' reduced models are wrapped by :class:`PaperPhysics` so that
-``dm_control.rl.control.Environment`` can drive them.
+A *world* meets :class:`sailmujoco.tasks.world.World`: ``step``, ``time``, ``timestep``,
+``set_control``, ``place``, ``action_bounds``, ``stop_reason``, and ``measure``, which gives
+the observation defined by :func:`measure` (from the named SI accessors) and the task's record.
+MuJoCo boats are :class:`sailmujoco.physics.BoatPhysics`; the papers' reduced models are
+wrapped by :class:`~sailmujoco.tasks.world.PaperPhysics` and
+:class:`~sailmujoco.tasks.world.VielPhysics` so that ``dm_control.rl.control.Environment`` can
+drive them.
 
 Every task here documents its observation and action (unit, frame), splits its reward into
 named terms (``reward_terms``; the reward is their sum) and keeps metrics over the episode.
@@ -12,7 +14,6 @@ named terms (``reward_terms``; the reward is their sum) and keeps metrics over t
 
 from __future__ import annotations
 
-import copy
 import math
 from collections import OrderedDict
 
@@ -22,9 +23,9 @@ from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..physics import BoatPhysics, SimulationStopped
-from ..reference.wille import Wille4DOF
-from .measurement import WRENCH_KEYS, WRENCH_NAMES, measure_boat, measure_wille
+from ..errors import SimulationStopped
+from ..observation import WRENCH_KEYS, WRENCH_NAMES
+from .world import PaperPhysics, World  # noqa: F401  (PaperPhysics: imported from here too)
 
 
 def _scalar(x) -> np.ndarray:
@@ -34,10 +35,21 @@ def _scalar(x) -> np.ndarray:
 def measure(world) -> OrderedDict:
     """The observation of controllers/base.py from a world's accessors (our frames, SI).
 
-    The definition of the observation, and its path for worlds other than a MuJoCo boat; a
-    :class:`~sailmujoco.physics.BoatPhysics` is measured by the equal, faster
-    :func:`~sailmujoco.tasks.measurement.measure_boat`, Wille's paper world by
-    :func:`~sailmujoco.tasks.measurement.measure_wille`."""
+    The definition of the observation: each world's :meth:`~sailmujoco.tasks.world.World.measure`
+    gives it (the MuJoCo boat and Wille's paper world by equal, faster paths, compared with
+    this one in tests/test_measurement.py).
+
+    Parameters
+    ----------
+    world : object
+        A world with the named accessors of :class:`sailmujoco.physics.BoatPhysics`
+        (``rotation``, ``body_velocity``, ``heel``, ... ``force_terms``) and a ``wind``.
+
+    Returns
+    -------
+    OrderedDict
+        The observation, ``true_state`` nested.
+    """
     rot = world.rotation()
     body = world.body_velocity()
     rates = world.angular_velocity()
@@ -95,41 +107,6 @@ def check_number(name: str, value, low: float | None = None, high: float | None 
         rng = f" {allowed}{' ' + unit if unit else ''}" if allowed else (f" (in {unit})" if unit else "")
         raise ValueError(f"{name} must be a finite number{rng}, got {given!r}")
     return value
-
-class PaperPhysics(control.Physics):
-    """A paper world (reduced ODE model) behind dm_control's Physics interface."""
-
-    def __init__(self, world):
-        self.world = world
-
-    def step(self, n_sub_steps=1):
-        self.world.step(n_sub_steps)
-
-    def time(self):
-        return self.world.time()
-
-    def timestep(self):
-        return self.world.timestep()
-
-    def set_control(self, control):
-        self.world.set_control(control)
-
-    def reset(self):
-        self.world.reset()
-
-    def after_reset(self):
-        pass
-
-    def copy(self, share_model=False):
-        """An independent copy in the same state (as ``BoatPhysics.copy``; a paper world holds
-        no model to share, so ``share_model`` changes nothing)."""
-        return copy.deepcopy(self)
-
-    def __getattr__(self, name):  # the named accessors of the world
-        if name == "world":
-            raise AttributeError(name)
-        return getattr(self.world, name)
-
 
 class SailEnvironment(control.Environment):
     """``control.Environment`` that ends the episode, rather than raising, when the simulation
@@ -269,14 +246,7 @@ class SailTask(control.Task):
 
     def record(self, physics) -> dict:
         """What ``summarise`` needs from one step (our frames, SI)."""
-        row = self.measurement(physics)[1]
-        if row is not None:  # a MuJoCo boat or Wille's paper world: measured with the observation
-            return dict(row)
-        body = physics.body_velocity()
-        return {"t": physics.time(), "position": np.array(physics.position()[:2]),
-                "heading": physics.heading(), "heel": physics.heel(),
-                "roll_rate": float(physics.angular_velocity()[0]), "surge": float(body[0]),
-                "course": physics.course(), "speed": physics.speed_over_ground()}
+        return dict(self.measurement(physics)[1])
 
     def action_spec(self, physics):
         """Two commands: the rudder angle [rad], then the sail angle [rad] (actuated sail) or,
@@ -284,9 +254,9 @@ class SailTask(control.Task):
         low, high = action_bounds(physics)
         return specs.BoundedArray((2,), np.float64, low, high, name=action_name(physics))
 
-    def measurement(self, physics) -> tuple[OrderedDict, dict | None]:
-        """(observation with the task's references, record of a MuJoCo boat or None) of the
-        current state.
+    def measurement(self, physics: World) -> tuple[dict, dict]:
+        """(observation with the task's references, record) of the current state: the
+        world's :meth:`~sailmujoco.tasks.world.World.measure`.
 
         dm_control asks for the record (after_step), the reward and the observation of one
         state in turn: it is measured once and handed to all three; get_observation hands it
@@ -295,13 +265,7 @@ class SailTask(control.Task):
         measured = self._measured
         if measured is not None and measured[0] == physics.time():
             return measured[1], measured[2]  # nothing moved since
-        if isinstance(physics, BoatPhysics):
-            obs, row = measure_boat(physics)
-        elif isinstance(physics, PaperPhysics) and isinstance(physics.world, Wille4DOF):
-            obs, row = measure_wille(physics.world)
-        else:  # a world with an observation of its own (Viel's), or the accessors
-            obs = physics.observation() if hasattr(physics, "observation") else measure(physics)
-            row = None
+        obs, row = physics.measure()
         for key, value in self.references(physics).items():
             obs[key] = np.asarray(value, dtype=np.float64)
         self._measured = (physics.time(), obs, row)
@@ -342,11 +306,7 @@ def action_name(physics) -> str:
 
 
 def action_bounds(physics):
-    """(low, high) of [rudder, sail] for any world."""
-    model = getattr(physics, "model", None)
-    if model is not None and hasattr(model, "actuator_ctrlrange"):
-        low, high = np.asarray(model.actuator_ctrlrange).T
-        return low.astype(float), high.astype(float)
+    """(low, high) of [rudder, sail] for any world (its ``action_bounds``)."""
     return physics.action_bounds()
 
 

@@ -30,14 +30,14 @@ counter-clockwise, so a compass bearing it *comes from* shrinks by the same amou
 
 from __future__ import annotations
 
-import copy
 import math
 
 import numpy as np
 
+from .. import frames
 from ..forces.wind import WindConfig
-from ..physics import SimulationStopped
 from .base import SailTask, check_number
+from .world import VielPhysics  # noqa: F401  (imported from here too)
 
 # case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
 CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
@@ -72,8 +72,6 @@ class PositionKeeping(SailTask):
     def initialize_episode(self, physics):
         super().initialize_episode(physics)
         heading = self.random.uniform(-math.pi, math.pi)
-        from .. import frames
-
         physics.place(tuple(self.start), float(frames.yaw_from_heading(heading)), 0.5)
 
     def references(self, physics):
@@ -97,101 +95,3 @@ class PositionKeeping(SailTask):
             out.update(entered_at=float("nan"), max_distance_after_entry=float("nan"),
                        mean_distance_after_entry=float("nan"))
         return out
-
-
-class VielPhysics:
-    """Viel's 3-DOF world (:class:`sailmujoco.reference.viel.VielWorld`) with the accessors and
-    the dm_control Physics methods the tasks use. Heel, pitch and their rates are zero."""
-
-    legacy_step = False
-
-    def __init__(self, world, timestep: float = 0.05):
-        self.world = world
-        self._dt = timestep
-        self._control = np.zeros(2)
-        self.stop_reason = None
-
-    @classmethod
-    def for_control(cls, world, control_timestep: float, longest: float = 0.05) -> VielPhysics:
-        """The world stepped at the largest sub-step <= ``longest`` [s] that divides the control
-        period (dm_control needs a whole number of sub-steps; the world integrates in steps of
-        at most 0.01 s inside each, so the sub-step only sets where the action may change)."""
-        return cls(world, timestep=control_timestep / math.ceil(control_timestep / longest))
-
-    # dm_control Physics
-    def step(self, n_sub_steps=1):
-        if self.stop_reason:
-            raise SimulationStopped(self.stop_reason, self.world.time)
-        try:
-            self.world.step(self._control, n_sub_steps * self._dt)
-        except (FloatingPointError, ValueError) as err:
-            self.stop_reason = f"non-finite state ({err})"
-            raise SimulationStopped(self.stop_reason, self.world.time) from None
-
-    def time(self):
-        return self.world.time
-
-    def timestep(self):
-        return self._dt
-
-    def set_control(self, control):
-        control = np.asarray(control, dtype=float)
-        if control.shape != (2,) or not np.isfinite(control).all():
-            raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
-        self._control = control.copy()
-
-    def reset(self):
-        self.world.reset()
-        self._control = np.zeros(2)
-        self.stop_reason = None
-
-    def after_reset(self):
-        pass
-
-    def copy(self, share_model=False):
-        """An independent copy in the same state (``share_model`` changes nothing here)."""
-        return copy.deepcopy(self)
-
-    def reset_context(self):
-        from dm_control.rl.control import Physics
-
-        return Physics.reset_context(self)
-
-    def action_bounds(self):
-        p = self.world.params
-        high = np.array([p.rudder_max, p.sail_max])
-        return -high, high
-
-    def place(self, position=(0.0, 0.0), yaw: float = 0.0, surge: float = 0.0):
-        self.world.reset(state=[position[0], position[1], yaw, surge, 0.0, 0.0])
-
-    # what the tasks read
-    def observation(self):
-        from ..reference.viel import observation_from_world
-
-        return observation_from_world(self.world)
-
-    def position(self):
-        return np.array([*self.world.position(), 0.0])
-
-    def heading(self):
-        return self.world.heading()
-
-    def heel(self):
-        return 0.0
-
-    def body_velocity(self):
-        return np.array([self.world.forward_speed(), self.world.sway_speed(), 0.0])
-
-    def angular_velocity(self):
-        return np.array([0.0, 0.0, self.world.yaw_rate()])
-
-    def ground_velocity(self):
-        return self.world.velocity()
-
-    def course(self):
-        ve, vn = self.world.velocity()
-        return float(math.atan2(vn, ve))
-
-    def speed_over_ground(self):
-        return float(np.hypot(*self.world.velocity()))

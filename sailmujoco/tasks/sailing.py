@@ -26,10 +26,8 @@ import math
 import numpy as np
 
 from .. import frames
-from ..forces import boat as kernels
 from ..forces.wind import WindConfig
 from .base import SailTask, amplitude, check_number, wrap
-from .measurement import euler_of, rotation_of
 
 MAX_WIND = 60.0  # m/s, U10: above a hurricane's; the force models are not meant for more
 
@@ -90,53 +88,26 @@ class HeadingHold(SailTask):
 
     def record(self, physics) -> dict:
         row = super().record(physics)
-        if self.diagnostics and hasattr(physics, "sail_coefficients"):
-            row.update(diagnostic_record(physics))
+        if self.diagnostics:
+            row.update(physics.diagnostic_record())
         return row
 
 
-def diagnostic_record(physics) -> dict:
-    """What the assumption study measures at one step of a MuJoCo boat (our frames, SI).
-
-    Read from one rotation and the force kernel's arrays (as :func:`measure_boat` reads the
-    observation): the accessors it replaces (``sail_coefficients``, ``force_terms``,
-    ``rotation``, ``heel``, ``pitch``, ``drift_angle``, ...; tests/test_assumptions.py keeps
-    that version as the reference) gave the same values bit for bit, at a few times the cost.
-    """
-    physics._ensure_fresh()  # the force terms and diagnostics of this very state
-    diag, terms = physics._diag, physics._terms
-    c_n, c_t = float(diag[kernels.D_CN]), float(diag[kernels.D_CT])
-    p = physics.params
-    qpos, qvel = physics._free_state()
-    rates = qvel[3:6]
-    ixx, iyy, izz = p.inertia
-    rot = rotation_of(qpos)  # rotation(), without filling the 4-DOF pseudo state again
-    heel, pitch, _ = euler_of(rot)
-    # MuJoCo applies the weight itself, at the CG: its roll moment about CO completes the
-    # restoring moment (buoyancy + weight) that the papers' g(eta) stands for
-    weight_body = rot.T @ np.array([0.0, 0.0, -p.mass * 9.81])
-    gravity_mx = -p.cg_z * weight_body[1]  # (r_G x F)_x with r_G = (cg_x, 0, cg_z)
-    restoring = terms[kernels.T_HYDRO][3] + gravity_mx
-    u, v, _ = rot.T @ qvel[0:3]  # body velocity
-    return {
-        "ct_cn": abs(c_t) / abs(c_n) if abs(c_n) > 0.05 else float("nan"),
-        "pitch": pitch, "heave": float(qpos[2]),
-        "drift": float(math.atan2(v * math.cos(heel), u)),  # Wille eq. 45, FLU sign
-        "keel_aoa": float(diag[kernels.D_ALPHA_KEEL]),
-        # roll moments about body x (N m) of each term ("hydrostatics": buoyancy + weight)
-        **{f"mx_{name}": float(restoring if name == "hydrostatics" else terms[_TERM[name]][3])
-           for name in ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass")},
-        # Saoud §III: (J33 - J22)/J11 w3^2 tan(phi), as a moment, against the restoring one
-        "omega3_term": (izz - iyy) * rates[2] ** 2 * math.tan(heel),
-        "restoring": float(restoring),
-    }
-
-
-_TERM = {name: i for i, name in enumerate(kernels.TERMS)}
-
-
 def diagnostic_summary(rows: list[dict]) -> dict:
-    """Steady-window statistics of :func:`diagnostic_record` rows."""
+    """Steady-window statistics of the world's diagnostic records.
+
+    Parameters
+    ----------
+    rows : list of dict
+        :meth:`~sailmujoco.tasks.world.World.diagnostic_record` rows (with the task's record).
+
+    Returns
+    -------
+    dict
+        Means over the rows of the C_T/C_N ratio, pitch, heave, drift and keel angle of attack,
+        amplitudes of pitch and heave, each term's share of the roll moment, and the ratio of
+        Saoud's neglected omega_3 term to the restoring moment.
+    """
     def mean(key):
         values = np.array([r[key] for r in rows], dtype=float)
         values = values[np.isfinite(values)]
