@@ -137,9 +137,11 @@ def test_roll_shares_sum_to_one_and_restoring_balances_a_heeled_hull():
 
 
 def test_study_smoke(tmp_path):
+    from sailmujoco import study, sweep
     from sailmujoco.studies import assumptions
 
-    headline = assumptions.run(tmp_path, smoke=True, progress=False)
+    with sweep.Engine() as engine:
+        headline = study.run_study(assumptions.STUDY, tmp_path, engine, smoke=True, progress=False)
     assert headline["rows"] == 14
     for config in ("paper_hydrostatics", "friction_only", "paper_foils", "no_downwash", "no_windage"):
         assert np.isfinite(headline[f"{config}_speed_effect_max"]), config
@@ -156,7 +158,7 @@ def test_study_smoke(tmp_path):
     # switching C_T off changes the speed a little (not nothing, not much)
     assert 0.0 < headline["ct_speed_effect_max"] < 0.2
     # Wille's sin cos restoring differs from the geometric yacht over the heel reached, by less
-    # than 25 %: since issue 16 the yacht keeps >= 0.8 of eq. 20 to 30 deg (test_hull_form), and
+    # than 25 %: the yacht keeps >= 0.8 of eq. 20 to 30 deg (test_hull_form), and
     # |eq20 - geo| / geo <= 1 / 0.8 - 1 there
     assert 0.0 < headline["wille_yacht_restoring_error"] < 0.25
     report = (tmp_path / "report.md").read_text()

@@ -1,11 +1,13 @@
-"""Viel Fig. 3 study (studies/viel_fig3.py): the smoke run and the pieces it measures with."""
+"""Viel Fig. 3 study (studies/viel_fig3/): the smoke run and the pieces it measures with."""
 
 import math
 
 import numpy as np
 import pytest
 from sailmujoco.studies import viel_fig3
+from sailmujoco.studies.viel_fig3 import measures, scenario, switches
 
+from sailmujoco import study, sweep
 from sailmujoco.reference.viel import VielWorld
 from sailmujoco.tasks.base import SailEnvironment
 from sailmujoco.tasks.position import CASES, VielPhysics
@@ -14,7 +16,8 @@ from sailmujoco.tasks.position import CASES, VielPhysics
 @pytest.fixture(scope="module")
 def smoke(tmp_path_factory):
     out = tmp_path_factory.mktemp("viel_fig3")
-    return out, viel_fig3.run(out, smoke=True, progress=False)
+    with sweep.Engine() as engine:
+        return out, study.run_study(viel_fig3.STUDY, out, engine, smoke=True, progress=False)
 
 
 def test_smoke_writes_report_figures_and_data(smoke):
@@ -35,11 +38,11 @@ def test_smoke_paper_world_enters_and_stops_inside(smoke):
     _, h = smoke
     assert h["paper_all_entered"]
     # the task's metric starts at the entry crossing, d = d_T = 7 m: never far below it
-    assert 6.5 < h["paper_max_after_entry_m"] < viel_fig3.D_T
+    assert 6.5 < h["paper_max_after_entry_m"] < scenario.PAPER_D_T
     for case in (1, 2):  # the first 60 s: it stops well inside
-        assert h[f"paper_case{case}_max_after_stop_m"] < viel_fig3.PAPER_MAX_M
-    assert h["dt_0.1_case1_max_after_stop_m"] < viel_fig3.D_T  # the suite's control period runs too
-    assert h["printed_rudder_case1_max_after_stop_m"] < viel_fig3.D_T  # eqs. 7-8 as printed: the switch
+        assert h[f"paper_case{case}_max_after_stop_m"] < scenario.PAPER_MAX_M
+    assert h["dt_0.1_case1_max_after_stop_m"] < scenario.PAPER_D_T  # the suite's control period runs too
+    assert h["printed_rudder_case1_max_after_stop_m"] < scenario.PAPER_D_T  # eqs. 7-8 as printed: the switch
     assert h["printed_rudder_runs"] == 2
     assert h["grid_fraction_below_6_4m"] == 1.0 and h["grid_runs"] == 4
 
@@ -53,7 +56,7 @@ def test_smoke_six_dof_findings(smoke):
     entered = sum(math.isfinite(h[f"viel_boat_case{c}_max_after_entry_m"]) for c in (1, 2))
     assert h["viel_boat_cases_entered"] == entered
     # under way on the tack in 5 m/s (case 2) the robot reaches the buoy and stops inside
-    assert h["saoud_robot_under_way_case2_max_after_stop_m"] < viel_fig3.D_T
+    assert h["saoud_robot_under_way_case2_max_after_stop_m"] < scenario.PAPER_D_T
     # the PID capability check measured a steady speed for both boats in both winds
     for boat in ("wille_yacht", "saoud_robot"):
         for wind in (5, 10):
@@ -78,19 +81,19 @@ def test_after_entry_measures_from_the_stop():
     d = np.where(t < 20.0, 30.0 - 1.2 * t, 6.0 + 0.1 * (t - 20.0))  # in at 19.2 s... stop at 20 s
     d = np.maximum(d, 0.0)
     entered = float(t[np.argmax(d < 7.0)])
-    m = viel_fig3.after_entry(t, d, entered)
+    m = measures.after_entry(t, d, entered)
     assert m["stopped_at"] == pytest.approx(20.0)
     assert m["stop_distance"] == pytest.approx(6.0)
     assert m["max_after_stop"] == pytest.approx(d[-1])
     assert m["to_paper_bound_s"] == pytest.approx(4.0)  # 6.0 -> 6.4 m at 0.1 m/s
     assert m["to_first_exit_s"] == pytest.approx(10.0)  # 6.0 -> 7.0 m
     assert m["exits"] == 1
-    never = viel_fig3.after_entry(t, d + 50.0, float("nan"))
+    never = measures.after_entry(t, d + 50.0, float("nan"))
     assert math.isnan(never["max_after_stop"]) and never["exits"] == 0
 
 
 def test_started_task_places_the_boat_under_way():
-    task = viel_fig3.StartedPositionKeeping(seed=0, case=2, heading_deg=135.0, surge=1.5)
+    task = switches.StartedPositionKeeping(seed=0, case=2, heading_deg=135.0, surge=1.5)
     env = SailEnvironment(VielPhysics(VielWorld(wind=task.wind())), task, time_limit=1.0,
                           control_timestep=0.1, legacy_step=False)
     obs = env.reset().observation

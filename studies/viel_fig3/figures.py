@@ -1,0 +1,228 @@
+"""Viel et al. (2019) Fig. 3, the figures and the data files: what :func:`write` puts in the folder."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+
+from sailmujoco.figures import legend_below, wind_arrow
+from sailmujoco.tasks.position import CASES as WIND_CASES
+
+from ..kit import save_figure, setup_matplotlib
+from .analysis import Analysis, write_tables
+from .scenario import (
+    DEFAULT_START,
+    LABELS,
+    PAPER_D_M,
+    PAPER_D_T,
+    PAPER_DT,
+    PAPER_MAX_M,
+    VARIANT_LABELS,
+    WORLDS,
+)
+
+FIGURES = {"paper": "fig3_paper.png", "viel_boat": "fig3_viel_boat.png", "wille_yacht": "fig3_wille_yacht.png",
+           "saoud_robot": "fig3_saoud_robot.png", "summary": "max_distance.png", "six_dof": "six_dof_switches.png"}
+SIX_DOF_SHOWN = (("saoud_robot", "baseline"), ("saoud_robot", "under_way"), ("wille_yacht", "baseline"),
+                 ("wille_yacht", "under_way"), ("wille_yacht", "under_way_scaled"))
+
+
+def _wind_arrow(ax, case: int):
+    """Red arrow: where the wind blows (towards north, psi_tw = pi/2), its speed and the
+    direction swing, in the corner the trajectory leaves free."""
+    speed, speed_osc, dir_osc = WIND_CASES[case]
+    text = "wind " + f"{speed:g}" + (f"±{speed_osc:g}" if speed_osc else "") + " m/s"
+    text += "\nfrom S, blowing N" + (f"\n±{math.degrees(dir_osc):.0f}° swing" if dir_osc else "")
+    wind_arrow(ax, 0.0, text, swing_deg=math.degrees(dir_osc))
+
+
+def _trajectory_panel(ax, run: dict, case: int, start, title: str | None = None):
+    from matplotlib.patches import Circle
+
+    d_t, d_m = run.get("d_T", PAPER_D_T), run.get("d_M", PAPER_D_M)
+    ax.add_patch(Circle((0, 0), d_t, facecolor="tab:green", alpha=0.25, edgecolor="green", lw=1.2,
+                        label=f"target area, d_T = {d_t:.3g} m"))
+    for radius in (d_t, d_m):
+        ax.add_patch(Circle((0, 0), radius, fill=False, edgecolor="red", lw=1.0, ls="--"))
+    ax.plot([], [], color="red", ls="--", lw=1.0, label=f"pre-arrival area, {d_t:.3g}-{d_m:.3g} m")
+    traj = run["trajectory"]
+    x = np.concatenate([[start[0]], traj["x"]])
+    y = np.concatenate([[start[1]], traj["y"]])
+    ax.plot(x, y, color="tab:blue", lw=1.2, label="boat")
+    ax.plot(x[0], y[0], "o", color="tab:blue", ms=5, label="start")
+    ax.plot(x[-1], y[-1], "s", color="black", ms=4, label="end")
+    ax.plot(0, 0, "+", color="black", ms=8)
+    span = max(25.0, float(np.max(np.abs(np.concatenate([x, y])))) + 5.0)
+    ax.set_xlim(-span, span)
+    ax.set_ylim(-span, span)
+    ax.set_aspect("equal")
+    ax.set_xlabel("x east [m]")
+    ax.set_ylabel("y north [m]")
+    if title is None:
+        title = f"case {case}: " + (
+            f"in at {run['entered_at']:.0f} s, max after stop {run['max_after_stop']:.1f} m"
+            if math.isfinite(run["entered_at"]) else "never enters the target area")
+    ax.set_title(title, fontsize=9)
+    _wind_arrow(ax, case)
+
+
+def figure_world(out: Path, key: str, runs: dict, start) -> Path:
+    """Fig. 3 for one world: the six trajectories and the distance to the target against time.
+
+    Parameters
+    ----------
+    out : pathlib.Path
+        The study's folder.
+    key : str
+        The world (a key of ``WORLDS``).
+    runs : dict
+        Case -> its row (trajectory, entry, stop).
+    start : tuple of float
+        The runs' start (m).
+    """
+    plt = setup_matplotlib()
+    fig = plt.figure(figsize=(14, 12))
+    grid = fig.add_gridspec(3, 3, height_ratios=(1, 1, 0.8))
+    for i, case in enumerate(sorted(runs)):
+        ax = fig.add_subplot(grid[i // 3, i % 3])
+        _trajectory_panel(ax, runs[case], case, start)
+        if i == 0:
+            first = ax
+    ax = fig.add_subplot(grid[2, :])
+    top = 20.0
+    for case, run in sorted(runs.items()):
+        traj = run["trajectory"]
+        d = np.hypot(traj["x"], traj["y"])
+        top = max(top, float(d.max()))
+        line, = ax.plot(traj["t"], d, lw=1.2, label=f"case {case}")
+        if math.isfinite(run["stopped_at"]):
+            ax.plot(run["stopped_at"], run["stop_distance"], "v", color=line.get_color(), ms=6)
+    ax.plot([], [], "v", color="gray", label="stop (first minimum after entry)")
+    ax.axhline(PAPER_D_T, color="green", ls="--", lw=1.2, label=f"d_T = {PAPER_D_T:g} m (target area)")
+    ax.axhline(PAPER_MAX_M, color="black", ls="-.", lw=1.2, label=f"paper: stays below {PAPER_MAX_M:g} m")
+    ax.axhline(PAPER_D_M, color="red", ls=":", lw=1.0, label=f"d_M = {PAPER_D_M:g} m")
+    all_in = all(math.isfinite(r["entered_at"]) for r in runs.values())
+    limit = 20.0 if all_in else min(top * 1.05, 120.0)
+    ax.set_ylim(0, limit)
+    ax.set_xlim(0, max(max(r["trajectory"]["t"][-1] for r in runs.values()), 1.0))
+    ax.set_xlabel("time [s]")
+    ax.set_ylabel("distance to target [m]")
+    ax.set_title("distance to the target p_T" + (f" (axis cut at {limit:.0f} m: the approach starts at "
+                                                 f"{np.hypot(*start):.0f} m)" if top > limit else ""))
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    legend_below(fig, first, ncol=5)
+    fig.suptitle(f"Viel Fig. 3 reproduced, {LABELS[key]}: start {start} m, seed 0, dt {PAPER_DT:g} s, paper's gains")
+    return save_figure(fig, out / FIGURES[key])
+
+
+def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: pd.DataFrame) -> Path:
+    """Max distance after the stop: per world; paper world per switch; over starts and headings.
+
+    Parameters
+    ----------
+    out : pathlib.Path
+        The study's folder.
+    main, variants, grid : pandas.DataFrame
+        The tables of :class:`.analysis.Analysis`.
+    """
+    plt = setup_matplotlib()
+    fig, axes = plt.subplots(1, 3, figsize=(17, 4.8))
+    cases = sorted(set(main["case"]))
+    width = 0.8 / len(WORLDS)
+    for i, key in enumerate(WORLDS):
+        rows = main[main["world"] == key].set_index("case")
+        values = np.array([rows["max_after_stop"].get(c, np.nan) for c in cases])
+        task_metric = np.array([rows["max_distance_after_entry"].get(c, np.nan) for c in cases])
+        pos = np.arange(len(cases)) + (i - (len(WORLDS) - 1) / 2) * width
+        axes[0].bar(pos, np.nan_to_num(values, nan=0.0), width, label=LABELS[key])
+        axes[0].plot(pos, task_metric, "_", color="black", ms=10, mew=2,
+                     label="task metric (from the entry crossing)" if i == 0 else None)
+        for p, v in zip(pos, values, strict=True):
+            if not math.isfinite(v):
+                axes[0].text(p, 0.5, "never in", rotation=90, ha="center", va="bottom", fontsize=7)
+    axes[0].set_title("(a) max distance after the stop, task start, seed 0")
+    shown = [v for v in ("baseline", "printed_rudder", "dt_0.1", "no_hull_wind") if v in set(variants["variant"])]
+    for i, v in enumerate(shown):
+        rows = variants[(variants["variant"] == v) & (variants["world"] == "paper")]
+        rows = rows[rows["start"].map(lambda s: tuple(s) == DEFAULT_START)].set_index("case")
+        values = [rows["max_after_stop"].get(c, np.nan) for c in cases]
+        pos = np.arange(len(cases)) + (i - (len(shown) - 1) / 2) * 0.2
+        axes[1].bar(pos, np.nan_to_num(values, nan=0.0), 0.2, label=VARIANT_LABELS[v])
+    axes[1].set_title("(b) paper world, task start: one switch at a time")
+    for ax in axes[:2]:
+        ax.set_xticks(np.arange(len(cases)), [f"case {c}" for c in cases])
+    printed = variants[(variants["variant"] == "printed_rudder")]
+    for offset, frame, color, label in ((-0.18, grid, "tab:blue", "eqs. 7-8 linear in speed (ours)"),
+                                        (0.18, printed, "tab:red", "eqs. 7-8 as printed, v² (switch)")):
+        for c in cases:
+            g = frame[frame["case"] == c]["max_after_stop"].to_numpy()
+            if g.size == 0:
+                continue
+            jitter = np.linspace(-0.12, 0.12, g.size) if g.size > 1 else np.zeros(1)
+            axes[2].plot(c + offset + jitter, g, "o", ms=4, alpha=0.7, color=color,
+                         label=label if c == cases[0] else None)
+    axes[2].set_xticks(cases, [f"case {c}" for c in cases])
+    axes[2].set_title(f"(c) paper world over starts and headings ({len(grid)} + {len(printed)} runs)")
+    for ax in axes:
+        ax.axhline(PAPER_D_T, color="green", ls="--", lw=1.2, label=f"d_T = {PAPER_D_T:g} m")
+        ax.axhline(PAPER_MAX_M, color="black", ls="-.", lw=1.2, label=f"paper {PAPER_MAX_M:g} m")
+        ax.set_ylabel("max distance after the stop [m]")
+        ax.set_ylim(0, 25)
+        for bar in ax.patches:  # a bar beyond the axis says how far it goes
+            if bar.get_height() > 25:
+                ax.text(bar.get_x() + bar.get_width() / 2, 24.5, f"{bar.get_height():.0f}↑", ha="center",
+                        va="top", rotation=90, fontsize=7, color="white")
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.08), ncol=2)
+    return save_figure(fig, out / FIGURES["summary"])
+
+
+def figure_six_dof(out: Path, runs: dict) -> Path:
+    """The 6-DOF boats in one case: task start vs under way vs scaled circles (trajectories).
+
+    Parameters
+    ----------
+    out : pathlib.Path
+        The study's folder.
+    runs : dict
+        (boat, variant) -> its row, or None where not run.
+    """
+    plt = setup_matplotlib()
+    shown = [(k, v) for k, v in runs.items() if v is not None]
+    fig, axes = plt.subplots(1, len(shown), figsize=(4.2 * len(shown), 5.0), squeeze=False)
+    for ax, ((boat, variant), run) in zip(axes[0], shown, strict=True):
+        note = (f"max after stop {run['max_after_stop']:.1f} m (d_T {run['d_T']:.3g} m)"
+                if math.isfinite(run["entered_at"]) else "never enters")
+        _trajectory_panel(ax, run, int(run["case"]), DEFAULT_START,
+                          title=f"{boat}, case {int(run['case'])}\n{VARIANT_LABELS[variant]}\n{note}")
+    legend_below(fig, axes[0][0], ncol=5)
+    return save_figure(fig, out / FIGURES["six_dof"])
+
+
+def write(analysis: Analysis, out: Path) -> None:
+    """The data files (:func:`.analysis.write_tables`) and the figures (``FIGURES``) into ``out``.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+    out : pathlib.Path
+        The study's folder.
+    """
+    out = Path(out)
+    write_tables(analysis, out)
+    main, variants = analysis.main, analysis.variants
+    for key in WORLDS:
+        figure_world(out, key, {int(r["case"]): r for _, r in main[main["world"] == key].iterrows()},
+                     DEFAULT_START)
+    figure_summary(out, main, variants, analysis.grid)
+    shown_case = 2 if 2 in analysis.cases else analysis.cases[0]
+
+    def pick(boat, variant):
+        frame = variants[(variants["world"] == boat) & (variants["variant"] == variant)
+                         & (variants["case"] == shown_case)]
+        return None if frame.empty else frame.iloc[0].to_dict()
+
+    figure_six_dof(out, {(b, v): pick(b, v) for b, v in SIX_DOF_SHOWN})

@@ -1,0 +1,134 @@
+"""Viel et al. (2019) Fig. 3, one switching experiment: a run in a worker process.
+
+A position-keeping episode in the paper world or a 6-DOF boat with one difference switched
+(start under way, scaled circles, rudder law, control period, hull wind), or the PID
+heading-hold check of what a boat can sail; it returns the task's metrics, a 2 Hz trajectory and
+the measures of :mod:`.measures`.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from sailmujoco import frames, sweep
+from sailmujoco.params import get_boat
+from sailmujoco.physics import BoatPhysics, ForceSwitches
+from sailmujoco.reference.viel import VielParams, VielWorld
+from sailmujoco.tasks.base import SailEnvironment
+from sailmujoco.tasks.position import PositionKeeping, VielPhysics
+
+from ..kit import run_episode, timer
+from .measures import after_entry, behaviour, drift_after_stop
+from .scenario import DEFAULT_START, PAPER_D_M, PAPER_D_T, PAPER_DT, PAPER_GAINS, TRAJECTORY_RATE
+
+
+class StartedPositionKeeping(PositionKeeping):
+    """``position_keeping`` started on a given compass heading and surge (the task itself draws a
+    random heading at 0.5 m/s)."""
+
+    def __init__(self, seed=None, heading_deg: float | None = None, surge: float = 0.5, **kwargs):
+        """The task, to start on ``heading_deg`` at ``surge``.
+
+        Parameters
+        ----------
+        seed : int, optional
+            The task's seed.
+        heading_deg : float, optional
+            Start heading [compass deg]; ``None`` keeps the task's start.
+        surge : float
+            Start surge [m/s] (with ``heading_deg``).
+        **kwargs
+            :class:`~sailmujoco.tasks.position.PositionKeeping`'s options.
+        """
+        super().__init__(seed, **kwargs)
+        self.heading_deg = heading_deg
+        self.surge = float(surge)
+
+    def initialize_episode(self, physics):
+        """The task's start, then the boat placed on the heading at the surge.
+
+        Parameters
+        ----------
+        physics : sailmujoco.physics.BoatPhysics or sailmujoco.tasks.position.VielPhysics
+            The episode's physics.
+        """
+        super().initialize_episode(physics)
+        if self.heading_deg is not None:
+            yaw = float(frames.yaw_from_heading(math.radians(self.heading_deg)))
+            physics.place(tuple(self.start), yaw, self.surge)
+
+
+def simulate(spec: dict) -> dict:
+    """One run of a switching experiment (in a worker process); returns metrics and a trajectory.
+
+    Parameters
+    ----------
+    spec : dict
+        ``kind`` ("position" or "heading_hold"), ``variant``, ``world`` ("paper" or a boat),
+        ``case``, ``seed``, ``dt`` [s], ``p1`` [kg/m], ``rudder_law`` (the paper world's
+        :class:`~sailmujoco.reference.viel.VielParams` reading of eqs. 7-8), ``start`` (m),
+        ``heading_deg``, ``surge`` [m/s], ``scale`` (target radii ×), ``duration`` [s]; for
+        heading_hold: ``wind_speed`` [m/s], ``desired_heading_deg``.
+    """
+    clock = timer()
+    s = {"kind": "position", "seed": 0, "dt": PAPER_DT, "p1": VielParams().p1, "rudder_law": VielParams().rudder_law,
+         "start": DEFAULT_START, "heading_deg": None, "surge": 0.5, "scale": 1.0, "duration": 200.0,
+         **spec}
+    if s["kind"] == "heading_hold":
+        metrics, frame, _ = run_episode(
+            s["world"], "heading_hold", "mujoco", "pid", seed=s["seed"], time_limit=s["duration"],
+            desired_heading_deg=s["desired_heading_deg"], wind_speed=s["wind_speed"], wind_from_deg=180.0,
+            gusts=False, wander=False)
+        last = frame[frame["t"] >= frame["t"].iloc[-1] - 20.0]
+        return {**spec, "steady_speed": float(metrics["steady_speed"]),
+                "surge_mean": float(last["u"].mean()), "sway_mean": float(last["v"].mean()),
+                "rudder_mean_deg": math.degrees(float(last["rudder"].mean())),
+                "rudder_saturated": float(np.mean(np.abs(last["rudder"]) > math.radians(34.0))),
+                "heading_error_rms_deg": math.degrees(float(metrics["heading_error_rms"])),
+                "wall_time": clock()}
+    d_t, d_m = PAPER_D_T * s["scale"], PAPER_D_M * s["scale"]
+    task = StartedPositionKeeping(seed=s["seed"], case=s["case"], start=tuple(s["start"]), d_target=d_t,
+                                  d_prearrival=d_m, heading_deg=s["heading_deg"], surge=s["surge"])
+    if s["world"] == "paper":
+        world = VielWorld(params=VielParams(p1=s["p1"], rudder_law=s["rudder_law"]), wind=task.wind())
+        physics = VielPhysics.for_control(world, s["dt"])
+    else:  # as sailmujoco.suite.load builds the MuJoCo world
+        physics = BoatPhysics.load(params=get_boat(s["world"]), sail_mode="actuated", wind=task.wind(),
+                                   forces=ForceSwitches(hydrostatics="geometric"), dofs=6)
+    env = SailEnvironment(physics, task, time_limit=s["duration"], control_timestep=s["dt"],
+                          legacy_step=False)
+    policy = sweep.make_controller("viel", env, **{**PAPER_GAINS, "d_T": d_t, "d_M": d_m})
+    policy.reset(s["seed"])
+    timestep = env.reset()
+    every = max(1, int(round(1.0 / (TRAJECTORY_RATE * s["dt"]))))
+    t, x, y, step = [], [], [], 0
+    samples = {"surge": [], "sway": [], "awa": [], "rudder": [], "heel": [], "sail": [], "mode": []}
+    while not timestep.last():
+        action = policy(timestep)
+        timestep = env.step(action)
+        step += 1
+        if step % every == 0:
+            o = timestep.observation
+            t.append(float(o["true_state"]["time"]))
+            x.append(float(o["position"][0]))
+            y.append(float(o["position"][1]))
+            samples["surge"].append(float(o["true_state"]["u"]))
+            samples["sway"].append(float(o["true_state"]["v"]))
+            samples["sail"].append(float(action[1]))
+            samples["awa"].append(float(o["apparent_wind_angle"]))
+            samples["rudder"].append(float(action[0]))
+            samples["heel"].append(float(o["heel"]))
+            samples["mode"].append(policy.info.get("mode", ""))
+    metrics = env.task.metrics()
+    out = {**spec, "d_T": d_t, "d_M": d_m, "status": "stopped" if metrics.get("stopped") else "ok",
+           **{k: float(metrics[k]) for k in ("entered_at", "max_distance_after_entry",
+                                              "mean_distance_after_entry", "final_distance",
+                                              "min_distance")},
+           "trajectory": {"t": t, "x": x, "y": y}, "wall_time": clock()}
+    out.update(after_entry(np.array(t), np.hypot(np.array(x), np.array(y)), out["entered_at"], d_t))
+    out.update(behaviour(np.array(t), samples, out["entered_at"], math.radians(float(env.action_spec().maximum[0]))))
+    out.update(drift_after_stop(np.array(t), np.array(x), np.array(y), samples, out["stopped_at"],
+                                task.wind().direction_from))
+    return out
