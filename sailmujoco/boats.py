@@ -14,6 +14,7 @@ from . import constants as c
 from . import hull as hull_geometry
 from .boat_params import BoatParams, Foil, Sail
 from .hull import HullShape
+from .names import unknown_message
 
 
 def wille_yacht() -> BoatParams:
@@ -352,14 +353,45 @@ def _radiation_damping(h: HullShape, mass: float, rho: float, zeta: float):
 
 
 BOATS = {"wille_yacht": wille_yacht, "saoud_robot": saoud_robot, "viel_boat": viel_boat}
+BUILT_IN = tuple(BOATS)
+
+
+def register_boat(name: str, factory) -> None:
+    """Register a boat's parameter factory under ``name`` (at run time, no reinstall).
+
+    ``suite.load(name, task)``, ``get_boat(name, **options)`` and sweep files then find it.
+
+    Parameters
+    ----------
+    name : str
+        The boat's name (a new one: the built-in boats cannot be replaced).
+    factory : callable
+        ``factory(**options) -> BoatParams``; its keyword options are the boat's options
+        (``boat_options`` in :func:`sailmujoco.suite.load`, ``boat.*`` keys in a sweep).
+    """
+    if not isinstance(name, str) or not name.isidentifier():
+        raise ValueError(f"a boat's name must be an identifier, got {name!r}")
+    if not callable(factory):
+        raise ValueError(f"register_boat({name!r}, ...) needs a callable factory, got {factory!r}")
+    if name in BUILT_IN and BOATS.get(name) is not factory:
+        raise ValueError(f"{name!r} is a built-in boat; register yours under another name")
+    BOATS[name] = factory
 
 
 def get_boat(name: str, **options) -> BoatParams:
-    """The parameters of a registered boat; ``options`` go to its factory (e.g. l_phi)."""
+    """The parameters of a registered boat.
+
+    Parameters
+    ----------
+    name : str
+        A registered boat (:data:`BOATS`).
+    **options
+        Passed to its factory (e.g. ``l_phi`` of saoud_robot).
+    """
     try:
         factory = BOATS[name]
     except KeyError:
-        raise ValueError(f"unknown boat {name!r}; known boats: {', '.join(sorted(BOATS))}") from None
+        raise ValueError(unknown_message("boat", name, BOATS, "get_boat")) from None
     try:
         return factory(**options)
     except TypeError as err:

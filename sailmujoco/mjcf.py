@@ -35,13 +35,14 @@ import mujoco
 import numpy as np
 
 from .boat_geometry import hull_inertial, hull_mesh, rig_inertia, sheet_angle, sheet_geometry, sheet_length
+from .boats import BUILT_IN
 from .constants import GRAVITY
 from .options import Dofs, SailMode, choices
 from .params import BoatParams, get_boat
 
 __all__ = ["REFERENCE_WIND", "SAIL_MODES", "SERVO_ERROR", "SERVO_FREQUENCY", "TIMESTEP", "boat_spec",
-           "boat_xml", "compile_model", "hull_inertial", "scene_xml", "sheet_angle", "sheet_geometry",
-           "sheet_length", "write_default_xml", "xml_root"]
+           "boat_xml", "compile_model", "hull_inertial", "scene_for", "scene_xml", "sheet_angle",
+           "sheet_geometry", "sheet_length", "write_default_xml", "xml_root"]
 
 SAIL_MODES = choices(SailMode)
 TIMESTEP = 0.005  # s, physics step of both boats
@@ -348,6 +349,25 @@ def scene_xml(boat: str) -> str:
     return path.read_text()
 
 
+def scene_for(p: BoatParams) -> str:
+    """The scene (sea, sky, light, cameras) of boat ``p``: its own ``xml/<name>/scene.xml``, or,
+    for a boat registered at run time, the scene of the built-in boat nearest in hull length
+    (cameras and visual extent are set for that size) including ``<name>.xml`` instead.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    """
+    if xml_root().joinpath(p.name, "scene.xml").is_file():
+        return scene_xml(p.name)
+    built_in = {name: get_boat(name).hull.length for name in BUILT_IN}
+    nearest = min(built_in, key=lambda name: abs(built_in[name] - p.hull.length))
+    text = scene_xml(nearest)
+    return (text.replace(f'<include file="{nearest}.xml"/>', f'<include file="{p.name}.xml"/>')
+            .replace(f'<mujoco model="{nearest} scene">', f'<mujoco model="{p.name} scene">'))
+
+
 def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjModel:
     """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``).
 
@@ -361,7 +381,7 @@ def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> 
         The hull's degrees of freedom.
     """
     return mujoco.MjModel.from_xml_string(
-        scene_xml(p.name), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs).encode()})
+        scene_for(p), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs).encode()})
 
 
 def write_default_xml(root) -> list:

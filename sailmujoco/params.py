@@ -8,7 +8,7 @@ the boats' parameter factories (every number with its source) and :data:`BOATS`,
 from __future__ import annotations
 
 from .boat_params import BoatParams, Foil, Sail
-from .boats import BOATS, get_boat, saoud_robot, viel_boat, wille_yacht
+from .boats import BOATS, get_boat, register_boat, saoud_robot, viel_boat, wille_yacht
 
-__all__ = ["BOATS", "BoatParams", "Foil", "Sail", "get_boat", "saoud_robot", "viel_boat",
+__all__ = ["BOATS", "BoatParams", "Foil", "Sail", "get_boat", "register_boat", "saoud_robot", "viel_boat",
            "wille_yacht"]

@@ -31,11 +31,15 @@ from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions
 from .params import BOATS, BoatParams, get_boat
 from .physics import BoatPhysics
 from .tasks.base import PaperPhysics, SailEnvironment, check_number
-from .tasks.position import PositionKeeping, VielPhysics
-from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial
+from .tasks.registry import TASKS, register_task
 
-TASKS = {cls.name: cls for cls in (HeadingHold, CourseHold, BeamReachRoll, SpeedTrial,
-                                   PositionKeeping)}
+# isort: off
+# the built-in tasks register on import, in this order (the order of TASKS, SUITE and the gym ids)
+from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial  # noqa: F401
+from .tasks.position import VielPhysics
+# isort: on
+
+__all__ = ["SUITE", "TASKS", "WORLDS", "load", "load_batch", "register_task", "rollout", "task_options"]
 WORLDS = choices(World)
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS)
 # keywords of load that are neither task options nor physics fields

@@ -19,15 +19,6 @@ def _imports(path):
                 yield alias.name
 
 
-def test_library_does_not_import_controllers_or_studies():
-    for path in LIBRARY.rglob("*.py"):
-        rel = path.relative_to(LIBRARY)
-        if rel.parts[0] in ("controllers", "studies"):
-            continue
-        for name in _imports(path):
-            assert "controllers" not in name and "studies" not in name, f"{rel} imports {name}"
-
-
 def test_force_models_do_not_import_mujoco():
     for path in (LIBRARY / "forces").glob("*.py"):
         for name in _imports(path):
@@ -137,6 +128,23 @@ def _cycles(graph) -> list[list[str]]:
     return found
 
 
+def test_library_does_not_import_controllers_or_studies():
+    """The library (sailmujoco, less its controllers and studies) imports neither, at any level;
+    it finds controllers and studies through their entry points."""
+    lower = ("sailmujoco.controllers", "sailmujoco.studies")
+    problems = [f"{file}:{line} imports {target}"
+                for name, imports in _import_graph().items() if not name.startswith(lower)
+                for target, (file, line) in imports.items() if target.startswith(lower)]
+    assert not problems, "the library imports a controller or a study:\n  " + "\n  ".join(problems)
+
+
+def test_the_cycle_finder_finds_cycles():
+    """The finder the cycle test relies on, on graphs whose cycles are known by hand."""
+    graph = {"a": {"b": 0}, "b": {"c": 0}, "c": {"a": 0}, "d": {"a": 0}, "e": {"e": 0}, "f": {}}
+    assert _cycles(graph) == [["a", "b", "c"]]
+    assert _cycles({"a": {"b": 0}, "b": {}}) == []
+
+
 def test_no_import_cycle():
     """No module imports, at any level (function-level imports included), a module that imports
     it back, directly or through others."""
@@ -160,25 +168,42 @@ def test_no_private_name_imported_across_modules():
     assert not problems, "private names imported across modules:\n  " + "\n  ".join(problems)
 
 
+def _world_type_tests(source: str) -> list[tuple[int, str, str]]:
+    """(line, world class, expression) of every isinstance/issubclass/``type(...) is`` test
+    against a world's class in ``source``."""
+    found = []
+    for node in ast.walk(ast.parse(source)):
+        if not isinstance(node, (ast.Call, ast.Compare)):
+            continue
+        if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name)
+                                               and node.func.id in ("isinstance", "issubclass")):
+            continue
+        names = {n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
+        names |= {n.attr for n in ast.walk(node) if isinstance(n, ast.Attribute)}
+        if isinstance(node, ast.Compare) and not ("type" in names and any(
+                isinstance(op, (ast.Is, ast.IsNot, ast.Eq, ast.NotEq)) for op in node.ops)):
+            continue
+        for world in sorted(names & WORLD_TYPES):
+            found.append((node.lineno, world, ast.unparse(node)))
+    return found
+
+
+def test_the_dispatch_finder_finds_type_tests():
+    source = ("def measurement(physics):\n"
+              "    if isinstance(physics, BoatPhysics):\n        return 1\n"
+              "    if type(physics) is VielPhysics:\n        return 2\n"
+              "    return physics.measure()\n")
+    assert [(line, world) for line, world, _ in _world_type_tests(source)] == \
+        [(2, "BoatPhysics"), (4, "VielPhysics")]
+    assert _world_type_tests("def f(physics):\n    return physics.measure()\n") == []
+
+
 def test_tasks_do_not_dispatch_on_the_world_type():
     """A task drives every world through the World protocol: no isinstance (or issubclass, or
     type(...) is) test against a world's class in sailmujoco/tasks/."""
-    problems = []
-    for path in sorted((REPO / "sailmujoco" / "tasks").glob("*.py")):
-        for node in ast.walk(ast.parse(path.read_text())):
-            if not isinstance(node, (ast.Call, ast.Compare)):
-                continue
-            if isinstance(node, ast.Call) and not (isinstance(node.func, ast.Name)
-                                                   and node.func.id in ("isinstance", "issubclass")):
-                continue
-            names = {n.id for n in ast.walk(node) if isinstance(n, ast.Name)}
-            names |= {n.attr for n in ast.walk(node) if isinstance(n, ast.Attribute)}
-            if isinstance(node, ast.Compare) and not ("type" in names and any(
-                    isinstance(op, (ast.Is, ast.IsNot, ast.Eq, ast.NotEq)) for op in node.ops)):
-                continue
-            for world in sorted(names & WORLD_TYPES):
-                problems.append(f"{_rel(path)}:{node.lineno} tests the type {world}: "
-                                f"{ast.unparse(node)}")
+    problems = [f"{_rel(path)}:{line} tests the type {world}: {expression}"
+                for path in sorted((REPO / "sailmujoco" / "tasks").glob("*.py"))
+                for line, world, expression in _world_type_tests(path.read_text())]
     assert not problems, "tasks dispatching on the world's type:\n  " + "\n  ".join(problems)
 
 

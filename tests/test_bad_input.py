@@ -13,8 +13,10 @@ from sailmujoco.physics import BoatPhysics, SimulationStopped
 
 def test_unknown_boat():
     known = "saoud_robot, viel_boat, wille_yacht"
-    with pytest.raises(ValueError, match=f"unknown boat 'catamaran'; known boats: {known}"):
+    with pytest.raises(ValueError, match=rf"unknown boat 'catamaran' .*\(accepted: {known}\)"):
         BoatPhysics.load("catamaran")
+    with pytest.raises(ValueError, match="did you mean 'wille_yacht'"):
+        BoatPhysics.load("wile_yacht")
 
 
 def test_negative_area():

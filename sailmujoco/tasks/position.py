@@ -37,6 +37,7 @@ import numpy as np
 from .. import frames
 from ..forces.wind import WindConfig
 from .base import SailTask, check_number
+from .registry import register_task
 from .world import VielPhysics  # noqa: F401  (imported from here too)
 
 # case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
@@ -44,6 +45,7 @@ CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
          4: (10.0, 0.0, math.pi / 12), 5: (10.0, 5.0, math.pi / 12), 6: (10.0, 5.0, math.pi / 6)}
 
 
+@register_task
 class PositionKeeping(SailTask):
     """Viel's position keeping, wind ``case`` 1-6; the boat starts at ``start`` (m)."""
 

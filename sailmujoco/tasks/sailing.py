@@ -28,10 +28,12 @@ import numpy as np
 from .. import frames
 from ..forces.wind import WindConfig
 from .base import SailTask, amplitude, check_number, wrap
+from .registry import register_task
 
 MAX_WIND = 60.0  # m/s, U10: above a hurricane's; the force models are not meant for more
 
 
+@register_task
 class HeadingHold(SailTask):
     """Hold a compass heading in a steady, gusty wind.
 
@@ -130,6 +132,7 @@ def diagnostic_summary(rows: list[dict]) -> dict:
     }
 
 
+@register_task
 class CourseHold(SailTask):
     """Wille (2016a) §4: close-hauled, U10 = 5 m/s, beta_w = 130 deg (from 310 deg), no current,
     desired course 0 (north), 200 s.
@@ -181,6 +184,7 @@ class CourseHold(SailTask):
                 "north": float(north), "east": float(east)}
 
 
+@register_task
 class BeamReachRoll(SailTask):
     """Wille (2016b) §5: beam reach, U10 = 10 m/s, 300 s, metrics over the last 50 s.
 
@@ -227,6 +231,7 @@ class BeamReachRoll(SailTask):
                 "mean_heel": float(np.mean([r["heel"] for r in last]))}
 
 
+@register_task
 class SpeedTrial(SailTask):
     """Saoud (2015) Fig. 6: true wind 4 m/s whose angle in the body frame (the direction it
     blows *to*, counter-clockwise, Saoud's NWU) is 10, 45 and 80 deg over 0-20, 20-40 and

@@ -163,7 +163,7 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
     hull = spec.mesh("hull_mesh")
     hull.uservert, hull.userface = (a.tolist() for a in close_outward(hull.uservert, hull.userface))
     model = mujoco.MjModel.from_xml_string(
-        mjcf.scene_xml(params.name), assets={f"{params.name}.xml": spec.to_xml().encode()})
+        mjcf.scene_for(params), assets={f"{params.name}.xml": spec.to_xml().encode()})
     sea = model.material("sea")
     square = params.hull.length / 8.0  # m, one checker square
     model.mat_texrepeat[sea.id] = 1.0 / (2.0 * square)  # texuniform: repeats per metre
