@@ -15,6 +15,8 @@ from pathlib import Path
 
 import numpy as np
 
+from . import suite
+from .names import check_known
 from .sweep import MAX_LOCAL_WORKERS
 
 INTERRUPTED = 130  # the shell's status for a command ended by Ctrl-C (128 + SIGINT)
@@ -112,17 +114,25 @@ def setting(text: str) -> tuple[str, object]:
     return key.strip(), literal(value.strip())
 
 
-def check_settings(settings) -> None:
-    """``--set`` of ``video`` and ``view``: the episode's seed and length have options of their own.
+def check_settings(settings, task: str | None = None) -> None:
+    """``--set`` of ``video`` and ``view``: every key one that ``suite.load`` takes for ``task``
+    (one line with the nearest name otherwise); the episode's seed and length have options of
+    their own.
 
     Parameters
     ----------
     settings : iterable of (str, object)
         The ``--set`` pairs.
+    task : str, optional
+        The task they are for (its options are accepted); None checks the seed and length only.
     """
+    settings = dict(settings)
     for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
-        if key in dict(settings):
+        if key in settings:
             raise ValueError(f"--set {key}=... is the option {option}")
+    if task is not None and task in suite.TASKS:
+        check_known(settings, suite.keyword_options(task) + ("control_timestep",), "--set",
+                    error=ValueError)
 
 
 def out_folder(path) -> Path:

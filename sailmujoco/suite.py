@@ -39,7 +39,8 @@ from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial  #
 from .tasks.position import VielPhysics
 # isort: on
 
-__all__ = ["SUITE", "TASKS", "WORLDS", "load", "load_batch", "register_task", "rollout", "task_options"]
+__all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "register_task", "rollout",
+           "task_options"]
 WORLDS = choices(World)
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS)
 # keywords of load that are neither task options nor physics fields
@@ -64,6 +65,18 @@ def task_options(task: str) -> tuple:
                     and name not in ("self", "seed") and name not in names):
                 names.append(name)
     return tuple(names)
+
+
+def keyword_options(task: str) -> tuple:
+    """The names :func:`load` takes in ``**options`` for ``task``: the task's options, every
+    physics field (:data:`sailmujoco.options.PHYSICS_FIELDS`), ``forces`` and ``params``.
+
+    Parameters
+    ----------
+    task : str
+        A registered task (``TASKS``).
+    """
+    return task_options(task) + PHYSICS_FIELDS + (_FORCES, _PARAMS)
 
 
 def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int | None = None,
@@ -100,10 +113,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
         physics option given twice (in ``physics`` and as a keyword, or in ``forces`` and
         by its field name).
     """
-    if task not in TASKS:
-        raise ValueError(f"unknown task {task!r}; known tasks: {', '.join(TASKS)}")
-    if world not in WORLDS:
-        raise ValueError(f"unknown world {world!r}; choose one of {WORLDS}")
+    check_known([task], TASKS, "suite.load", kind="task", error=ValueError)
+    check_known([world], WORLDS, "suite.load", kind="world", error=ValueError)
     dt_ok = isinstance(control_timestep, (int, float)) and not isinstance(control_timestep, bool)
     if not (dt_ok and math.isfinite(control_timestep) and control_timestep > 0):
         raise ValueError(f"control_timestep must be a positive time in s, got {control_timestep!r}")
@@ -138,8 +149,7 @@ def _split(task: str, physics, options: dict) -> tuple[PhysicsOptions, dict, Boa
     options = dict(options)
     forces = options.pop(_FORCES, None)
     params = options.pop(_PARAMS, None)
-    own = task_options(task)
-    check_known(options, own + PHYSICS_FIELDS + (_FORCES, _PARAMS), "suite.load")
+    check_known(options, keyword_options(task), "suite.load")
     flat = {k: v for k, v in options.items() if k in PHYSICS_FIELDS}
     if forces is not None:
         if not isinstance(forces, ForceSwitches) or isinstance(forces, PhysicsOptions):

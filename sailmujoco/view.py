@@ -328,7 +328,7 @@ def run_cli(args) -> int:
     """
     from .sweep import validate
 
-    check_settings(args.set)
+    check_settings(args.set, args.task)
 
     # names first, so that without a display the suggested video command is one that runs
     validate({"boat": args.boat, "task": args.task, "world": args.world, "controller": args.controller})

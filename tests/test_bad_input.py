@@ -187,3 +187,18 @@ def test_set_takes_tomls_true_and_false():
     assert setting("windage=false") == ("windage", False)
     assert setting("keel_downwash=True") == ("keel_downwash", True)
     assert setting("case=3") == ("case", 3)
+
+
+@pytest.mark.parametrize("command", ["video", "view"])
+def test_set_refuses_an_unknown_key_with_the_nearest_name(command, capsys):
+    """A misspelt --set key ends before anything is built: one line naming it, where it was
+    given and the nearest option the task and the physics take."""
+    from sailmujoco.cli import main
+
+    argv = [command, "saoud_robot", "heading_hold", "--controller", "pid", "--set", "wind_sped=3"]
+    if command == "video":
+        argv += ["--out", "never.mp4"]
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1
+    assert "unknown option 'wind_sped' in --set; did you mean 'wind_speed'?" in err

@@ -67,7 +67,7 @@ def run_cli(args) -> int:
     int
         0, or 1 where no OpenGL platform loads (one line on stderr).
     """
-    check_settings(args.set)
+    check_settings(args.set, args.task)
     file_argument("--out", args.out, "run.mp4")
     if args.still:
         file_argument("--still", args.still, "last.png")
