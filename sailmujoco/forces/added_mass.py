@@ -60,8 +60,6 @@ from __future__ import annotations
 
 from .._jit import kernel
 
-COUPLINGS = ("manoeuvring", "kirchhoff")
-
 
 @kernel
 def kirchhoff_terms(nu_r, a, full, out):
