@@ -105,7 +105,7 @@ def main() -> None:
         bare_us = statistics.median(samples[label][1])
         print(f"{label:28s} {world_us:8.1f} us {bare_us:10.1f} us ({n:2d}) {world_us / bare_us:6.2f}")
     print(f"(medians of {args.repeats} interleaved rounds of {args.calls} control steps; "
-          f"mujoco {mujoco.__version__}; ratio = world / bare, issue 18 asks <= 1)")
+          f"mujoco {mujoco.__version__}; ratio = world / bare)")
 
 
 if __name__ == "__main__":

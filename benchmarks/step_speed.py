@@ -9,8 +9,8 @@ each stage of the integrator runs MuJoCo's forward dynamics with every force mod
 kernels), the added-mass update and refactorisation of the mass matrix, all sub-steps of one
 call in compiled code (sailmujoco/native.py). Calls of step(1) show the per-call overhead;
 step(20) is a 10 Hz control loop at the 5 ms physics step. ``--python-loop`` times the stage
-work called from Python instead (``BoatPhysics.compiled_loop = False``, the path up to
-issue 18) in the same run. ``--integrator`` sets
+work called from Python instead (``BoatPhysics.compiled_loop = False``, the Python
+reference of the compiled step) in the same run. ``--integrator`` sets
 MuJoCo's integrator on that model (both columns): the default RK4 runs the force models at
 each of its four stages, the first-order ones once per step. ``--dofs 4`` times the boats with
 heave and pitch held (the reduced models' assumption, the assumption study's switch): MuJoCo's
@@ -28,6 +28,7 @@ import mujoco
 import numpy as np
 
 from sailmujoco.forces.wind import WindConfig
+from sailmujoco.options import Dofs, choices
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 
@@ -86,8 +87,8 @@ def main() -> None:
     parser.add_argument("--integrator", choices=sorted(INTEGRATORS), default=None,
                         help="MuJoCo integrator (default: the model's, RK4)")
     parser.add_argument("--python-loop", action="store_true",
-                        help="also time the stage work called from Python (the path up to issue 18)")
-    parser.add_argument("--dofs", type=int, choices=(6, 4), default=6,
+                        help="also time the stage work called from Python (the compiled step's Python reference)")
+    parser.add_argument("--dofs", type=int, choices=choices(Dofs), default=6,
                         help="6 (default), or 4: heave and pitch held")
     args = parser.parse_args()
     print(f"{'boat':12s} {'hydrostatics':12s} {'bare mj_step':>13s} {'step(1)':>9s} "
