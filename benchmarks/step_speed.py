@@ -87,7 +87,7 @@ def main() -> None:
     parser.add_argument("--integrator", choices=sorted(INTEGRATORS), default=None,
                         help="MuJoCo integrator (default: the model's, RK4)")
     parser.add_argument("--python-loop", action="store_true",
-                        help="also time the stage work called from Python (the compiled step's Python reference)")
+                        help="also time the compiled step's Python reference (stage work called from Python)")
     parser.add_argument("--dofs", type=int, choices=choices(Dofs), default=6,
                         help="6 (default), or 4: heave and pitch held")
     args = parser.parse_args()
