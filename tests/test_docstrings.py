@@ -134,6 +134,8 @@ def _check_class(cls, where: str, failures: list[str]) -> None:
         func = _python_function(member)
         if func is None or (name == "__init__" and _generated_init(cls)):
             continue
+        if func.__module__ != cls.__module__:  # put there by a base or decorator (typing.Protocol)
+            continue
         method_where = f"{where}.{name}"
         documented = _documented(_sections(inspect.getdoc(func), method_where, failures))
         if name == "__init__":
