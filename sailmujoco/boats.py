@@ -124,10 +124,6 @@ def saoud_robot(l_phi: float = 1.0) -> BoatParams:
     ----------
     l_phi : float
         Saoud's metacentric height l_phi (GM_t), m, > 0.
-
-    Returns
-    -------
-    BoatParams
     """
     if not math.isfinite(l_phi) or l_phi <= 0.0:
         raise ValueError(f"l_phi (metacentric height) must be positive, got {l_phi!r}")
