@@ -12,11 +12,13 @@ Rules:
 - every parameter except ``self``/``cls`` appears in "Parameters" (or "Other Parameters") of the
   docstring, ``*args`` as ``*args`` and ``**kwargs`` as ``**kwargs``, stars included;
 - the parameters of ``__init__`` may be documented in the class docstring or in ``__init__``'s own;
+- a method without a docstring of its own is judged by the one it overrides (``inspect.getdoc``);
 - a dataclass's generated ``__init__`` is not checked as a method, its fields are: each one under
   "Parameters" or "Attributes" of the class docstring;
 - a numba-compiled function is checked through its Python source (``py_func``);
-- properties, and methods a class inherits from a third-party base (dm_control, gymnasium), are
-  not checked; a method a project class overrides is;
+- properties, methods a class inherits from a third-party base (dm_control, gymnasium) and
+  members a base or decorator puts on the class (``typing.Protocol``'s ``__init__``) are not
+  checked; a method a project class overrides is;
 - a ``**kwargs``-style parameter says what it accepts: its description is not empty.
 
 Each failure reads ``module.qualname: parameter 'x' not documented``; all are collected and
