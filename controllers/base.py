@@ -58,7 +58,19 @@ class Controller(Protocol):
             Seed of any randomness the controller has.
         """
 
-    def __call__(self, timestep) -> np.ndarray: ...
+    def __call__(self, timestep) -> np.ndarray:
+        """The action for this time step.
+
+        Parameters
+        ----------
+        timestep : dm_env.TimeStep
+            Its ``observation`` is the dict of this module's docstring.
+
+        Returns
+        -------
+        numpy.ndarray, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+        """
 
 
 def scalar(observation: dict, key: str) -> float:
@@ -111,5 +123,17 @@ class Composite:
                 law.reset(seed)
 
     def __call__(self, timestep) -> np.ndarray:
+        """[rudder law, sail law] of this time step's observation.
+
+        Parameters
+        ----------
+        timestep : dm_env.TimeStep
+            Its ``observation`` is the dict of this module's docstring.
+
+        Returns
+        -------
+        numpy.ndarray, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+        """
         obs = timestep.observation
         return np.array([self.rudder(obs), self.sail(obs)], dtype=float)

@@ -86,6 +86,18 @@ class BriereSail:
         self.last_sail_angle = 0.0
 
     def __call__(self, observation: dict) -> float:
+        """The sail angle for this observation; held while the apparent wind is below ``min_speed``.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Sail angle, rad, positive trailing edge to port.
+        """
         theta_v, speed = observed_apparent_wind(observation, self.wind_source)
         if speed >= self.min_speed:
             self.last_sail_angle = keep_side_at_dead_run(

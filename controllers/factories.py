@@ -50,6 +50,18 @@ class Bounded:
             self.controller.reset(seed)
 
     def __call__(self, timestep) -> np.ndarray:
+        """The wrapped controller's action clipped to the bounds.
+
+        Parameters
+        ----------
+        timestep : dm_env.TimeStep
+            Passed to the wrapped controller.
+
+        Returns
+        -------
+        numpy.ndarray, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+        """
         return np.clip(self.controller(timestep), self.low, self.high)
 
     def __getattr__(self, name):
@@ -102,6 +114,18 @@ class SheetFromAngle:
             self.law.reset(seed)
 
     def __call__(self, observation) -> float:
+        """The sheet length for the law's sail angle at this observation.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base`, passed to the law.
+
+        Returns
+        -------
+        float
+            Sheet length, m.
+        """
         return self.length(self.law(observation))
 
 

@@ -80,6 +80,18 @@ class PIDHeading:
         return _wrap(scalar(observation, "heading") - desired)
 
     def __call__(self, observation: dict) -> float:
+        """The rudder angle for this observation (PID on the heading error, anti-windup).
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Rudder angle, rad, positive trailing edge to port, within +-``max_angle``.
+        """
         e = self.error(observation)
         de = -scalar(observation, "yaw_rate")
         command = self.kp * e + self.ki * self.integral + self.kd * de

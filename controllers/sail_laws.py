@@ -65,6 +65,18 @@ class LeewardSail:
         self.irons = math.radians(irons_deg)
 
     def __call__(self, observation: dict) -> float:
+        """The sail angle for this observation (0 in irons).
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Sail angle, rad, to leeward (the sign of the apparent wind angle).
+        """
         awa = scalar(observation, "apparent_wind_angle")
         if abs(awa) < self.irons:
             return 0.0
@@ -95,6 +107,18 @@ class FixedSail:
         self.last = 0.0
 
     def __call__(self, observation: dict) -> float:
+        """The fixed sail angle, to leeward of this observation's apparent wind.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Sail angle, rad.
+        """
         awa = scalar(observation, "apparent_wind_angle")
         self.last = keep_side_at_dead_run(math.copysign(self.angle, awa), self.last, awa)
         return self.last

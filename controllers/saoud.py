@@ -164,6 +164,18 @@ class SaoudSail:
         self.last_optimum: SailOptimum | None = None
 
     def __call__(self, observation: dict) -> float:
+        """The optimal sail angle for this observation; held while the apparent wind is below ``min_speed``.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Sail angle, rad, positive trailing edge to port.
+        """
         theta_v, speed = observed_apparent_wind(observation, self.wind_source)
         if speed < self.min_speed:
             return self.last_sail_angle

@@ -69,9 +69,28 @@ def _pair(value) -> tuple[float, float]:
 class VielView:
     """The observation in Viel's frame: SI, radians.
 
-    x, y [m]; theta (ccw from east), phi (course, ccw from east) [rad]; v forward, u to port
-    [m/s]; omega ccw [rad/s]; a_aw [m/s], psi_aw (blows towards, ccw from the bow) [rad];
-    psi_tw (blows towards, ccw from east) [rad]; x_T, y_T target [m].
+    Parameters
+    ----------
+    x, y : float
+        Position, x east, y north, m.
+    theta : float
+        Heading, rad, counter-clockwise from east.
+    phi : float
+        Course over ground, rad, counter-clockwise from east.
+    v : float
+        Speed forward, m/s.
+    u : float
+        Speed to port, m/s.
+    omega : float
+        Yaw rate, counter-clockwise, rad/s.
+    a_aw : float
+        Apparent wind speed, m/s.
+    psi_aw : float
+        Apparent wind direction (blows towards), counter-clockwise from the bow, rad.
+    psi_tw : float
+        True wind direction (blows towards), counter-clockwise from east, rad.
+    x_T, y_T : float
+        Target position, m.
     """
 
     x: float
@@ -369,6 +388,18 @@ class VielController:
         self.info: dict = {}
 
     def __call__(self, timestep) -> np.ndarray:
+        """The action for this time step: Viel's strategy, rudder and sail laws.
+
+        Parameters
+        ----------
+        timestep : dm_env.TimeStep
+            Its ``observation`` is the dict of :mod:`sailmujoco.controllers.base`.
+
+        Returns
+        -------
+        numpy.ndarray, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+        """
         s = viel_view(timestep.observation, self.target)
         vdot = 0.0 if self.v_previous is None else (s.v - self.v_previous) / self.dt
         self.v_previous = s.v

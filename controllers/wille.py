@@ -127,6 +127,18 @@ class WilleHeading:
         return float(np.clip(beta_b, -self.beta_limit, self.beta_limit))
 
     def __call__(self, observation: dict) -> float:
+        """The rudder angle of eq. 51 for this observation.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Rudder angle sigma, rad, positive trailing edge to port, within the rudder's saturation.
+        """
         p = self.params
         s = _paper_state(observation)
         desired = self.desired

@@ -107,12 +107,33 @@ GYBE_MARGIN = math.radians(5.0)  # rad, dead-run band where the sail keeps its s
 
 @dataclass(frozen=True, eq=False)
 class RollStep:
-    """What :class:`WilleRollSail` did at its last call (for studies and tests).
+    """What :class:`WilleRollSail` did at its last call (for studies and tests). Wille (2016b)'s
+    equation numbers.
 
-    ``u`` [N m] is eq. 70's desired sail roll moment (nan when off); ``relative_moment``
-    [kg] = u / V_ws^2; ``side`` 0 when the roll control is off, else the sign of the heel it
-    acts on; ``f_u`` [N] eq. 57; ``integral`` [rad s]; ``saturation`` +1 at lambda_100 (also
-    when off), -1 at lambda_0, else 0.
+    Parameters
+    ----------
+    active : bool
+        Whether the roll control acted.
+    side : int
+        0 when the roll control is off, else the sign of the heel it acts on.
+    beta_ws : float
+        Apparent-wind angle at the sail CE, rad.
+    wind_speed : float
+        Apparent wind speed at the sail CE, V_ws, m/s.
+    u : float
+        Eq. 70's desired sail roll moment, N m (nan when off).
+    relative_moment : float
+        u / V_ws^2, kg (nan when off).
+    f_u : float
+        Eq. 57's side force, N (nan when off).
+    integral : float
+        The heel error's integral, rad s.
+    sail_angle : float
+        The sail angle commanded, rad.
+    lambda_100 : float
+        The maximum-surge sail angle at ``beta_ws``, rad.
+    saturation : int
+        +1 at lambda_100 (also when off), -1 at lambda_0, else 0.
     """
 
     active: bool
@@ -288,6 +309,18 @@ class WilleRollSail:
             self.integral = 0.0
 
     def __call__(self, observation: dict) -> float:
+        """The sail angle for this observation: lambda_100, or eq. 70's moment inverted in the tables.
+
+        Parameters
+        ----------
+        observation : dict
+            The observation of :mod:`sailmujoco.controllers.base` (SI, our frames).
+
+        Returns
+        -------
+        float
+            Sail angle lambda, rad.
+        """
         state = observation["true_state"]
         heel = scalar(observation, "heel")
         rate = scalar(observation, "roll_rate")

@@ -256,8 +256,16 @@ class SailTable:
 class SailCommand:
     """Result of the on-line inversion: the sail angle and where it lies in the table.
 
-    ``saturation`` is +1 at lambda_100 (no more moment available), -1 at lambda_0 (no less),
-    0 in between. Angles in rad, moments in kg (N m per (m/s)^2).
+    Parameters
+    ----------
+    sail_angle : float
+        The sail angle that gives the relative moment asked for, rad.
+    saturation : int
+        +1 at lambda_100 (no more moment available), -1 at lambda_0 (no less), 0 in between.
+    lambda_100 : float
+        The maximum-surge sail angle, rad.
+    moment_100, moment_0 : float
+        Relative roll moments of lambda_100 and lambda_0, kg (N m per (m/s)^2).
     """
 
     sail_angle: float
@@ -269,7 +277,15 @@ class SailCommand:
 
 @dataclass(frozen=True, eq=False)
 class WilleSailTables:
-    """Both wind sides of the look-up table and the on-line inversion (Wille 2016b §2)."""
+    """Both wind sides of the look-up table and the on-line inversion (Wille 2016b §2).
+
+    Parameters
+    ----------
+    port, starboard : SailTable
+        The tables for the wind from port (beta_ws > 0) and from starboard.
+    max_jump : float
+        Largest change of a solution between grid rows still linearised, rad.
+    """
 
     port: SailTable
     starboard: SailTable

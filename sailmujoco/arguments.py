@@ -46,6 +46,13 @@ def number(low: float, *, low_open: bool, unit: str, integer: bool = False,
         naming the range.
     """
     def parse(text: str):
+        """The number ``text`` gives, if within the range.
+
+        Parameters
+        ----------
+        text : str
+            The command-line text.
+        """
         try:
             value = int(text) if integer else float(text)
         except ValueError:

@@ -28,7 +28,14 @@ from .physics import RK4, BoatPhysics
 
 
 class BoatBatch:
-    """N boats (6 or 4 DOF) stepped in one compiled call (see the module docstring)."""
+    """N boats (6 or 4 DOF) stepped in one compiled call (see the module docstring).
+
+    Parameters
+    ----------
+    boats : list of BoatPhysics
+        The boats, each once; they may differ in boat, wind, force switches and DOFs but not in
+        integrator.
+    """
 
     def __init__(self, boats: list[BoatPhysics]):
         boats = list(boats)
@@ -53,7 +60,14 @@ class BoatBatch:
         return len(self.boats)
 
     def set_controls(self, controls) -> None:
-        """Actuator commands, one row per boat (each checked as ``BoatPhysics.set_control``)."""
+        """Actuator commands, one row per boat (each checked as ``BoatPhysics.set_control``).
+
+        Parameters
+        ----------
+        controls : array_like, shape (N, nu)
+            Row i: boat i's [rudder angle (rad), sail angle (rad) or sheet length (m)]; rows of
+            stopped boats are ignored.
+        """
         controls = np.asarray(controls, dtype=float)
         if controls.ndim != 2 or controls.shape[0] != len(self.boats):
             raise ValueError(f"controls must have one row per boat ({len(self.boats)}), "
@@ -73,11 +87,22 @@ class BoatBatch:
         return np.array([b.stop_reason is None for b in self.boats])
 
     def step(self, nstep: int = 1, which=None) -> np.ndarray:
-        """Advance every running boat (of those ``which`` selects, a bool mask; default all)
-        ``nstep`` sub-steps; returns which boats still run.
+        """Advance every running boat (of those ``which`` selects) ``nstep`` sub-steps.
 
         A boat that stops during the call records its reason (``stop_reasons``); its state is
         the one before the offending sub-step, as when it steps alone.
+
+        Parameters
+        ----------
+        nstep : int
+            Sub-steps of each boat's ``model.opt.timestep`` seconds.
+        which : array_like of bool, shape (N,), optional
+            The boats to step; default all.
+
+        Returns
+        -------
+        numpy.ndarray of bool, shape (N,)
+            Which boats still run.
         """
         boats = self.boats
         which = np.ones(len(boats), dtype=bool) if which is None else np.asarray(which, dtype=bool)
@@ -119,6 +144,11 @@ class BatchEnvironment:
     same interface. Every environment gives exactly the TimeSteps it gives
     alone (tests/test_batch.py). An environment whose episode ended resets on its next step, as
     dm_env's contract says.
+
+    Parameters
+    ----------
+    envs : iterable of SailEnvironment
+        The environments, all with the same control timestep.
     """
 
     def __init__(self, envs):
@@ -145,7 +175,17 @@ class BatchEnvironment:
         return [env.reset() for env in self.envs]
 
     def step(self, actions) -> list:
-        """One control step of every environment with its row of ``actions``."""
+        """One control step of every environment with its row of ``actions``.
+
+        Parameters
+        ----------
+        actions : sequence of array_like, length N
+            Row i: environment i's action [rudder (rad), sail (rad) or sheet (m)].
+
+        Returns
+        -------
+        list of dm_env.TimeStep
+        """
         if len(actions) != len(self.envs):
             raise ValueError(f"actions must have one row per environment ({len(self.envs)}), "
                              f"got {len(actions)}")

@@ -120,6 +120,11 @@ def saoud_robot(l_phi: float = 1.0) -> BoatParams:
     other l_phi: with l_phi = 1 m the CG lies 0.84 m below the waterline and a CE 0.8 m above
     it would be at the waterline. So the heeling arm CE-CG is 0.8 m at l_phi = 0.1 and 1.7 m at
     l_phi = 1 in 6-DOF, while Saoud's reduced model keeps h_s = 0.8 m (a stated difference).
+
+    Parameters
+    ----------
+    l_phi : float
+        Saoud's metacentric height l_phi (GM_t), m, > 0.
     """
     if not math.isfinite(l_phi) or l_phi <= 0.0:
         raise ValueError(f"l_phi (metacentric height) must be positive, got {l_phi!r}")
@@ -215,6 +220,16 @@ def viel_identified_sail_area(rho_air: float) -> float:
     leg (a_ref = 11.7 m/s, alpha_ref = 23.3 deg, :data:`VIEL_SAIL_REF_INCIDENCE`):
     A_s = 2 p4 sin(alpha_ref) / (rho_air C_N(sin alpha_ref) a_ref). At small alpha our sail is
     then 2.6x stronger than Viel's; past ~30 deg weaker (xml/viel_boat/README.md step 3).
+
+    Parameters
+    ----------
+    rho_air : float
+        Air density, kg/m^3 (the boat's).
+
+    Returns
+    -------
+    float
+        A_s, m^2.
     """
     x = math.sin(VIEL_SAIL_REF_INCIDENCE)
     c_n = sum(coef * x ** (k + 1) for k, coef in enumerate(SAOUD_CN_POLY))  # Saoud §VII-A
@@ -227,6 +242,18 @@ def viel_identified_rudder_area(rho_water: float, aspect_ratio: float) -> float:
     Viel eq. 7 (read linear in v): g_rv = p5 v sin(delta_r). Ours (Wille eq. 23 with the thin-
     aerofoil section slope 2 pi): L = 1/2 rho_w A_r C_La delta_r v^2, C_La = 2 pi / (1 + 2/Asp).
     Equal at v = v_ref: A_r = 2 p5 / (rho_w C_La v_ref).
+
+    Parameters
+    ----------
+    rho_water : float
+        Water density, kg/m^3.
+    aspect_ratio : float
+        The rudder's effective aspect ratio Asp (Wille eq. 23).
+
+    Returns
+    -------
+    float
+        A_r, m^2.
     """
     c_la = 2.0 * math.pi / (1.0 + 2.0 / aspect_ratio)
     return 2.0 * VIEL_P5 / (rho_water * c_la * VIEL_BOAT_REF_SPEED)
@@ -384,9 +411,15 @@ def get_boat(name: str, **options) -> BoatParams:
     Parameters
     ----------
     name : str
-        A registered boat (:data:`BOATS`).
+        A registered boat: a key of :data:`BOATS` (``wille_yacht``, ``saoud_robot``, ``viel_boat``,
+        or one added by :func:`register_boat`).
     **options
-        Passed to its factory (e.g. ``l_phi`` of saoud_robot).
+        Keyword arguments of the boat's factory (e.g. ``l_phi`` for :func:`saoud_robot`); an
+        option the factory does not take raises a ValueError.
+
+    Returns
+    -------
+    BoatParams
     """
     try:
         factory = BOATS[name]

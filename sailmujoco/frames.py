@@ -42,32 +42,98 @@ _FLU_TO_FRD = np.diag([1.0, -1.0, -1.0])
 
 
 def wrap_angle(angle):
-    """Wrap an angle (or array) to [-pi, pi)."""
+    """Wrap an angle (or array) to [-pi, pi).
+
+    Parameters
+    ----------
+    angle : float or array_like
+        Angle(s), rad.
+
+    Returns
+    -------
+    numpy.ndarray
+        The same angle(s) in [-pi, pi), rad.
+    """
     return (np.asarray(angle) + np.pi) % (2.0 * np.pi) - np.pi
 
 
 def ned_from_enu(v):
-    """World vector ENU -> NED (Wille)."""
+    """World vector ENU -> NED (Wille).
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        World vector in ENU (x east, y north, z up), any unit.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The same vector in NED (x north, y east, z down).
+    """
     return _ENU_TO_NED @ np.asarray(v, dtype=float)
 
 
 def enu_from_ned(v):
-    """World vector NED -> ENU."""
+    """World vector NED -> ENU.
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        World vector in NED (x north, y east, z down), any unit.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The same vector in ENU (x east, y north, z up).
+    """
     return _ENU_TO_NED.T @ np.asarray(v, dtype=float)
 
 
 def nwu_from_enu(v):
-    """World vector ENU -> NWU (Saoud)."""
+    """World vector ENU -> NWU (Saoud).
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        World vector in ENU (x east, y north, z up), any unit.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The same vector in NWU (x north, y west, z up).
+    """
     return _ENU_TO_NWU @ np.asarray(v, dtype=float)
 
 
 def enu_from_nwu(v):
-    """World vector NWU -> ENU."""
+    """World vector NWU -> ENU.
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        World vector in NWU (x north, y west, z up), any unit.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The same vector in ENU (x east, y north, z up).
+    """
     return _ENU_TO_NWU.T @ np.asarray(v, dtype=float)
 
 
 def frd_from_flu(v):
-    """Body vector FLU (ours) -> FRD (Wille, SNAME). Its own inverse."""
+    """Body vector FLU (ours) -> FRD (Wille, SNAME). Its own inverse (``flu_from_frd``).
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        Body vector in FLU (x forward, y port, z up), or in FRD for the inverse; any unit.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        The same vector in FRD (x forward, y starboard, z down), or in FLU for the inverse.
+    """
     return _FLU_TO_FRD @ np.asarray(v, dtype=float)
 
 
@@ -75,32 +141,100 @@ flu_from_frd = frd_from_flu
 
 
 def heading_from_yaw(yaw):
-    """ENU yaw (ccw from east) -> compass heading (cw from north) = Wille's NED psi."""
+    """ENU yaw (ccw from east) -> compass heading (cw from north) = Wille's NED psi.
+
+    Parameters
+    ----------
+    yaw : float or array_like
+        ENU yaw, rad, counter-clockwise from east.
+
+    Returns
+    -------
+    numpy.ndarray
+        Compass heading, rad, clockwise from north, wrapped to [-pi, pi).
+    """
     return wrap_angle(np.pi / 2.0 - np.asarray(yaw))
 
 
 def yaw_from_heading(heading):
-    """Compass heading (cw from north) -> ENU yaw (ccw from east)."""
+    """Compass heading (cw from north) -> ENU yaw (ccw from east).
+
+    Parameters
+    ----------
+    heading : float or array_like
+        Compass heading, rad, clockwise from north.
+
+    Returns
+    -------
+    numpy.ndarray
+        ENU yaw, rad, counter-clockwise from east, wrapped to [-pi, pi).
+    """
     return wrap_angle(np.pi / 2.0 - np.asarray(heading))
 
 
 def saoud_yaw_from_yaw(yaw):
-    """ENU yaw -> Saoud's NWU yaw (ccw from north)."""
+    """ENU yaw -> Saoud's NWU yaw (ccw from north).
+
+    Parameters
+    ----------
+    yaw : float or array_like
+        ENU yaw, rad, counter-clockwise from east.
+
+    Returns
+    -------
+    numpy.ndarray
+        Saoud's psi, rad, counter-clockwise from north, wrapped to [-pi, pi).
+    """
     return wrap_angle(np.asarray(yaw) - np.pi / 2.0)
 
 
 def wind_velocity(speed, direction_from):
-    """World (ENU) velocity of a wind of ``speed`` coming from compass bearing ``direction_from``."""
+    """World (ENU) velocity of a wind of ``speed`` coming from compass bearing ``direction_from``.
+
+    Parameters
+    ----------
+    speed : float
+        Wind speed, m/s.
+    direction_from : float
+        Compass bearing the wind comes from, rad, clockwise from north (0: from the north).
+
+    Returns
+    -------
+    numpy.ndarray, shape (3,)
+        Velocity of the air in the world frame (ENU), m/s, horizontal.
+    """
     return -speed * np.array([np.sin(direction_from), np.cos(direction_from), 0.0])
 
 
 def wille_beta_w(direction_from):
-    """Wille's beta_w (NED direction the wind blows towards) from our 'comes from' bearing."""
+    """Wille's beta_w (NED direction the wind blows towards) from our 'comes from' bearing.
+
+    Parameters
+    ----------
+    direction_from : float or array_like
+        Compass bearing the wind comes from, rad.
+
+    Returns
+    -------
+    numpy.ndarray
+        Wille's beta_w, rad, the NED bearing the wind blows towards, wrapped to [-pi, pi).
+    """
     return wrap_angle(np.asarray(direction_from) + np.pi)
 
 
 def direction_from_wille_beta_w(beta_w):
-    """Our 'comes from' compass bearing from Wille's beta_w (blows towards, NED)."""
+    """Our 'comes from' compass bearing from Wille's beta_w (blows towards, NED).
+
+    Parameters
+    ----------
+    beta_w : float or array_like
+        Wille's beta_w, rad, the NED bearing the wind blows towards (Wille 2016a eq. 42).
+
+    Returns
+    -------
+    numpy.ndarray
+        Compass bearing the wind comes from, rad, wrapped to [-pi, pi).
+    """
     return wrap_angle(np.asarray(beta_w) + np.pi)
 
 
@@ -108,6 +242,16 @@ def euler_from_matrix(rot):
     """(heel, pitch, yaw) of a body->world rotation matrix, R = Rz(yaw) Ry(-pitch) Rx(heel).
 
     heel > 0: starboard down; pitch > 0: bow up (SNAME); yaw: ENU, ccw from east.
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3) or (9,)
+        Rotation matrix from the body frame (FLU) to the world frame (ENU), row-major.
+
+    Returns
+    -------
+    heel, pitch, yaw : float
+        Angles, rad.
     """
     rot = np.asarray(rot, dtype=float).reshape(3, 3)
     heel = np.arctan2(rot[2, 1], rot[2, 2])
@@ -117,7 +261,22 @@ def euler_from_matrix(rot):
 
 
 def matrix_from_euler(heel, pitch, yaw):
-    """Body->world rotation for (heel, pitch, yaw) as defined in :func:`euler_from_matrix`."""
+    """Body->world rotation for (heel, pitch, yaw) as defined in :func:`euler_from_matrix`.
+
+    Parameters
+    ----------
+    heel : float
+        Roll about body x, rad, positive starboard side down.
+    pitch : float
+        Pitch, rad, positive bow up (SNAME).
+    yaw : float
+        ENU yaw, rad, counter-clockwise from east.
+
+    Returns
+    -------
+    numpy.ndarray, shape (3, 3)
+        R = Rz(yaw) Ry(-pitch) Rx(heel), body (FLU) to world (ENU).
+    """
     ch, sh = np.cos(heel), np.sin(heel)
     cp, sp = np.cos(-pitch), np.sin(-pitch)
     cy, sy = np.cos(yaw), np.sin(yaw)
@@ -128,7 +287,22 @@ def matrix_from_euler(heel, pitch, yaw):
 
 
 def quat_from_euler(heel, pitch, yaw):
-    """MuJoCo quaternion (w, x, y, z) for (heel, pitch, yaw)."""
+    """MuJoCo quaternion (w, x, y, z) for (heel, pitch, yaw).
+
+    Parameters
+    ----------
+    heel : float
+        Roll about body x, rad, positive starboard side down.
+    pitch : float
+        Pitch, rad, positive bow up (SNAME).
+    yaw : float
+        ENU yaw, rad, counter-clockwise from east.
+
+    Returns
+    -------
+    numpy.ndarray, shape (4,)
+        Unit quaternion (w, x, y, z) of the body->world rotation of :func:`matrix_from_euler`.
+    """
     rot = matrix_from_euler(heel, pitch, yaw)
     w = np.sqrt(max(0.0, 1.0 + rot[0, 0] + rot[1, 1] + rot[2, 2])) / 2.0
     if w > 1e-6:
@@ -151,8 +325,18 @@ def quat_from_euler(heel, pitch, yaw):
 def apparent_wind_angle(flow_body):
     """AWA from the apparent wind velocity in the body frame (FLU).
 
-    ``flow_body`` is the velocity of the air relative to the point (where it blows to).
     The wind comes from ``-flow``; AWA is positive when it comes from starboard (-y).
+
+    Parameters
+    ----------
+    flow_body : array_like, shape (2,) or (3,)
+        Velocity of the air relative to the point (where it blows to), in the body frame
+        (x forward, y port), m/s; only x and y are read.
+
+    Returns
+    -------
+    float
+        Apparent wind angle, rad, in (-pi, pi]: 0 wind from ahead, positive from starboard.
     """
     fx, fy = float(flow_body[0]), float(flow_body[1])
     return float(np.arctan2(fy, -fx))
@@ -162,5 +346,16 @@ def saoud_theta_v(flow_heading_frame):
     """Saoud's Theta_V from the apparent wind in the (un-heeled) heading frame, FLU.
 
     Saoud §IV: V = R_z(psi)^T (v - v_w) = -flow, Theta_V = atan2(V2, V1).
+
+    Parameters
+    ----------
+    flow_heading_frame : array_like, shape (2,) or (3,)
+        Velocity of the air relative to the boat in the heading frame (x forward along the
+        heading, y to port, horizontal), m/s.
+
+    Returns
+    -------
+    float
+        Saoud's Theta_V, rad, counter-clockwise.
     """
     return float(np.arctan2(-flow_heading_frame[1], -flow_heading_frame[0]))

@@ -40,13 +40,27 @@ from scipy.optimize import brentq
 
 @dataclass(frozen=True)
 class HullShape:
-    """Canoe body and topside dimensions, metres."""
+    """Canoe body and topside dimensions, metres.
 
-    length: float  # L, waterline length
-    half_beam: float  # b0, maximum waterline half-breadth (midship)
-    canoe_draft: float  # t0, maximum depth of the canoe body below the waterline
-    freeboard: float  # height of the flat deck above the waterline
-    deck_half_beam: float | None = None  # midship deck half-breadth; None: = half_beam (no flare)
+    Parameters
+    ----------
+    length : float
+        L, waterline length, m.
+    half_beam : float
+        b0, maximum waterline half-breadth (midship), m.
+    canoe_draft : float
+        t0, maximum depth of the canoe body below the waterline, m.
+    freeboard : float
+        Height of the flat deck above the waterline, m.
+    deck_half_beam : float or None
+        Midship deck half-breadth, m, >= ``half_beam``; None: equal to ``half_beam`` (no flare).
+    """
+
+    length: float
+    half_beam: float
+    canoe_draft: float
+    freeboard: float
+    deck_half_beam: float | None = None
 
     def __post_init__(self):
         for name in ("length", "half_beam", "canoe_draft", "freeboard"):
@@ -65,57 +79,133 @@ class HullShape:
 
 
 def volume(h: HullShape) -> float:
-    """Displaced volume at the design waterline, m^3."""
+    """Displaced volume at the design waterline, m^3.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return 0.5 * np.pi * h.half_beam * h.canoe_draft * h.length * 8.0 / 15.0
 
 
 def centre_of_buoyancy_z(h: HullShape) -> float:
-    """Height of the centre of buoyancy above the waterline (negative: below), m."""
+    """Height of the centre of buoyancy above the waterline (negative: below), m.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return -8.0 / (7.0 * np.pi) * h.canoe_draft
 
 
 def waterplane_area(h: HullShape) -> float:
-    """Waterplane area A_wp, m^2."""
+    """Waterplane area A_wp, m^2.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return 4.0 / 3.0 * h.half_beam * h.length
 
 
 def centre_of_flotation_x(h: HullShape) -> float:
-    """Centroid of the upright waterplane forward of CO, m: 0, the planform is fore-aft symmetric."""
+    """Centroid of the upright waterplane forward of CO, m: 0, the planform is fore-aft symmetric.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return 0.0
 
 
 def bm_transverse(h: HullShape) -> float:
-    """Transverse metacentric radius BM = I_T / V, m."""
+    """Transverse metacentric radius BM = I_T / V, m.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return 32.0 / 105.0 * h.half_beam**3 * h.length / volume(h)
 
 
 def bm_longitudinal(h: HullShape) -> float:
-    """Longitudinal metacentric radius BM_L = I_L / V, m."""
+    """Longitudinal metacentric radius BM_L = I_L / V, m.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     return h.half_beam * h.length**3 / 15.0 / volume(h)
 
 
 def gm_transverse(h: HullShape, z_g: float) -> float:
-    """Transverse metacentric height GM_t = z_B + BM - z_G, m (z_G above the waterline)."""
+    """Transverse metacentric height GM_t = z_B + BM - z_G, m.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    z_g : float
+        Height of the centre of gravity above the waterline (body z), m.
+    """
     return centre_of_buoyancy_z(h) + bm_transverse(h) - z_g
 
 
 def gm_longitudinal(h: HullShape, z_g: float) -> float:
-    """Longitudinal metacentric height GM_L, m."""
+    """Longitudinal metacentric height GM_L = z_B + BM_L - z_G, m.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    z_g : float
+        Height of the centre of gravity above the waterline (body z), m.
+    """
     return centre_of_buoyancy_z(h) + bm_longitudinal(h) - z_g
 
 
 def heave_added_mass(h: HullShape, rho: float) -> float:
-    """Strip-theory heave added mass a33 = -Z_wdot, kg."""
+    """Strip-theory heave added mass a33 = -Z_wdot, kg.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    rho : float
+        Water density, kg/m^3.
+    """
     return rho * 0.5 * np.pi * h.half_beam**2 * h.length * 8.0 / 15.0
 
 
 def pitch_added_inertia(h: HullShape, rho: float) -> float:
-    """Strip-theory pitch added inertia a55 = -M_qdot, kg m^2."""
+    """Strip-theory pitch added inertia a55 = -M_qdot, kg m^2.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    rho : float
+        Water density, kg/m^3.
+    """
     return rho * 0.5 * np.pi * h.half_beam**2 * 2.0 * h.length**3 / 105.0
 
 
 def wetted_surface(h: HullShape, n: int = 200) -> float:
-    """Wetted surface of the canoe body (half-ellipse perimeters integrated along x), m^2."""
+    """Wetted surface of the canoe body (half-ellipse perimeters integrated along x), m^2.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    n : int
+        Number of Gauss-Legendre stations along x.
+    """
     x, w = np.polynomial.legendre.leggauss(n)
     x = 0.5 * h.length * x
     f = 1.0 - (2.0 * x / h.length) ** 2
@@ -133,6 +223,25 @@ def design_for(length: float, displaced_volume: float, gm: float, z_g: float,
     Solves V = (4 pi / 15) b0 t0 L and GM_t(b0, t0) = gm for (b0, t0) with brentq. ``flare``
     (deck half-breadth / waterline half-breadth, >= 1) shapes the topsides only: it leaves the
     upright V, z_B, BM and so GM unchanged.
+
+    Parameters
+    ----------
+    length : float
+        Waterline length L, m.
+    displaced_volume : float
+        Displaced volume V at the design waterline, m^3.
+    gm : float
+        Transverse metacentric height wanted, m.
+    z_g : float
+        Height of the centre of gravity above the waterline (body z), m.
+    freeboard : float
+        Height of the deck above the waterline, m.
+    flare : float
+        Deck half-breadth / waterline half-breadth, >= 1 (1: vertical topsides).
+
+    Returns
+    -------
+    HullShape
     """
     area = displaced_volume / (4.0 * np.pi / 15.0 * length)  # b0 * t0
 
@@ -152,6 +261,15 @@ class ColumnQuadrature:
     ``z_bottom[k]`` (the canoe-body bottom, or the flared topside outboard of the waterline) to
     ``z_top[k]`` (the deck). The buoyancy of each column is integrated exactly along its axis;
     only (x, y) is discretised.
+
+    Parameters
+    ----------
+    x, y : numpy.ndarray
+        Body position (x forward, y port) of each column, m.
+    area : numpy.ndarray
+        Footprint area of each column (quadrature weight), m^2.
+    z_bottom, z_top : numpy.ndarray
+        Body z of each column's bottom and top, m (z up, 0 on the design waterline).
     """
 
     x: np.ndarray
@@ -172,6 +290,21 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
     (default ntheta // 2) over the band b(x) < |y| < k b(x), midpoint rule in |y|: their bottom
     is the topside, z = freeboard (|y| - b) / ((k - 1) b), taken at the column's centre, which
     integrates the linear topside exactly wherever a column is wholly wet or dry.
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    nx : int
+        Gauss-Legendre stations along x.
+    ntheta : int
+        Midpoint-rule columns across each station's canoe body.
+    nflare : int or None
+        Columns per side per station over the flare band; None: ``ntheta // 2``.
+
+    Returns
+    -------
+    ColumnQuadrature
     """
     xg, wg = np.polynomial.legendre.leggauss(nx)
     x1 = 0.5 * h.length * xg
@@ -204,7 +337,21 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
 def strip_quadrature(h: HullShape, n: int = 16):
     """Gauss-Legendre stations along the hull for the cross-flow strip integrals.
 
-    Returns (x, weight, draft) with draft T(x) = t(x), the canoe-body depth.
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    n : int
+        Number of stations.
+
+    Returns
+    -------
+    x : numpy.ndarray
+        Station positions along body x, m.
+    weight : numpy.ndarray
+        Quadrature weights, m.
+    draft : numpy.ndarray
+        Draft T(x) = t(x), the canoe-body depth at each station, m.
     """
     xg, wg = np.polynomial.legendre.leggauss(n)
     x = 0.5 * h.length * xg

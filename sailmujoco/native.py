@@ -185,6 +185,23 @@ def registry_row(args, act, warnings, data=None, four_dof=None) -> np.ndarray:
 
     A 4-DOF boat also gives ``data``, MuJoCo's (qpos, qvel, qfrc_applied), and ``four_dof``, the
     arrays of :data:`FOUR_DOF_ARRAYS` in order; a 6-DOF boat's are its kernel's qpos, qvel, qfrc.
+
+    Parameters
+    ----------
+    args : tuple of numpy.ndarray
+        The boat's force-kernel arrays, in :data:`KERNEL_ARRAYS` order.
+    act : numpy.ndarray
+        The actuator activations (MjData ``act``).
+    warnings : numpy.ndarray of C int
+        A 1-D view of MuJoCo's warning counters.
+    data : tuple of numpy.ndarray, optional
+        A 4-DOF boat's MuJoCo (qpos, qvel, qfrc_applied).
+    four_dof : tuple of numpy.ndarray, optional
+        A 4-DOF boat's arrays of :data:`FOUR_DOF_ARRAYS`; None for a 6-DOF boat.
+
+    Returns
+    -------
+    numpy.ndarray of int64
     """
     if len(args) != len(KERNEL_ARRAYS):
         raise ValueError(f"expected {len(KERNEL_ARRAYS)} kernel arrays, got {len(args)}")
@@ -243,6 +260,11 @@ class callback_installed:
     MuJoCo has one control callback per process. Steps of several boats in threads share it
     (counted); a step that needs another callback (the 4-DOF model's Python one) waits until
     those have ended. On the way out the callback found on the way in is put back.
+
+    Parameters
+    ----------
+    callback : callable or ctypes function pointer
+        The control callback to install.
     """
 
     def __init__(self, callback):
@@ -287,6 +309,13 @@ class Stepping:
 
     ``data_addresses`` and ``rows``: one MjData address and :func:`registry_row` per boat (or a
     single address and row). Entering gives the slots (an int64 array).
+
+    Parameters
+    ----------
+    data_addresses : int or list of int
+        The MjData address of each boat.
+    rows : numpy.ndarray or list of numpy.ndarray
+        Each boat's :func:`registry_row`.
     """
 
     def __init__(self, data_addresses, rows):

@@ -96,9 +96,28 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
              **boat_options) -> BoatPhysics:
         """Compile ``boat`` (or ``params``) and attach wind and force models.
 
-        ``boat_options`` go to the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
-        ``dofs=4`` holds heave and pitch (the reduced models' assumption); see
-        :func:`sailmujoco.mjcf.boat_spec`.
+        Parameters
+        ----------
+        boat : str
+            A registered boat (:data:`sailmujoco.boats.BOATS`), used when ``params`` is None.
+        params : BoatParams, optional
+            The boat's parameters, instead of a registered name (then no ``boat_options``).
+        sail_mode : {"actuated", "sheeted"}
+            The sail's second actuator: a position servo on the sail angle (rad) or a sheet (m).
+        wind : WindConfig, optional
+            The wind field; default ``WindConfig()``.
+        forces : ForceSwitches, optional
+            Which force models act and in which form; default ``ForceSwitches()``.
+        dofs : {6, 4}
+            ``dofs=4`` holds heave and pitch (the reduced models' assumption); see
+            :func:`sailmujoco.mjcf.boat_spec`.
+        **boat_options
+            Keyword arguments of the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
+
+        Returns
+        -------
+        BoatPhysics
+            Reset to the ``home`` keyframe.
         """
         if params is None:
             params = get_boat(boat, **boat_options)
@@ -112,6 +131,18 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
 
     @classmethod
     def _from_mjcf(cls, *args, **kwargs):
+        """Refused: a BoatPhysics is built from the boat's parameters (:meth:`load`).
+
+        dm_control's ``from_xml_string``, ``from_xml_path``, ``from_byte_string`` and
+        ``from_binary_path`` all raise a ValueError that says so.
+
+        Parameters
+        ----------
+        *args
+            dm_control's positional arguments (ignored).
+        **kwargs
+            dm_control's keyword arguments (ignored).
+        """
         raise ValueError("a BoatPhysics is built from the boat's parameters, which its force models "
                          "need: use BoatPhysics.load(boat, ...) (xml/<boat>/ is generated from them), "
                          "or dm_control.mujoco.Physics for the bare MJCF")
@@ -218,13 +249,25 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         self._attach(boat)
 
     def copy(self, share_model=False):
-        """An independent copy in the same state (``share_model``: share the MjModel)."""
+        """An independent copy in the same state.
+
+        Parameters
+        ----------
+        share_model : bool
+            Share the MjModel with this physics rather than copy it.
+        """
         new = super().copy(share_model=share_model)
         new._attach(_copy.deepcopy(self._boat_state()))
         return new
 
     def reset(self, keyframe_id=None):
-        """Reset to the ``home`` keyframe (upright at the design waterline)."""
+        """Reset to the ``home`` keyframe (upright at the design waterline).
+
+        Parameters
+        ----------
+        keyframe_id : int, optional
+            Keyframe to reset to; None: 0, ``home``.
+        """
         super().reset(0 if keyframe_id is None else keyframe_id)
         if hasattr(self, "_P"):
             self.stop_reason = None
@@ -232,7 +275,13 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
 
     # ------------------------------------------------------------------ stepping
     def set_control(self, control):
-        """Set the actuator commands; a non-finite command is refused with a clear message."""
+        """Set the actuator commands; a non-finite command is refused with a clear message.
+
+        Parameters
+        ----------
+        control : array_like, shape (nu,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)], in :attr:`actuator_names` order.
+        """
         control = np.asarray(control, dtype=float)
         if control.shape != (self.model.nu,):
             raise ValueError(f"control must have shape ({self.model.nu},) "
@@ -247,7 +296,13 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         return [self.model.ptr.actuator(i).name for i in range(self.model.nu)]
 
     def set_external_wrench(self, wrench_body) -> None:
-        """A constant extra body-frame wrench (Fx, Fy, Fz, Mx, My, Mz) about CO (tests, thrust)."""
+        """A constant extra body-frame wrench (Fx, Fy, Fz, Mx, My, Mz) about CO (tests, thrust).
+
+        Parameters
+        ----------
+        wrench_body : array_like, shape (6,)
+            Force (N) and moment (N m) in the body frame (x forward, y port, z up), about CO.
+        """
         wrench_body = np.asarray(wrench_body, dtype=float)
         if wrench_body.shape != (6,) or not np.all(np.isfinite(wrench_body)):
             raise ValueError("external wrench must be 6 finite numbers (N, N m)")
@@ -278,7 +333,13 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         return self._status
 
     def step(self, nstep: int = 1) -> None:
-        """Advance ``nstep`` physics sub-steps, recomputing every force before each stage."""
+        """Advance ``nstep`` physics sub-steps, recomputing every force before each stage.
+
+        Parameters
+        ----------
+        nstep : int
+            Number of sub-steps of ``model.opt.timestep`` seconds each.
+        """
         m, d = self.model.ptr, self.data.ptr
         if self.stop_reason is not None:
             raise SimulationStopped(self.stop_reason, d.time)

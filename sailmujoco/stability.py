@@ -167,9 +167,18 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
 class FloatingTable:
     """Heave, trim, displaced volume and righting moment of the freely floating hull per heel.
 
-    ``heel`` (rad, ascending over [-max, max]), ``heave`` (m, height of CO), ``trim`` (rad, bow
-    up), ``volume`` (m^3), ``righting`` (N m about the CG, about the horizontal heading axis,
-    positive restoring).
+    Parameters
+    ----------
+    heel : numpy.ndarray
+        Heel, rad, ascending over [-max, max].
+    heave : numpy.ndarray
+        Height of CO above the water surface, m.
+    trim : numpy.ndarray
+        Trim, rad, bow up.
+    volume : numpy.ndarray
+        Displaced volume, m^3.
+    righting : numpy.ndarray
+        Righting moment about the CG, about the horizontal heading axis, N m, positive restoring.
     """
 
     heel: np.ndarray

@@ -122,17 +122,33 @@ R_USED = R_HEEL_VALUES + HEEL_FROUDE.size
 @dataclass(frozen=True)
 class DelftHull:
     """The canoe-body parameters of the DSYHS regressions (SI; LCB, LCF from the forward
-    perpendicular)."""
+    perpendicular).
 
-    length: float  # L_WL, m
-    beam: float  # B_WL, m
-    draft: float  # T_c, canoe body draft, m
-    volume: float  # V_c, displaced volume of the canoe body, m^3
-    lcb: float  # LCB_fpp, m
-    lcf: float  # LCF_fpp, m
-    prismatic: float  # C_p, -
-    midship: float  # C_m, -
-    waterplane_area: float  # A_w, m^2
+    Parameters
+    ----------
+    length, beam : float
+        L_WL and B_WL, m.
+    draft : float
+        T_c, canoe body draft, m.
+    volume : float
+        V_c, displaced volume of the canoe body, m^3.
+    lcb, lcf : float
+        LCB_fpp and LCF_fpp, aft of the forward perpendicular, m.
+    prismatic, midship : float
+        C_p and C_m, dimensionless.
+    waterplane_area : float
+        A_w, m^2.
+    """
+
+    length: float
+    beam: float
+    draft: float
+    volume: float
+    lcb: float
+    lcf: float
+    prismatic: float
+    midship: float
+    waterplane_area: float
 
     @property
     def lcb_percent(self) -> float:
@@ -141,7 +157,13 @@ class DelftHull:
 
 
 def delft_hull(h: hull_geometry.HullShape) -> DelftHull:
-    """The DSYHS parameters of a :class:`~sailmujoco.hull.HullShape` canoe body (module docstring)."""
+    """The DSYHS parameters of a :class:`~sailmujoco.hull.HullShape` canoe body (module docstring).
+
+    Parameters
+    ----------
+    h : HullShape
+        The canoe body.
+    """
     volume = hull_geometry.volume(h)
     beam, draft = 2.0 * h.half_beam, h.canoe_draft
     prismatic = 8.0 / 15.0  # section area (1 - (2x/L)^2)^2 A_m along x (hull.py)
@@ -154,7 +176,13 @@ def delft_hull(h: hull_geometry.HullShape) -> DelftHull:
 
 
 def upright_table(d: DelftHull) -> np.ndarray:
-    """R_r / (rho g V_c) at :data:`UPRIGHT_FROUDE`, Keuning & Katgert (2008), clipped at 0."""
+    """R_r / (rho g V_c) at :data:`UPRIGHT_FROUDE`, Keuning & Katgert (2008), clipped at 0.
+
+    Parameters
+    ----------
+    d : DelftHull
+        The canoe body's DSYHS parameters.
+    """
     slender = d.volume ** (1.0 / 3.0) / d.length
     terms = np.array([1.0 / slender, d.lcb / d.length, d.prismatic,
                       d.volume ** (2.0 / 3.0) / d.waterplane_area, d.beam / d.length,
@@ -163,7 +191,13 @@ def upright_table(d: DelftHull) -> np.ndarray:
 
 
 def heel_table(d: DelftHull) -> np.ndarray:
-    """dR_rh(20 deg) / (rho g V_c) at :data:`HEEL_FROUDE`, Keuning & Sonnenberg (1998), clipped at 0."""
+    """dR_rh(20 deg) / (rho g V_c) at :data:`HEEL_FROUDE`, Keuning & Sonnenberg (1998), clipped at 0.
+
+    Parameters
+    ----------
+    d : DelftHull
+        The canoe body's DSYHS parameters.
+    """
     bt, lcb = d.beam / d.draft, d.lcb_percent
     terms = np.array([1.0, d.length / d.beam, bt, bt * bt, lcb, lcb * lcb])
     return np.maximum(1e-3 * terms @ HEEL_COEFFICIENTS, 0.0)
@@ -177,12 +211,28 @@ def _read_table(fn: float, grid: np.ndarray, values: np.ndarray) -> float:
 
 
 def heel_factor(heel: float) -> float:
-    """dR_rh(phi) / dR_rh(20 deg) = 6 |phi|^1.7, Keuning & Sonnenberg (1998) (|phi| capped at 90 deg)."""
+    """dR_rh(phi) / dR_rh(20 deg) = 6 |phi|^1.7, Keuning & Sonnenberg (1998) (|phi| capped at 90 deg).
+
+    Parameters
+    ----------
+    heel : float
+        Heel phi, rad.
+    """
     return HEEL_FACTOR * min(abs(heel), MAX_HEEL) ** HEEL_EXPONENT
 
 
 def residuary_coefficient(d: DelftHull, froude: float, heel: float = 0.0) -> float:
-    """R_r / (rho g V_c) of the hull at Froude number ``froude`` (>= 0) and ``heel`` [rad]."""
+    """R_r / (rho g V_c) of the hull at Froude number ``froude`` (>= 0) and ``heel`` [rad].
+
+    Parameters
+    ----------
+    d : DelftHull
+        The canoe body's DSYHS parameters.
+    froude : float
+        Fn = |u_r| / sqrt(g L_WL), >= 0.
+    heel : float
+        Heel, rad.
+    """
     upright = _read_table(froude, UPRIGHT_FROUDE, upright_table(d))
     increment = _read_table(froude, HEEL_FROUDE, heel_table(d))
     return upright + increment * heel_factor(heel)
@@ -193,6 +243,17 @@ def residuary_resistance(d: DelftHull, u_r: float, heel: float = 0.0, rho: float
     """Surge force (N, body x) of the residuary resistance at surge speed ``u_r`` through the water.
 
     -sign(u_r) rho g V_c R_r/(rho g V_c)(Fn = |u_r| / sqrt(g L_WL), heel): odd in u_r.
+
+    Parameters
+    ----------
+    d : DelftHull
+        The canoe body's DSYHS parameters.
+    u_r : float
+        Surge speed through the water, m/s.
+    heel : float
+        Heel, rad.
+    rho, g : float
+        Water density (kg/m^3) and gravity (m/s^2).
     """
     if u_r == 0.0:
         return 0.0
@@ -201,7 +262,15 @@ def residuary_resistance(d: DelftHull, u_r: float, heel: float = 0.0, rho: float
 
 
 def pack_resistance(d: DelftHull, rho: float, g: float = GRAVITY) -> np.ndarray:
-    """The resistance block of P (layout R_* above): what :func:`residuary_surge_force` reads."""
+    """The resistance block of P (layout R_* above): what :func:`residuary_surge_force` reads.
+
+    Parameters
+    ----------
+    d : DelftHull
+        The canoe body's DSYHS parameters.
+    rho, g : float
+        Water density (kg/m^3) and gravity (m/s^2).
+    """
     block = np.zeros(R_USED)
     block[R_WEIGHT], block[R_SQRT_GL] = rho * g * d.volume, math.sqrt(g * d.length)
     for fn0, dfn, n, grid in ((R_UP_FN0, R_UP_DFN, R_UP_N, UPRIGHT_FROUDE),
@@ -230,7 +299,17 @@ def _table_value(fn, fn0, dfn, n, values):
 
 @kernel
 def residuary_surge_force(u_r, heel, block):
-    """Residuary resistance (N, along body x, at CO) from the packed ``block``; odd in u_r."""
+    """Residuary resistance (N, along body x, at CO) from the packed ``block``; odd in u_r.
+
+    Parameters
+    ----------
+    u_r : float
+        Surge speed through the water, m/s.
+    heel : float
+        Heel, rad.
+    block : numpy.ndarray
+        The block of :func:`pack_resistance`.
+    """
     if u_r == 0.0:
         return 0.0
     fn = abs(u_r) / block[R_SQRT_GL]

@@ -44,26 +44,46 @@ class WindConfig:
 
     A TOML file with the same keys (angles with a ``_deg`` suffix allowed) loads through
     :meth:`from_toml`.
+
+    Parameters
+    ----------
+    speed : float
+        U_m10, mean wind speed at 10 m, m/s, in [0, 100].
+    direction_from : float
+        Compass bearing the wind comes from, rad.
+    gusts, wander : bool
+        NORSOK gusts, direction wander (eq. 43) on or off.
+    wander_intensity, wander_limit : float
+        The wander's white-noise intensity (rad/sqrt(s), a guess: not in the paper) and its
+        saturation (rad, eq. 43).
+    n_frequencies : int
+        Number of gust components.
+    current_east, current_north : float
+        World current (where it flows to), m/s.
+    seed : int
+        Seeds the gust phases and frequencies and the wander.
+    direction_schedule : tuple of (float, float)
+        Step changes of the mean direction, ((t0 s, direction_from0 rad), ...), time-ordered;
+        before the first t the direction is ``direction_from`` (Saoud Fig. 6 turns the wind).
+    speed_oscillation, direction_oscillation, oscillation_frequency : float
+        A (m/s), B (rad) and f (Hz) of the sinusoidal modulation U_m10 + A sin(2 pi f t),
+        direction_from + B sin(2 pi f t) (Viel §5.1 cases 3-6).
     """
 
-    speed: float = 0.0  # U_m10, mean wind speed at 10 m
-    direction_from: float = 0.0  # compass bearing the wind comes from
-    gusts: bool = True  # NORSOK gusts on/off
-    wander: bool = True  # direction wander on/off
-    wander_intensity: float = math.radians(0.5)  # rad/sqrt(s), guess (not in the paper)
-    wander_limit: float = math.radians(5.0)  # rad, eq. 43
-    n_frequencies: int = 100  # number of gust components
-    current_east: float = 0.0  # m/s, world current (where it flows to)
-    current_north: float = 0.0  # m/s
+    speed: float = 0.0
+    direction_from: float = 0.0
+    gusts: bool = True
+    wander: bool = True
+    wander_intensity: float = math.radians(0.5)
+    wander_limit: float = math.radians(5.0)
+    n_frequencies: int = 100
+    current_east: float = 0.0
+    current_north: float = 0.0
     seed: int = 0
-    # step changes of the mean direction: ((t0, direction_from0), (t1, direction_from1), ...);
-    # before the first t the direction is ``direction_from`` (Saoud Fig. 6 turns the wind)
     direction_schedule: tuple = ()
-    # sinusoidal modulation of the 10 m mean speed and of the direction (Viel §5.1 cases 3-6):
-    # U_m10 + A sin(2 pi f t), direction_from + B sin(2 pi f t)
-    speed_oscillation: float = 0.0  # m/s, A
-    direction_oscillation: float = 0.0  # rad, B
-    oscillation_frequency: float = 0.0  # Hz, f
+    speed_oscillation: float = 0.0
+    direction_oscillation: float = 0.0
+    oscillation_frequency: float = 0.0
 
     def __post_init__(self):
         numbers = {f.name: getattr(self, f.name) for f in fields(self)}
@@ -90,7 +110,15 @@ class WindConfig:
 
     @classmethod
     def from_dict(cls, values: dict, source: str = "wind config") -> WindConfig:
-        """Build from a mapping; ``*_deg`` keys are converted to radians."""
+        """Build from a mapping; ``*_deg`` keys are converted to radians.
+
+        Parameters
+        ----------
+        values : dict
+            Field name (or ``name_deg``) -> value; an unknown key raises a ValueError.
+        source : str
+            Where the mapping comes from, for the error messages.
+        """
         known = {f.name for f in fields(cls)}
         kwargs = {}
         for key, value in values.items():
@@ -111,13 +139,27 @@ class WindConfig:
 
     @classmethod
     def from_toml(cls, path: str | Path) -> WindConfig:
-        """Load a wind file (TOML, optionally under a ``[wind]`` table)."""
+        """Load a wind file (TOML, optionally under a ``[wind]`` table).
+
+        Parameters
+        ----------
+        path : str or Path
+            The TOML file.
+        """
         data = read_toml(path, "wind file")
         return cls.from_dict(data.get("wind", data), source=f"wind file {str(Path(path))!r}")
 
 
 def norsok_spectrum(f, z, mean_speed_10):
-    """NORSOK wind spectrum S(f, z) in (m/s)^2/Hz, Wille (2016a) eqs. 37-38 (z up, metres)."""
+    """NORSOK wind spectrum S(f, z) in (m/s)^2/Hz, Wille (2016a) eqs. 37-38.
+
+    Parameters
+    ----------
+    f, z : array_like
+        Frequency (Hz) and height above the water (m).
+    mean_speed_10 : float
+        Mean wind speed at 10 m, m/s.
+    """
     f = np.asarray(f, dtype=float)
     zr = np.maximum(np.asarray(z, dtype=float), 1e-6) / 10.0
     u = mean_speed_10 / 10.0
@@ -129,7 +171,15 @@ def norsok_spectrum(f, z, mean_speed_10):
 
 
 def log_profile(z, mean_speed_10):
-    """Mean wind at height z (m), eq. 40; zero at and below the roughness length z0."""
+    """Mean wind at height z (m), eq. 40; zero at and below the roughness length z0.
+
+    Parameters
+    ----------
+    z : array_like
+        Height above the water, m.
+    mean_speed_10 : float
+        Mean wind speed at 10 m, m/s.
+    """
     k = c.KARMAN_K
     z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
     z = np.asarray(z, dtype=float)
@@ -143,6 +193,11 @@ class WindField:
     ``log_z``; the wander random walk ``wander`` on a ``WANDER_DT`` grid, grown on demand by
     :meth:`ensure` (block by block from one generator, so it does not depend on how far ahead
     it was asked for).
+
+    Parameters
+    ----------
+    config : WindConfig
+        The wind to realise.
     """
 
     def __init__(self, config: WindConfig):
@@ -168,7 +223,13 @@ class WindField:
         self.ensure(600.0)
 
     def ensure(self, t_end: float) -> None:
-        """Extend the wander series so that it covers [0, t_end] s."""
+        """Extend the wander series so that it covers [0, t_end] s.
+
+        Parameters
+        ----------
+        t_end : float
+            Time, s.
+        """
         need = int(math.ceil(t_end / WANDER_DT)) + 2
         if need <= self._walk.size:
             return
@@ -190,14 +251,26 @@ class WindField:
         self.wander = self._walk + offset
 
     def direction_from(self, t: float) -> float:
-        """Compass bearing the wind comes from at time t: mean, schedule and wander, rad."""
+        """Compass bearing the wind comes from at time t: mean, schedule and wander, rad.
+
+        Parameters
+        ----------
+        t : float
+            Time, s.
+        """
         self.ensure(t + 1.0)
         c = self.config
         return (c.direction_from + float(wander_angle(t, WANDER_DT, self.wander))
                 + c.direction_oscillation * math.sin(2.0 * math.pi * c.oscillation_frequency * t))
 
     def velocity(self, t: float, z: float) -> np.ndarray:
-        """World wind velocity (m/s) at time t and height z, anywhere in the horizontal plane."""
+        """World wind velocity (m/s, ENU) at time t and height z, anywhere in the horizontal plane.
+
+        Parameters
+        ----------
+        t, z : float
+            Time (s) and height above the water (m).
+        """
         self.ensure(t + 1.0)
         out = np.zeros(3)
         wind_velocity(t, z, self.config.speed, self.config.direction_from, self.oscillation,
@@ -206,7 +279,15 @@ class WindField:
         return out
 
     def gust(self, t, z: float) -> np.ndarray:
-        """Gust speed U_g(z, t) (m/s) for an array of times."""
+        """Gust speed U_g(z, t) (m/s) for an array of times.
+
+        Parameters
+        ----------
+        t : array_like
+            Times, s.
+        z : float
+            Height above the water, m.
+        """
         t = np.atleast_1d(np.asarray(t, dtype=float))
         return np.array([gust_speed(ti, z, self.gust_frequency, self.gust_phase,
                                     self.gust_amplitude, self.log_z) for ti in t])
@@ -216,10 +297,18 @@ class WindField:
 def gust_cosines(t, frequency, phase, cache):
     """cos(2 pi f_k t + Y_k) of eq. 39 for every k into ``cache[1:]``, once per time.
 
-    ``cache[0]`` holds the time the cosines are for (NaN: none yet). The cosines depend on t
-    alone, not on the height, so one force evaluation (sail, topsides and mast each at their
-    own height) and RK4's two mid-step stages share them: 300 of the 400 cosines of a sub-step
-    would be recomputed values. The same expression either way, so the same bits.
+    ``cache[0]`` holds the time the cosines are for (NaN: none yet). They depend on t alone, so
+    one force evaluation (sail, topsides, mast) and RK4's two mid-step stages share them (300 of
+    a sub-step's 400 cosines); the same expression either way, so the same bits.
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    frequency, phase : numpy.ndarray, shape (n,)
+        Gust component frequencies f_k (Hz) and phases Y_k (rad).
+    cache : numpy.ndarray, shape (n + 1,)
+        ``cache[0]`` the time, ``cache[1:]`` the cosines (:func:`gust_cosines`).
     """
     if cache[0] == t:
         return
@@ -250,7 +339,17 @@ def _gust_amplitude(amplitude, j, s, k):
 
 @kernel
 def gust_sum(z, cache, amplitude, log_z):
-    """U_g(z, t), eq. 39, from the cosines of :func:`gust_cosines`, amplitudes linear in ln z."""
+    """U_g(z, t), eq. 39, from the cosines of :func:`gust_cosines`, amplitudes linear in ln z.
+
+    Parameters
+    ----------
+    z : float
+        Height above the water, m.
+    cache : numpy.ndarray, shape (n + 1,)
+        ``cache[0]`` the time, ``cache[1:]`` the cosines (:func:`gust_cosines`).
+    amplitude, log_z : numpy.ndarray, shapes (m, n) and (m,)
+        Component amplitudes sqrt(2 S df) (m/s) at the heights whose ln (m) is ``log_z``.
+    """
     j, s = _gust_place(z, log_z)
     total = 0.0
     for k in range(amplitude.shape[1]):
@@ -265,6 +364,15 @@ def gust_sums3(z0, z1, z2, cache, amplitude, log_z):
     Each height's sum adds the same terms in the same order as :func:`gust_sum`, so each is
     bit for bit that sum; the three chains of additions run side by side instead of one after
     the other (the sum is bound by the latency of its additions).
+
+    Parameters
+    ----------
+    z0, z1, z2 : float
+        Heights above the water, m.
+    cache : numpy.ndarray, shape (n + 1,)
+        ``cache[0]`` the time, ``cache[1:]`` the cosines (:func:`gust_cosines`).
+    amplitude, log_z : numpy.ndarray, shapes (m, n) and (m,)
+        Component amplitudes sqrt(2 S df) (m/s) at the heights whose ln (m) is ``log_z``.
     """
     j0, s0 = _gust_place(z0, log_z)
     j1, s1 = _gust_place(z1, log_z)
@@ -282,7 +390,16 @@ def gust_sums3(z0, z1, z2, cache, amplitude, log_z):
 
 @kernel
 def gust_speed(t, z, frequency, phase, amplitude, log_z):
-    """U_g(z, t), eq. 39, with amplitudes interpolated linearly in ln z."""
+    """U_g(z, t), eq. 39, with amplitudes interpolated linearly in ln z.
+
+    Parameters
+    ----------
+    t, z : float
+        Time (s) and height above the water (m).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`WindField`: f_k (Hz), Y_k (rad), the amplitudes sqrt(2 S df)
+        (m/s), shape (m, n), at the heights whose ln (m) is ``log_z``.
+    """
     cache = np.full(frequency.shape[0] + 1, np.nan)
     gust_cosines(t, frequency, phase, cache)
     return gust_sum(z, cache, amplitude, log_z)
@@ -290,7 +407,15 @@ def gust_speed(t, z, frequency, phase, amplitude, log_z):
 
 @kernel
 def mean_speed(z, mean_speed_10):
-    """Log profile, eq. 40 (kernel twin of :func:`log_profile`)."""
+    """Log profile, eq. 40 (kernel twin of :func:`log_profile`).
+
+    Parameters
+    ----------
+    z : float
+        Height above the water, m.
+    mean_speed_10 : float
+        Mean wind speed at 10 m, m/s.
+    """
     k = 0.0026
     z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
     if z <= z0:
@@ -300,7 +425,15 @@ def mean_speed(z, mean_speed_10):
 
 @kernel
 def wander_angle(t, dt, series):
-    """beta_flux(t), eq. 43, linear interpolation of the random walk."""
+    """beta_flux(t), eq. 43, linear interpolation of the random walk.
+
+    Parameters
+    ----------
+    t, dt : float
+        Time and the time step of ``series``, s.
+    series : numpy.ndarray
+        The wander at ``k dt``, rad.
+    """
     x = t / dt
     if x <= 0.0:
         return series[0]
@@ -317,8 +450,18 @@ def wind_velocity(t, z, speed10, direction_from, oscillation, frequency, phase, 
                   wander_dt, wander, out):
     """World wind velocity at (t, z) into ``out`` (3,), eqs. 40-43.
 
-    ``oscillation`` = (speed amplitude, direction amplitude, frequency) of the optional
-    sinusoidal modulation of the mean wind.
+    Parameters
+    ----------
+    t, z : float
+        Time (s) and height above the water (m).
+    speed10, direction_from, oscillation, wander_dt, wander : float or numpy.ndarray
+        U_m10 (m/s); the mean bearing the wind comes from (rad); the modulation (speed m/s,
+        direction rad, frequency Hz); the wander series (rad) at ``k wander_dt`` seconds.
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`WindField`: f_k (Hz), Y_k (rad), the amplitudes sqrt(2 S df)
+        (m/s), shape (m, n), at the heights whose ln (m) is ``log_z``.
+    out : numpy.ndarray, shape (3,)
+        Receives the velocity (ENU, where the air goes), m/s.
     """
     cache = np.full(frequency.shape[0] + 1, np.nan)
     wind_velocities(t, z, z, z, 1, speed10, direction_from, oscillation, frequency, phase, amplitude,
@@ -333,6 +476,25 @@ def wind_velocities(t, z0, z1, z2, count, speed10, direction_from, oscillation, 
 
     What depends on t alone (modulation, direction, the gust cosines) is evaluated once; each
     height's value is the same expression as for one height alone, so the same bits.
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    z0, z1, z2 : float
+        Heights above the water, m.
+    count : int
+        How many of the heights to evaluate, 1 to 3.
+    speed10, direction_from, oscillation, wander_dt, wander : float or numpy.ndarray
+        U_m10 (m/s); the mean bearing the wind comes from (rad); the modulation (speed m/s,
+        direction rad, frequency Hz); the wander series (rad) at ``k wander_dt`` seconds.
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`WindField`: f_k (Hz), Y_k (rad), the amplitudes sqrt(2 S df)
+        (m/s), shape (m, n), at the heights whose ln (m) is ``log_z``.
+    cache : numpy.ndarray, shape (n + 1,)
+        ``cache[0]`` the time, ``cache[1:]`` the cosines (:func:`gust_cosines`).
+    out : numpy.ndarray, shape (3 count,)
+        Receives the velocities (ENU, where the air goes), m/s.
     """
     s = math.sin(2.0 * math.pi * oscillation[2] * t)
     mean10 = speed10 + oscillation[0] * s

@@ -49,7 +49,13 @@ MAST_DIAMETER_PER_LUFF = 0.012  # -, guess (module docstring)
 
 
 def windage_geometry(params) -> dict:
-    """Drag areas (m^2) and centroids (body frame, m) of the topsides and the mast."""
+    """Drag areas (m^2) and centroids (body frame, m) of the topsides and the mast.
+
+    Parameters
+    ----------
+    params : BoatParams
+        The boat.
+    """
     h = params.hull
     s = params.sail
     deck_half_beam = h.half_beam * h.flare  # the deck's midship half-breadth (hull.py)
@@ -66,7 +72,15 @@ def windage_geometry(params) -> dict:
 
 
 def pack_windage(params, block: np.ndarray) -> None:
-    """Fill the windage block of the packed parameter array."""
+    """Fill the windage block of the packed parameter array.
+
+    Parameters
+    ----------
+    params : BoatParams
+        The boat.
+    block : numpy.ndarray, shape (W_SIZE,)
+        The block, filled in place (layout W_* above).
+    """
     g = windage_geometry(params)
     block[W_AREA_FRONT], block[W_AREA_SIDE] = g["front_area"], g["side_area"]
     block[W_HULL_X], block[W_HULL_Z] = g["hull_point"][0], g["hull_point"][2]
@@ -78,7 +92,22 @@ def pack_windage(params, block: np.ndarray) -> None:
 
 @kernel
 def topsides_force(flow, rho_air, cx, cy, area_front, area_side, out):
-    """Topsides' drag (body frame) for the relative air velocity ``flow`` at their centroid."""
+    """Topsides' drag (body frame) for the relative air velocity ``flow`` at their centroid.
+
+    Parameters
+    ----------
+    flow : numpy.ndarray, shape (3,)
+        Velocity of the air relative to the element's centroid, body frame (FLU), m/s; only
+        x and y are read.
+    rho_air : float
+        Air density, kg/m^3.
+    cx, cy : float
+        Fossen's c_x and c_y, dimensionless.
+    area_front, area_side : float
+        A_F and A_L, m^2.
+    out : numpy.ndarray, shape (3,)
+        Receives the force, body frame, N.
+    """
     speed = math.sqrt(flow[0] * flow[0] + flow[1] * flow[1])
     q = 0.5 * rho_air * speed
     out[0] = q * cx * area_front * flow[0]
@@ -88,7 +117,22 @@ def topsides_force(flow, rho_air, cx, cy, area_front, area_side, out):
 
 @kernel
 def mast_force(flow, rho_air, cd, area, out):
-    """Mast's cross-flow drag (body frame; the mast stands along body z)."""
+    """Mast's cross-flow drag (body frame; the mast stands along body z).
+
+    Parameters
+    ----------
+    flow : numpy.ndarray, shape (3,)
+        Velocity of the air relative to the element's centroid, body frame (FLU), m/s; only
+        x and y are read.
+    rho_air : float
+        Air density, kg/m^3.
+    cd : float
+        Drag coefficient of the mast section, dimensionless.
+    area : float
+        Diameter x length of the mast, m^2.
+    out : numpy.ndarray, shape (3,)
+        Receives the force, body frame, N.
+    """
     speed = math.sqrt(flow[0] * flow[0] + flow[1] * flow[1])
     q = 0.5 * rho_air * cd * area * speed
     out[0] = q * flow[0]

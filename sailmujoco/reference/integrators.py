@@ -29,12 +29,30 @@ MESSAGES = ("", f"the state ran away: {DOMAIN_ERROR}", "non-finite state")  # by
 
 
 def steps_for(dt: float, max_step: float) -> int:
-    """The number of equal steps of at most ``max_step`` that span ``dt``."""
+    """The number of equal steps of at most ``max_step`` that span ``dt``.
+
+    Parameters
+    ----------
+    dt, max_step : float
+        The span and the longest step, s.
+    """
     return max(1, math.ceil(dt / max_step - 1e-9))
 
 
 def rk4(rhs, t0: float, y0, dt: float, n: int) -> np.ndarray:
-    """``n`` classical Runge-Kutta steps of ``dt / n`` of y' = rhs(t, y) from (t0, y0)."""
+    """``n`` classical Runge-Kutta steps of ``dt / n`` of y' = rhs(t, y) from (t0, y0).
+
+    Parameters
+    ----------
+    rhs : callable
+        ``rhs(t, y) -> y'``, numpy arrays.
+    t0, y0 : float, array_like
+        Initial time (s) and state.
+    dt : float
+        Time span, s.
+    n : int
+        Number of steps.
+    """
     h = dt / n
     y = np.asarray(y0, dtype=float)
     for i in range(n):
@@ -49,14 +67,34 @@ def rk4(rhs, t0: float, y0, dt: float, n: int) -> np.ndarray:
 
 @kernel
 def rk4_stage(y, a, k, out):
-    """out = y + a k: an RK4 stage's state (numpy's ``y + 0.5 * h * k1`` with a = 0.5 * h)."""
+    """out = y + a k: an RK4 stage's state (numpy's ``y + 0.5 * h * k1`` with a = 0.5 * h).
+
+    Parameters
+    ----------
+    y, k : numpy.ndarray
+        State and a stage's rate.
+    a : float
+        Factor of ``k`` (0.5 h or h), s.
+    out : numpy.ndarray
+        Receives the stage's state.
+    """
     for i in range(y.shape[0]):
         out[i] = y[i] + a * k[i]
 
 
 @kernel
 def rk4_update(y, h, k1, k2, k3, k4):
-    """y = y + (h / 6) (k1 + 2 k2 + 2 k3 + k4), in place, in :func:`rk4`'s order."""
+    """y = y + (h / 6) (k1 + 2 k2 + 2 k3 + k4), in place, in :func:`rk4`'s order.
+
+    Parameters
+    ----------
+    y : numpy.ndarray
+        State, updated in place.
+    h : float
+        Step, s.
+    k1, k2, k3, k4 : numpy.ndarray
+        The four stages' rates.
+    """
     c = h / 6.0
     for i in range(y.shape[0]):
         y[i] = y[i] + c * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i])
@@ -64,7 +102,13 @@ def rk4_update(y, h, k1, k2, k3, k4):
 
 @kernel
 def final_status(y):
-    """STATUS_OK, or STATUS_NONFINITE if ``y`` holds a NaN or an infinity."""
+    """STATUS_OK, or STATUS_NONFINITE if ``y`` holds a NaN or an infinity.
+
+    Parameters
+    ----------
+    y : numpy.ndarray
+        State.
+    """
     for i in range(y.shape[0]):
         if not math.isfinite(y[i]):
             return STATUS_NONFINITE
@@ -78,6 +122,21 @@ def integrate(rhs, t0: float, y0, dt: float, integrator: str, max_step: float, r
     ``integrator`` "rk4": :func:`rk4` in equal steps of at most ``max_step``; "rk45": scipy's
     ``solve_ivp`` with ``rtol``/``atol``. A failure (RK45's message, a state that ran away, a
     non-finite result) is reported, not raised: each world raises its own error with its state.
+
+    Parameters
+    ----------
+    rhs : callable
+        ``rhs(t, y) -> y'``, numpy arrays.
+    t0, y0 : float, array_like
+        Initial time (s) and state.
+    dt : float
+        Time span, s.
+    integrator : {"rk4", "rk45"}
+        The method (:data:`INTEGRATORS`).
+    max_step : float
+        Longest RK4 step, s.
+    rtol, atol : float
+        RK45's relative and absolute tolerances.
     """
     if integrator == "rk4":
         try:

@@ -148,7 +148,15 @@ class VielWorld:
     # -- state ------------------------------------------------------------------------------
     def reset(self, state=None, time: float = 0.0) -> np.ndarray:
         """Set the state ``(x, y, theta, v, u, omega)`` (default: at rest at the origin facing
-        east) and the time [s]; the action is set to zero. Returns a copy of the state."""
+        east) and the time [s]; the action is set to zero. Returns a copy of the state.
+
+        Parameters
+        ----------
+        state : array_like, shape (6,), optional
+            (x, y [m], theta [rad], v, u [m/s], omega [rad/s]).
+        time : float
+            Time, s.
+        """
         new = np.zeros(6) if state is None else np.asarray(state, dtype=float).copy()
         if new.shape != (6,):
             raise ValueError(f"state must have the 6 entries {STATE_NAMES}, got shape {new.shape}")
@@ -178,12 +186,28 @@ class VielWorld:
         return self._P
 
     def true_wind(self, t: float | None = None) -> tuple[float, float]:
-        """(a_tw [m/s], psi_tw [rad], Viel's blows-towards angle) at time t (default: now)."""
+        """(a_tw [m/s], psi_tw [rad], Viel's blows-towards angle) at time t (default: now).
+
+        Parameters
+        ----------
+        t : float, optional
+            Time, s; default now.
+        """
         w = self.wind.velocity(self._time if t is None else t, self.wind_height)
         return math.hypot(w[0], w[1]), math.atan2(w[1], w[0])
 
     def rates(self, state=None, action=None, t: float | None = None) -> np.ndarray:
-        """Time derivative of the state (eqs. 1-6) for our action [rad] (default: current)."""
+        """Time derivative of the state (eqs. 1-6) for our action [rad] (default: current).
+
+        Parameters
+        ----------
+        state : array_like, shape (6,), optional
+            Viel's state (x, y [m], theta [rad], v, u [m/s], omega [rad/s]); default the current one.
+        action : array_like, shape (2,), optional
+            Ours, [rudder, sail] rad, positive trailing edge to port; default the current one.
+        t : float, optional
+            Time, s; default now.
+        """
         state = self._state if state is None else np.asarray(state, dtype=float)
         action = self._action if action is None else self._checked_action(action)
         delta_r, delta_s = viel_from_action(action)
@@ -196,7 +220,19 @@ class VielWorld:
 
     def forces(self, state=None, action=None, t: float | None = None, true_wind=None) -> dict:
         """The terms of eqs. 4-9 (see :func:`model_forces`) for our action [rad]; ``true_wind``:
-        :meth:`true_wind` at ``t`` if the caller has it."""
+        :meth:`true_wind` at ``t`` if the caller has it.
+
+        Parameters
+        ----------
+        state : array_like, shape (6,), optional
+            Viel's state (x, y [m], theta [rad], v, u [m/s], omega [rad/s]); default the current one.
+        action : array_like, shape (2,), optional
+            Ours, [rudder, sail] rad, positive trailing edge to port; default the current one.
+        t : float, optional
+            Time, s; default now.
+        true_wind : tuple of float, optional
+            (a_tw [m/s], psi_tw [rad]) as :meth:`true_wind` gives it, if the caller has it.
+        """
         state = self._state if state is None else np.asarray(state, dtype=float)
         action = self._action if action is None else self._checked_action(action)
         delta_r, delta_s = viel_from_action(action)
@@ -208,7 +244,15 @@ class VielWorld:
         return dict(zip(FORCE_NAMES, out.tolist(), strict=True))
 
     def step(self, action, dt: float) -> np.ndarray:
-        """Hold ``action`` (ours, [rad]) for ``dt`` [s]; integrate eqs. 1-9. Returns the state."""
+        """Hold ``action`` (ours, [rad]) for ``dt`` [s]; integrate eqs. 1-9. Returns the state.
+
+        Parameters
+        ----------
+        action : array_like, shape (2,)
+            Ours, [rudder, sail] rad, positive trailing edge to port; saturated.
+        dt : float
+            Time held, s, > 0.
+        """
         applied = self._checked_action(action)
         if not (math.isfinite(dt) and dt > 0.0):
             raise ValueError(f"dt must be a positive finite time in s, got {dt}")
@@ -294,7 +338,13 @@ class VielWorld:
 
     def apparent_wind(self, true_wind=None) -> tuple[float, float]:
         """(a_aw [m/s], psi_aw [rad], Viel's body blows-towards angle), §2.3 (``true_wind``:
-        :meth:`true_wind` now, if the caller has it)."""
+        :meth:`true_wind` now, if the caller has it).
+
+        Parameters
+        ----------
+        true_wind : tuple of float, optional
+            (a_tw [m/s], psi_tw [rad]) as :meth:`true_wind` gives it, if the caller has it.
+        """
         a_tw, psi_tw = self.true_wind() if true_wind is None else true_wind
         return apparent_wind(a_tw, psi_tw, self._state[2], self._state[3])
 
@@ -309,6 +359,11 @@ class VielWorld:
         Viel: "compensated by the keel"); ``rudder_wrench``: the g_rv, g_ru terms;
         ``damping_wrench``: p2 and p3 frictions; ``hull_wind_wrench``: p1 a_tw^2. ``true_wind``:
         :meth:`true_wind` now, if the caller has it.
+
+        Parameters
+        ----------
+        true_wind : tuple of float, optional
+            (a_tw [m/s], psi_tw [rad]) as :meth:`true_wind` gives it, if the caller has it.
         """
         a_tw, psi_tw = true_wind = self.true_wind() if true_wind is None else true_wind
         f = self.forces(true_wind=true_wind)
@@ -333,6 +388,13 @@ def observation_from_world(world: VielWorld, target=None) -> dict:
     ``wind_speed_10`` is the WindConfig's mean speed at 10 m and ``wind_direction`` the
     compass bearing the wind comes from (as in :mod:`sailmujoco.tasks.base`).
     ``target`` (x east, y north) [m], if given, becomes ``target_position``.
+
+    Parameters
+    ----------
+    world : VielWorld
+        The world.
+    target : array_like, shape (2,), optional
+        Target position (x east, y north), m.
     """
     x, y, theta, v, u, omega = world.state
     a_tw, psi_tw = wind = world.true_wind()  # once: apparent wind and wrenches take it

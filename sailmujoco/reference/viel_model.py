@@ -87,33 +87,69 @@ class VielParams:
 
 
 def viel_from_action(action) -> tuple[float, float]:
-    """(delta_r, delta_s) in Viel's sign (trailing edge to starboard) from our ``[rudder, sail]``."""
+    """(delta_r, delta_s) in Viel's sign (trailing edge to starboard) from our ``[rudder, sail]``.
+
+    Parameters
+    ----------
+    action : array_like, shape (2,)
+        Ours, [rudder, sail] rad, positive trailing edge to port.
+    """
     rudder, sail = np.asarray(action, dtype=float).reshape(2).tolist()
     return -rudder, -sail
 
 
 def action_from_viel(delta_r: float, delta_s: float) -> np.ndarray:
-    """Our action ``[rudder, sail]`` (trailing edge to port, rad) from Viel's (delta_r, delta_s)."""
+    """Our action ``[rudder, sail]`` (trailing edge to port, rad) from Viel's (delta_r, delta_s).
+
+    Parameters
+    ----------
+    delta_r, delta_s : float
+        Viel's rudder and sail angles, rad, positive trailing edge to starboard.
+    """
     return np.array([-float(delta_r), -float(delta_s)])
 
 
 def psi_tw_from_direction(direction_from: float) -> float:
-    """Viel's psi_tw (blows towards, ccw from east) from our compass 'comes from' bearing [rad]."""
+    """Viel's psi_tw (blows towards, ccw from east) from our compass 'comes from' bearing [rad].
+
+    Parameters
+    ----------
+    direction_from : float
+        Compass bearing the true wind comes from, rad.
+    """
     return float(wrap_angle(-0.5 * math.pi - direction_from))
 
 
 def direction_from_psi_tw(psi_tw: float) -> float:
-    """Our compass 'comes from' bearing from Viel's psi_tw [rad] (the same involution)."""
+    """Our compass 'comes from' bearing from Viel's psi_tw [rad] (the same involution).
+
+    Parameters
+    ----------
+    psi_tw : float
+        Viel's true wind direction (blows towards, ccw from east), rad.
+    """
     return float(wrap_angle(-0.5 * math.pi - psi_tw))
 
 
 def psi_aw_from_awa(awa: float) -> float:
-    """Viel's psi_aw (apparent wind blows towards, ccw from the bow) from our AWA [rad]."""
+    """Viel's psi_aw (apparent wind blows towards, ccw from the bow) from our AWA [rad].
+
+    Parameters
+    ----------
+    awa : float
+        Our apparent wind angle (comes from, positive from starboard), rad.
+    """
     return float(wrap_angle(math.pi - awa))
 
 
 def awa_from_psi_aw(psi_aw: float) -> float:
-    """Our AWA (comes from, positive from starboard) from Viel's psi_aw [rad]."""
+    """Our AWA (comes from, positive from starboard) from Viel's psi_aw [rad].
+
+    Parameters
+    ----------
+    psi_aw : float
+        Viel's apparent wind direction (blows towards, ccw from the bow), rad.
+    """
     return float(wrap_angle(math.pi - psi_aw))
 
 
@@ -164,7 +200,13 @@ FORCE_NAMES = ("g_s", "g_rv", "g_ru", "a_aw", "psi_aw", "hull_wind", "surge", "s
 
 
 def pack_parameters(params: VielParams) -> np.ndarray:
-    """The flat float64 array of ``params`` the kernels read (indices ``P1`` ... ``PRINTED``)."""
+    """The flat float64 array of ``params`` the kernels read (indices ``P1`` ... ``PRINTED``).
+
+    Parameters
+    ----------
+    params : VielParams
+        Viel's Table 1 parameters and rudder law.
+    """
     return np.array([params.p1, params.p2, params.p3, params.p4, params.p5, params.p6, params.p7,
                      params.p8, params.p9, params.p10, params.p11, float(params.rudder_law == "printed")])
 

@@ -70,6 +70,8 @@ class Wille4DOF:
 
     Parameters
     ----------
+    boat : str
+        A registered boat (:func:`sailmujoco.boats.get_boat`), used when ``params`` is None.
     params : BoatParams, optional
         Boat parameters (``get_boat(boat)`` if not given).
     wind : WindConfig
@@ -84,6 +86,8 @@ class Wille4DOF:
     integrator : {"rk4", "rk45"}
         Classical RK4 in steps of at most ``RK4_MAX_STEP``, or scipy's adaptive RK45 with
         ``rtol``/``atol``.
+    rtol, atol : float
+        Tolerances of the RK45 integration.
     """
 
     def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
@@ -123,7 +127,13 @@ class Wille4DOF:
     # ------------------------------------------------------------------ state
     def reset(self, state=None) -> None:
         """Reset to ``state`` (the paper's variables) or to the MuJoCo boat's home pose: at the
-        origin, upright, at rest, heading east (ENU yaw 0 = compass heading 90 deg)."""
+        origin, upright, at rest, heading east (ENU yaw 0 = compass heading 90 deg).
+
+        Parameters
+        ----------
+        state : array_like, shape (10,), optional
+            The paper's state :data:`STATE` (NED, FRD, SI).
+        """
         if state is None:
             state = np.zeros(len(STATE))
             state[3] = math.pi / 2
@@ -134,7 +144,23 @@ class Wille4DOF:
 
     def set_state_ours(self, *, position=(0.0, 0.0), yaw=0.0, heel=0.0, u=0.0, v=0.0, p=0.0,
                        r=0.0, rudder=0.0, sail=0.0) -> None:
-        """Set the state from our conventions (ENU position and yaw, FLU velocities)."""
+        """Set the state from our conventions (ENU position and yaw, FLU velocities).
+
+        Parameters
+        ----------
+        position : tuple of float
+            World (east, north), m.
+        yaw : float
+            ENU yaw, rad, counter-clockwise from east.
+        heel : float
+            Heel, rad, positive starboard down.
+        u, v : float
+            Body velocity forward and to port, m/s.
+        p, r : float
+            Roll rate about body x and yaw rate about body z (up), rad/s.
+        rudder, sail : float
+            Rudder and sail angles, rad.
+        """
         self.state[:] = [position[1], position[0], heel, frames.heading_from_yaw(yaw), u, -v, p,
                          -r, rudder, sail]
 
@@ -151,6 +177,13 @@ class Wille4DOF:
         return -high, high
 
     def set_control(self, control) -> None:
+        """Set the commands [rudder, sail] (rad) held over the next step; saturated.
+
+        Parameters
+        ----------
+        control : array_like, shape (2,)
+            Rudder and sail angles, rad, positive trailing edge to port; finite.
+        """
         control = np.asarray(control, dtype=float)
         if control.shape != (2,) or not np.isfinite(control).all():
             raise ValueError(f"control must be 2 finite numbers [rudder, sail] (rad), got {control}")
@@ -160,7 +193,13 @@ class Wille4DOF:
                           min(max(float(control[1]), -p.sail.max_angle), p.sail.max_angle))
 
     def step(self, nstep: int = 1) -> None:
-        """Advance ``nstep`` base time steps holding the control (one integrator call)."""
+        """Advance ``nstep`` base time steps holding the control (one integrator call).
+
+        Parameters
+        ----------
+        nstep : int
+            Number of base time steps.
+        """
         if self.stop_reason is not None:
             raise SimulationStopped(self.stop_reason, self._time)
         t0, t1 = self._time, self._time + nstep * self._dt
@@ -208,6 +247,14 @@ class Wille4DOF:
         """Every (X, Y, K, N, M) term in FRD at (t, state), signs as on the right of eq. 3.
 
         M, the pitch moment, is not in the paper's model; only ``model="rigid"`` uses it.
+
+        Parameters
+        ----------
+        t : float
+            Time, s.
+        state : array_like, shape (10,)
+            The paper's state :data:`STATE`: x north, y east (m), phi, psi (rad, NED), u, v (m/s,
+            FRD), p, r (rad/s, FRD), sigma, lam (rad).
         """
         return dict(zip(TERMS, self.terms_and_sail_flow(t, state)[0], strict=True))
 
@@ -217,7 +264,18 @@ class Wille4DOF:
 
     def terms_and_sail_flow(self, t: float, state, terms: bool = True):
         """(the (len(TERMS), 5) array of :meth:`forces` or None, :meth:`_sail_flow`) at (t, state):
-        one packing of the kernels' arguments for both (the task's measurement needs both)."""
+        one packing of the kernels' arguments for both (the task's measurement needs both).
+
+        Parameters
+        ----------
+        t : float
+            Time, s.
+        state : array_like, shape (10,)
+            The paper's state :data:`STATE`: x north, y east (m), phi, psi (rad, NED), u, v (m/s,
+            FRD), p, r (rad/s, FRD), sigma, lam (rad).
+        terms : bool
+            Compute the terms too (False: None in their place).
+        """
         self.wind.ensure(t + 1.0)
         model = self._model()
         t, state = float(t), np.ascontiguousarray(state, dtype=float)
@@ -315,12 +373,29 @@ class Wille4DOF:
         return out
 
     def true_wind(self, height: float | None = None) -> np.ndarray:
+        """World (ENU) true wind velocity now, m/s.
+
+        Parameters
+        ----------
+        height : float, optional
+            Height above the water, m; default the masthead's, h cos(phi).
+        """
         if height is None:
             height = self.params.sail.masthead_height * math.cos(self.heel())
         return self.wind.velocity(self._time, height)
 
     def place(self, position=(0.0, 0.0), yaw: float = 0.0, surge: float = 0.0) -> None:
-        """Upright at ``position`` (m, ENU), heading ``yaw`` (ENU, rad), surging at ``surge``."""
+        """Upright at ``position`` (m, ENU), heading ``yaw`` (ENU, rad), surging at ``surge``.
+
+        Parameters
+        ----------
+        position : tuple of float
+            World (east, north), m.
+        yaw : float
+            ENU yaw, rad.
+        surge : float
+            Speed ahead, m/s.
+        """
         self.set_state_ours(position=position, yaw=yaw, u=surge, rudder=self.state[8],
                             sail=self.state[9])
 
@@ -339,7 +414,17 @@ class Wille4DOF:
 
     def masthead_flow(self, rot, body, rates) -> np.ndarray:
         """:meth:`apparent_wind_masthead` from this state's :meth:`rotation`, :meth:`body_velocity`
-        and :meth:`angular_velocity` (the task's measurement has them already)."""
+        and :meth:`angular_velocity` (the task's measurement has them already).
+
+        Parameters
+        ----------
+        rot : numpy.ndarray, shape (3, 3)
+            Body (FLU) to world (ENU) rotation.
+        body : numpy.ndarray, shape (3,)
+            Body velocity of CO, FLU, m/s.
+        rates : numpy.ndarray, shape (3,)
+            Angular velocity, body frame, rad/s.
+        """
         p = self.params
         top = np.array([p.sail.mast_x, 0.0, p.sail.masthead_height])
         (wx, wy, wz), (tx, _, tz) = rates, top

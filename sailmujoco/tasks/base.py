@@ -88,12 +88,24 @@ def measure(world) -> OrderedDict:
     )
 
 
-
-
 def check_number(name: str, value, low: float | None = None, high: float | None = None, *,
                  low_open: bool = False, unit: str = "") -> float:
     """``value`` as a float if it is a finite number within [low, high] (or (low, high] with
-    ``low_open``); otherwise a ValueError naming the option and the accepted range."""
+    ``low_open``); otherwise a ValueError naming the option and the accepted range.
+
+    Parameters
+    ----------
+    name : str
+        The option's name, for the error message.
+    value : object
+        The value given; a bool is refused.
+    low, high : float or None
+        Bounds, inclusive (``low`` exclusive with ``low_open``); None: unbounded on that side.
+    low_open : bool
+        Refuse ``value == low``.
+    unit : str
+        Unit named in the error message.
+    """
     given = value
     ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
     if ok:
@@ -108,6 +120,7 @@ def check_number(name: str, value, low: float | None = None, high: float | None 
         raise ValueError(f"{name} must be a finite number{rng}, got {given!r}")
     return value
 
+
 class SailEnvironment(control.Environment):
     """``control.Environment`` that ends the episode, rather than raising, when the simulation
     stops (capsize, non-finite state); the reason lands in ``task.metrics()['stopped']``.
@@ -119,6 +132,18 @@ class SailEnvironment(control.Environment):
     """
 
     def step(self, action):
+        """One control step: the action, the physics sub-steps, then the TimeStep.
+
+        Parameters
+        ----------
+        action : array_like, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+
+        Returns
+        -------
+        dm_env.TimeStep
+            The last one (reward 0) if the simulation stopped during the step.
+        """
         if self._reset_next_step:
             return self.reset()
         self.before_physics(action)
@@ -129,7 +154,13 @@ class SailEnvironment(control.Environment):
         return self.after_physics()
 
     def before_physics(self, action) -> None:
-        """The task's ``before_step``: the action checked and set on the actuators."""
+        """The task's ``before_step``: the action checked and set on the actuators.
+
+        Parameters
+        ----------
+        action : array_like, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)].
+        """
         self._task.before_step(action, self._physics)
 
     def after_physics(self):
@@ -153,7 +184,13 @@ class SailEnvironment(control.Environment):
         return dm_env.TimeStep(dm_env.StepType.MID, reward, 1.0, observation)
 
     def stopped_step(self, reason: str):
-        """The last TimeStep of an episode whose simulation stopped for ``reason``."""
+        """The last TimeStep of an episode whose simulation stopped for ``reason``.
+
+        Parameters
+        ----------
+        reason : str
+            Why it stopped (capsized, non-finite state); recorded as ``task.metrics()['stopped']``.
+        """
         self._task.stopped = reason
         self._reset_next_step = True
         # the state the run stopped in (a capsize is a valid state); the previous step's
@@ -215,18 +252,46 @@ class SailTask(control.Task):
         return 0.0
 
     def references(self, physics) -> dict:
-        """Task references added to the observation (e.g. ``desired_heading``)."""
+        """Task references added to the observation (e.g. ``desired_heading``).
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         return {}
 
     def reward_terms(self, physics, observation) -> dict:
+        """The reward's named terms; the reward is their sum.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        observation : dict
+            The observation of this state (:func:`measure` plus the task's references).
+        """
         raise NotImplementedError
 
     def summarise(self, records: list[dict]) -> dict:
-        """Metrics from the per-step records."""
+        """Metrics from the per-step records.
+
+        Parameters
+        ----------
+        records : list of dict
+            The per-step records of the episode (:meth:`record`), in time order.
+        """
         return {}
 
     # ---- control.Task API
     def initialize_episode(self, physics):
+        """Place the boat at the origin on the initial heading (jittered) and speed; clear the records.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         heading = self.initial_heading() + self.random.uniform(-self.heading_jitter, self.heading_jitter)
         physics.place((0.0, 0.0), float(frames.yaw_from_heading(heading)), self.initial_speed())
         self.stopped = None
@@ -235,6 +300,15 @@ class SailTask(control.Task):
         self._measured = None
 
     def before_step(self, action, physics):
+        """Check the action and set it on the world's actuators.
+
+        Parameters
+        ----------
+        action : array_like, shape (2,)
+            [rudder angle (rad), sail angle (rad) or sheet length (m)]; both finite.
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         self._measured = None
         action = np.asarray(action, dtype=float)
         if action.shape != (2,) or not (math.isfinite(action[0]) and math.isfinite(action[1])):
@@ -242,15 +316,34 @@ class SailTask(control.Task):
         physics.set_control(action)
 
     def after_step(self, physics):
+        """Append this step's :meth:`record`.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         self._records.append(self.record(physics))
 
     def record(self, physics) -> dict:
-        """What ``summarise`` needs from one step (our frames, SI)."""
+        """What ``summarise`` needs from one step (our frames, SI).
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         return dict(self.measurement(physics)[1])
 
     def action_spec(self, physics):
         """Two commands: the rudder angle [rad], then the sail angle [rad] (actuated sail) or,
-        with ``sail_mode="sheeted"``, the sheet length [m]; the spec's name says which."""
+        with ``sail_mode="sheeted"``, the sheet length [m]; the spec's name says which.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         low, high = action_bounds(physics)
         return specs.BoundedArray((2,), np.float64, low, high, name=action_name(physics))
 
@@ -261,6 +354,11 @@ class SailTask(control.Task):
         dm_control asks for the record (after_step), the reward and the observation of one
         state in turn: it is measured once and handed to all three; get_observation hands it
         out, and the next request (or a step) measures afresh.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
         """
         measured = self._measured
         if measured is not None and measured[0] == physics.time():
@@ -272,22 +370,50 @@ class SailTask(control.Task):
         return obs, row
 
     def get_observation(self, physics):
+        """The observation of the current state (see :meth:`measurement`).
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         obs = self.measurement(physics)[0]
         self._measured = None
         self.last_observation = obs
         return obs
 
     def observation_spec(self, physics):
+        """Array specs with the shapes of the current observation.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         return _spec_of(self.get_observation(physics))
 
     def get_reward(self, physics):
         # dm_control asks for the reward before the observation: the same measurement serves
         # both (see measurement)
+        """The sum of :meth:`reward_terms` for the current state.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         observation = self.measurement(physics)[0]
         self.last_observation = observation
         return float(sum(self.reward_terms(physics, observation).values()))
 
     def get_termination(self, physics):
+        """0.0 (discount) once the world has stopped (capsize, non-finite state), else None.
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
         if getattr(physics, "stop_reason", None):
             return 0.0
         return None
@@ -300,13 +426,25 @@ class SailTask(control.Task):
 
 
 def action_name(physics) -> str:
-    """The action's fields with their units: "rudder_rad,sail_rad" or "rudder_rad,sheet_m"."""
+    """The action's fields with their units: "rudder_rad,sail_rad" or "rudder_rad,sheet_m".
+
+    Parameters
+    ----------
+    physics : World
+        The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+    """
     names = getattr(physics, "actuator_names", None) or ["rudder", "sail"]
     return ",".join(("sheet_m" if name == "sheet" else f"{name}_rad") for name in names)
 
 
 def action_bounds(physics):
-    """(low, high) of [rudder, sail] for any world (its ``action_bounds``)."""
+    """(low, high) of [rudder, sail] for any world (its ``action_bounds``).
+
+    Parameters
+    ----------
+    physics : World
+        The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+    """
     return physics.action_bounds()
 
 
@@ -321,10 +459,23 @@ def _spec_of(observation):
 
 
 def wrap(angle: float) -> float:
+    """An angle wrapped to [-pi, pi), as a float.
+
+    Parameters
+    ----------
+    angle : float
+        Angle, rad.
+    """
     return float(frames.wrap_angle(angle))
 
 
 def amplitude(values) -> float:
-    """Half the peak-to-peak of a signal."""
+    """Half the peak-to-peak of a signal.
+
+    Parameters
+    ----------
+    values : array_like
+        The signal's samples.
+    """
     values = np.asarray(values, dtype=float)
     return float(0.5 * (values.max() - values.min())) if values.size else float("nan")

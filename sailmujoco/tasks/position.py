@@ -47,7 +47,25 @@ CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
 
 @register_task
 class PositionKeeping(SailTask):
-    """Viel's position keeping, wind ``case`` 1-6; the boat starts at ``start`` (m)."""
+    """Viel's position keeping, wind ``case`` 1-6; the boat starts at ``start`` (m).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the random initial heading (uniform over the compass).
+    case : int
+        Viel's wind case, 1-6 (:data:`CASES`).
+    start : tuple of float
+        Initial world position (east, north), m.
+    target : tuple of float
+        Target position p_T, world (east, north), m.
+    d_target : float
+        Radius d_T of the target area, m, > 0.
+    d_prearrival : float
+        Outer radius d_M of the pre-arrival ring, m, > ``d_target``.
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
+    """
 
     name = "position_keeping"
     duration = 200.0

@@ -41,6 +41,25 @@ class HeadingHold(SailTask):
     the heading error, ``rudder`` = -0.01 (sigma/0.6)^2. Metrics: ``heading_error_rms`` (rad),
     ``mean_surge`` (m/s), ``heel_amplitude`` (rad), and over the last ``steady_window`` seconds
     ``steady_speed`` (speed over ground, m/s) and ``steady_heel`` (rad): a polar point.
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    desired_heading_deg : float
+        Compass heading to hold, degrees clockwise from north.
+    wind_speed : float
+        Mean true wind at 10 m, U10, m/s, in [0, 60].
+    wind_from_deg : float
+        Compass bearing the wind comes from, degrees.
+    gusts, wander : bool
+        Gusts in speed, slow wander of the direction (:class:`~sailmujoco.forces.wind.WindConfig`).
+    steady_window : float
+        Length of the final window the polar point is averaged over, s, > 0.
+    diagnostics : bool
+        Record the world's diagnostic rows and summarise them (:func:`diagnostic_summary`).
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
 
     name = "heading_hold"
@@ -141,6 +160,19 @@ class CourseHold(SailTask):
     the course-over-ground error. Metrics: ``drift_error`` = |atan(x/y)| (rad, x north, y east:
     Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute), ``mean_surge`` (m/s),
     ``north``, ``east`` (m).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    desired_course_deg : float
+        Compass course over ground to hold, degrees clockwise from north.
+    wind_speed : float
+        Mean true wind at 10 m, U10, m/s, in [0, 60].
+    beta_w_deg : float
+        Wille's beta_w, degrees: the NED bearing the wind blows *towards* (Wille 2016a eq. 42).
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
 
     name = "course_hold"
@@ -192,6 +224,17 @@ class BeamReachRoll(SailTask):
     wind from port). Reference: ``desired_heading`` (rad). Reward terms: ``speed`` = u / U10,
     ``heel`` = -(phi / 10 deg)^2. Metrics: ``roll_amplitude`` (rad, half peak-to-peak),
     ``max_roll_rate`` (rad/s), ``mean_surge`` (m/s), ``mean_heel`` (rad).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    wind_speed : float
+        Mean true wind at 10 m, U10, m/s, in [0, 60].
+    desired_heading_deg : float
+        Compass heading to hold, degrees; the wind comes from 90 degrees to port of it.
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
 
     name = "beam_reach_roll"
@@ -241,6 +284,15 @@ class SpeedTrial(SailTask):
     180 - a: 170, 135 and 100 deg. Reference: ``desired_heading`` = 0. Reward terms:
     ``speed`` = |v| / 4 m/s. Metrics: ``mean_speed_<a>`` (m/s) and ``mean_heel_<a>`` (rad) over the
     last 10 s of each segment, ``max_heel`` (rad).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    wind_speed : float
+        True wind at 10 m, m/s, in [0, 60].
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
 
     name = "speed_trial"
@@ -253,6 +305,13 @@ class SpeedTrial(SailTask):
 
     @staticmethod
     def wind_from(angle_deg: float) -> float:
+        """The compass bearing (rad) a wind blowing towards ``angle_deg`` (ccw, heading north) comes from.
+
+        Parameters
+        ----------
+        angle_deg : float
+            Direction the wind blows to, degrees counter-clockwise from the bow (Saoud's NWU, heading north).
+        """
         return math.radians(180.0 - angle_deg)
 
     def wind(self):

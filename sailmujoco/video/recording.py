@@ -27,15 +27,33 @@ from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snaps
 
 @dataclass
 class Recording:
-    """What :func:`record` wrote."""
+    """What :func:`record` wrote.
+
+    Parameters
+    ----------
+    path : Path
+        The video file.
+    frames : int
+        Frames written.
+    fps : float
+        Frames per second of video.
+    sim_time : float
+        Time simulated, s.
+    wall_time : float
+        Wall-clock time of all of it (loading the boat and the controller included), s.
+    loop_time : float
+        Wall-clock time from the first frame to the end (simulating, drawing, encoding), s.
+    metrics : dict
+        The task's metrics (``stopped`` holds the reason of an early end).
+    """
 
     path: Path
     frames: int
     fps: float
-    sim_time: float  # s simulated
-    wall_time: float  # s, all of it (loading the boat and the controller included)
-    loop_time: float  # s, from the first frame to the end (simulating, drawing, encoding)
-    metrics: dict  # the task's metrics (``stopped`` holds the reason of an early end)
+    sim_time: float
+    wall_time: float
+    loop_time: float
+    metrics: dict
 
     @property
     def render_rate(self) -> float:

@@ -28,19 +28,43 @@ SEA_ALPHA = 0.45  # opacity of the display sea (the scene's 0.85 hides the keel 
 # ----------------------------------------------------------------------------- state to draw
 @dataclass
 class Snapshot:
-    """What one frame draws, in world ENU and body FLU frames, SI units."""
+    """What one frame draws, in world ENU and body FLU frames, SI units.
 
-    time: float  # s
-    position: np.ndarray  # (3,) m, CO
-    rotation: np.ndarray  # (3, 3) body -> world
-    rudder: float  # rad
-    sail: float  # rad
-    speed: float  # m/s over ground
-    heel: float  # rad
-    awa: float  # rad, apparent wind angle at the masthead
-    aws: float  # m/s
-    wind: np.ndarray  # (3,) m/s, true wind, world
-    forces: dict = field(default_factory=dict)  # name -> (3,) N, body frame
+    Parameters
+    ----------
+    time : float
+        Simulated time, s.
+    position : numpy.ndarray, shape (3,)
+        Position of CO in the world frame, m.
+    rotation : numpy.ndarray, shape (3, 3)
+        Rotation from the body frame to the world frame.
+    rudder, sail : float
+        Rudder and sail angles, rad.
+    speed : float
+        Speed over ground, m/s.
+    heel : float
+        Heel, rad, positive starboard down.
+    awa : float
+        Apparent wind angle at the masthead, rad, positive from starboard.
+    aws : float
+        Apparent wind speed at the masthead, m/s.
+    wind : numpy.ndarray, shape (3,)
+        True wind velocity in the world frame, m/s.
+    forces : dict
+        Force model name -> its force in the body frame, shape (3,), N.
+    """
+
+    time: float
+    position: np.ndarray
+    rotation: np.ndarray
+    rudder: float
+    sail: float
+    speed: float
+    heel: float
+    awa: float
+    aws: float
+    wind: np.ndarray
+    forces: dict = field(default_factory=dict)
 
 
 def snapshot_physics(physics) -> Snapshot:

@@ -32,7 +32,22 @@ DIFFERENCE_NOTE = ("*difference*: ours against the paper as a change in size, (|
 
 @dataclass(frozen=True)
 class Difference:
-    """ours against reference: ``value`` is a fraction when ``relative``, else ours - reference."""
+    """ours against reference: ``value`` is a fraction when ``relative``, else ours - reference.
+
+    Parameters
+    ----------
+    value : float
+        (|ours| - |reference|) / |reference| when ``relative``, else ours - reference in ``unit``;
+        nan when either is not a number.
+    relative : bool
+        Whether ``value`` is a relative change in size.
+    reference : float
+        The reference's number.
+    floor : float
+        Below this size the reference counts as zero.
+    unit : str
+        The quantity's unit.
+    """
 
     value: float
     relative: bool
@@ -46,7 +61,13 @@ class Difference:
 
     def beyond(self, tolerance: float = TOLERANCE) -> bool:
         """Beyond ``tolerance``: of the reference's size when relative; of max(|reference|,
-        floor) in the quantity's unit when absolute. Not a number is beyond."""
+        floor) in the quantity's unit when absolute. Not a number is beyond.
+
+        Parameters
+        ----------
+        tolerance : float
+            The fraction allowed.
+        """
         if not self.finite:
             return True
         if self.relative:
@@ -54,6 +75,13 @@ class Difference:
         return abs(self.value) > tolerance * max(abs(self.reference), self.floor)
 
     def text(self, digits: int = 0) -> str:
+        """The difference as report text: "+12 %", or "+0.3 m (signs differ)", or "—".
+
+        Parameters
+        ----------
+        digits : int
+            Decimals of a relative difference, in per cent.
+        """
         if not self.finite:
             return "—"
         if self.relative:
@@ -64,7 +92,21 @@ class Difference:
 
 
 def difference(ours, reference, *, floor: float = 0.0, unit: str = "") -> Difference:
-    """ours against reference (see the module's docstring). Not a number when either is not."""
+    """ours against reference (see the module's docstring). Not a number when either is not.
+
+    Parameters
+    ----------
+    ours, reference : float or array_like
+        Our number(s) and the reference's (the paper's), in the same unit.
+    floor : float
+        Below this size the reference counts as zero: the difference is then absolute.
+    unit : str
+        The quantity's unit, for the text of an absolute difference.
+
+    Returns
+    -------
+    Difference
+    """
     try:
         a, r = float(ours), float(reference)
     except (TypeError, ValueError):
@@ -77,19 +119,56 @@ def difference(ours, reference, *, floor: float = 0.0, unit: str = "") -> Differ
 
 
 def differences(ours, reference, *, floor: float = 0.0, unit: str = "") -> list[Difference]:
-    """:func:`difference` point by point."""
+    """:func:`difference` point by point.
+
+    Parameters
+    ----------
+    ours, reference : float or array_like
+        Our number(s) and the reference's (the paper's), in the same unit.
+    floor : float
+        Below this size the reference counts as zero: the difference is then absolute.
+    unit : str
+        The quantity's unit, for the text of an absolute difference.
+
+    Returns
+    -------
+    list of Difference
+    """
     a = np.asarray(ours, dtype=float).ravel()
     r = np.asarray(reference, dtype=float).ravel()
     return [difference(x, y, floor=floor, unit=unit) for x, y in zip(a, r, strict=True)]
 
 
 def finite(values, scale: float = 1.0) -> np.ndarray:
+    """The finite values, flattened and scaled.
+
+    Parameters
+    ----------
+    values : array_like
+        The numbers (flattened).
+    scale : float
+        Factor the values are multiplied by first (100: fractions as per cent).
+
+    Returns
+    -------
+    numpy.ndarray
+    """
     v = np.asarray(values, dtype=float).ravel() * scale
     return v[np.isfinite(v)]
 
 
 def value_range(values, scale: float = 1.0, fmt: str = "{:.3g}") -> str:
-    """"min … max" of the finite values (times ``scale``); "—" when there are none."""
+    """"min … max" of the finite values (times ``scale``); "—" when there are none.
+
+    Parameters
+    ----------
+    values : array_like
+        The numbers (flattened).
+    scale : float
+        Factor the values are multiplied by first (100: fractions as per cent).
+    fmt : str
+        Format of each end.
+    """
     v = finite(values, scale)
     if not v.size:
         return "—"
@@ -98,9 +177,18 @@ def value_range(values, scale: float = 1.0, fmt: str = "{:.3g}") -> str:
 
 def range_of(diffs: list[Difference], fmt: str = "{:+.1f}") -> str:
     """The range of a list of differences: the relative ones in %, the absolute ones (signs
-    differ, or the reference within its floor of zero) apart in their unit, each with its count."""
+    differ, or the reference within its floor of zero) apart in their unit, each with its count.
+
+    Parameters
+    ----------
+    diffs : list of Difference
+        The differences.
+    fmt : str
+        Format of each end of the relative range, in per cent.
+    """
     rel = [d.value for d in diffs if d.finite and d.relative]
     ab = [d.value for d in diffs if d.finite and not d.relative]
+
     def count(n):
         return f"{n} point" + ("s" if n != 1 else "")
 
@@ -118,17 +206,34 @@ def range_of(diffs: list[Difference], fmt: str = "{:+.1f}") -> str:
 
 @dataclass(frozen=True)
 class Judgement:
-    """Whether every value is within a threshold."""
+    """Whether every value is within a threshold.
 
-    n: int  # values judged
-    beyond: int  # values beyond the threshold
-    missing: int  # values that are not numbers (counted beyond)
+    Parameters
+    ----------
+    n : int
+        Values judged.
+    beyond : int
+        Values beyond the threshold.
+    missing : int
+        Values that are not numbers (counted beyond).
+    """
+
+    n: int
+    beyond: int
+    missing: int
 
     @property
     def holds(self) -> bool:
         return self.n > 0 and self.beyond == 0
 
     def text(self, unit: str = "points") -> str:
+        """"holds (n of n points)", "breaks at k of n points", or "no data".
+
+        Parameters
+        ----------
+        unit : str
+            What a value is called in the text.
+        """
         if self.n == 0:
             return "no data"
         if self.holds:
@@ -139,7 +244,21 @@ class Judgement:
 
 def judge(values, *, below: float | None = None, above: float | None = None,
           magnitude: bool = False) -> Judgement:
-    """Every value (its size if ``magnitude``) must be < ``below`` and > ``above``."""
+    """Every value (its size if ``magnitude``) must be < ``below`` and > ``above``.
+
+    Parameters
+    ----------
+    values : array_like
+        The numbers judged (flattened); one that is not a number is beyond.
+    below, above : float, optional
+        Open bounds; None: no bound on that side.
+    magnitude : bool
+        Judge |value|.
+
+    Returns
+    -------
+    Judgement
+    """
     v = np.asarray(values, dtype=float).ravel()
     x = np.abs(v) if magnitude else v
     ok = np.isfinite(x)
@@ -153,21 +272,47 @@ def judge(values, *, below: float | None = None, above: float | None = None,
 
 
 def judge_differences(diffs: list[Difference], tolerance: float = TOLERANCE) -> Judgement:
-    """Every difference within ``tolerance`` (:meth:`Difference.beyond`)."""
+    """Every difference within ``tolerance`` (:meth:`Difference.beyond`).
+
+    Parameters
+    ----------
+    diffs : list of Difference
+        The differences.
+    tolerance : float
+        The fraction allowed.
+
+    Returns
+    -------
+    Judgement
+    """
     return Judgement(n=len(diffs), beyond=sum(d.beyond(tolerance) for d in diffs),
                      missing=sum(not d.finite for d in diffs))
 
 
 def combined(parts: dict[str, Judgement]) -> str:
     """One verdict from several criteria: "holds" only when every one holds; each named with its
-    own count."""
+    own count.
+
+    Parameters
+    ----------
+    parts : dict of str to Judgement
+        Criterion name -> its judgement.
+    """
     word = "holds" if parts and all(j.holds for j in parts.values()) else "breaks"
     return f"{word} ({'; '.join(f'{name}: {j.text()}' for name, j in parts.items())})"
 
 
 def limit_state(value: float, limit: float, tolerance: float) -> str:
     """"binds" when |value| reaches the limit within ``tolerance``; "exceeded" beyond it;
-    "does not bind" below."""
+    "does not bind" below.
+
+    Parameters
+    ----------
+    value : float
+        The value (its size is compared).
+    limit, tolerance : float
+        The limit and the tolerance, in the value's unit.
+    """
     v = abs(float(value))
     if not math.isfinite(v):
         return "no value"
