@@ -15,7 +15,6 @@ from pathlib import Path
 
 import numpy as np
 
-from . import suite
 from .names import check_known
 from .sweep import MAX_LOCAL_WORKERS
 
@@ -137,6 +136,8 @@ def check_settings(settings, task: str | None = None) -> None:
     for key, option in (("time_limit", "--seconds"), ("seed", "--seed")):
         if key in settings:
             raise ValueError(f"--set {key}=... is the option {option}")
+    from . import suite  # here: importing the command line's helpers loads no MuJoCo (video's GL check)
+
     if task is not None and task in suite.TASKS:
         check_known(settings, suite.keyword_options(task) + ("control_timestep",), "--set",
                     error=ValueError)
