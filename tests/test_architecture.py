@@ -1,6 +1,7 @@
 """Imports run one way: the library never imports a controller or a study."""
 
 import ast
+import re
 from pathlib import Path
 
 import sailmujoco
@@ -227,4 +228,62 @@ def test_nothing_outside_the_physics_reads_its_private_attributes():
                     and not node.attr.startswith("__") and _is_physics(node.value)):
                 problems.append(f"{_rel(path)}:{node.lineno} reads {ast.unparse(node)}")
     assert not problems, "private attributes of the physics read outside it:\n  " + \
+        "\n  ".join(problems)
+
+
+def test_no_study_imports_another():
+    """A study imports the kit (studies/kit/) and the library, never another study: what two
+    studies share lives in the kit."""
+    studies = "sailmujoco.studies."
+    kit = "sailmujoco.studies.kit"
+
+    def study_of(module: str) -> str | None:
+        if not module.startswith(studies) or module.startswith(kit):
+            return None
+        return module[len(studies):].split(".")[0]
+
+    problems = [f"{file}:{line} imports {target}"
+                for name, imports in _import_graph().items() if study_of(name)
+                for target, (file, line) in imports.items()
+                if study_of(target) and study_of(target) != study_of(name)]
+    assert not problems, "a study imports another:\n  " + "\n  ".join(problems)
+
+
+MAX_MODULE_LINES, MAX_FUNCTION_LINES = 500, 80
+ARCHITECTURE = REPO / "docs" / "architecture.md"
+
+
+def _long_on_purpose() -> set[str]:
+    """The modules and functions docs/architecture.md lists as long on purpose, each with why:
+    ``path`` or ``path::function`` in its "Long on purpose" section."""
+    text = ARCHITECTURE.read_text(encoding="utf-8")
+    section = text.split("## Long on purpose", 1)[1].split("\n## ", 1)[0]
+    listed = set()
+    for item in re.findall(r"^- (.+?)(?=^- |\Z)", section, re.M | re.S):
+        paths = re.findall(r"`([\w/]+\.py)((?:::\w+)?)`(?: and `::(\w+)`)?", item)
+        for path, function, second in paths:
+            listed.add(path + function)
+            if second:
+                listed.add(f"{path}::{second}")
+    return listed
+
+
+def test_rooms_are_small():
+    """No module over 500 lines and no function over 80 in sailmujoco/, controllers/ and
+    studies/, except what docs/architecture.md lists as long on purpose (and says why)."""
+    exceptions = _long_on_purpose()
+    assert "sailmujoco/native.py" in exceptions  # the parser reads the section as written
+    problems = []
+    for path, _ in MODULES.values():
+        rel = _rel(path)
+        source = path.read_text()
+        lines = len(source.splitlines())
+        if lines > MAX_MODULE_LINES and rel not in exceptions:
+            problems.append(f"{rel}: {lines} lines")
+        for node in ast.walk(ast.parse(source)):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                length = node.end_lineno - node.lineno + 1
+                if length > MAX_FUNCTION_LINES and f"{rel}::{node.name}" not in exceptions:
+                    problems.append(f"{rel}:{node.lineno} {node.name}: {length} lines")
+    assert not problems, "rooms too long (or list them in docs/architecture.md with why):\n  " + \
         "\n  ".join(problems)
