@@ -90,7 +90,7 @@ FOIL_FORMS = literal_choices(Foils)  # the papers' foil coefficients / finite-wi
  P_RESISTANCE_DSYHS, P_FINITE_FOILS, P_KEEL_DOWNWASH, P_ON_WINDAGE) = range(69)
 # Blocks of P owned by one force module each (the module defines the offsets inside its block):
 P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
-P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/foil.py (finite-wing forms)
+P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/finite_wing.py (finite-wing forms)
 P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
 P_SIZE = 165
 
