@@ -56,21 +56,50 @@ HYDROFOIL_MATCH_ANGLE = math.radians(20.0)  # rad, section (effective) angle
 
 @kernel
 def helmbold_lift_slope(section_slope, aspect_ratio):
-    """Helmbold (1942) lift slope [1/rad] of a wing of aspect ratio A with section slope a0."""
+    """Helmbold (1942) lift slope of a wing of aspect ratio A with section slope a0, 1/rad.
+
+    a = a0 / (sqrt(1 + (a0 / (pi A))^2) + a0 / (pi A)).
+
+    Parameters
+    ----------
+    section_slope : float
+        Section (2-D) lift slope a0, 1/rad (2 pi for a thin section).
+    aspect_ratio : float
+        (Effective) aspect ratio A of the wing, -.
+    """
     k = section_slope / (math.pi * aspect_ratio)
     return section_slope / (math.sqrt(1.0 + k * k) + k)
 
 
 @kernel
 def viterna_corrigan_cd_max(aspect_ratio):
-    """Viterna & Corrigan (1982): C_D,max = 1.11 + 0.018 A, A capped at 50."""
+    """Viterna & Corrigan (1982): C_D,max = 1.11 + 0.018 A, A capped at 50.
+
+    Parameters
+    ----------
+    aspect_ratio : float
+        (Effective) aspect ratio A of the wing, -.
+    """
     return 1.11 + 0.018 * min(aspect_ratio, 50.0)
 
 
 @kernel
 def viterna_corrigan(alpha, alpha_s, c_lift_s, c_drag_s, cd_max):
-    """Viterna & Corrigan (1982) post-stall (C_L, C_D) at alpha in [alpha_s, pi/2], matched to
-    (C_L,s, C_D,s) at alpha_s (formulas in the block comment above)."""
+    """Viterna & Corrigan (1982) post-stall (C_L, C_D) at alpha in [alpha_s, pi/2].
+
+    Matched to (C_L,s, C_D,s) at alpha_s (formulas in the block comment above).
+
+    Parameters
+    ----------
+    alpha : float
+        Angle of attack, rad, in [alpha_s, pi/2].
+    alpha_s : float
+        Matching angle, rad, in (0, pi/2).
+    c_lift_s, c_drag_s : float
+        C_L and C_D at the matching angle, -.
+    cd_max : float
+        C_D,max, the drag at 90 deg (:func:`viterna_corrigan_cd_max`), -.
+    """
     ss, cs = math.sin(alpha_s), math.cos(alpha_s)
     b2 = (c_drag_s - cd_max * ss * ss) / cs
     a2 = (c_lift_s - cd_max * ss * cs) * ss / (cs * cs)
@@ -87,6 +116,17 @@ def finite_sail_normal_coefficient(x, slope, stall, cd_max):
     leading-edge suction leaves the force normal to it, so at the stall C_L,s = C_N,s cos(stall),
     C_D,s = C_N,s sin(stall); past it Viterna & Corrigan's C_L, C_D, resolved on the normal:
     C_N = C_L cos(theta) + C_D sin(theta), which reaches C_D,max at 90 deg.
+
+    Parameters
+    ----------
+    x : float
+        sin(alpha), alpha the angle of attack (foil frame of :mod:`sailmujoco.forces.foil`).
+    slope : float
+        Lift slope at zero incidence, 1/rad (:func:`helmbold_lift_slope`).
+    stall : float
+        Stall angle, rad, where Viterna & Corrigan take over.
+    cd_max : float
+        C_D,max at 90 deg (:func:`viterna_corrigan_cd_max`), -.
     """
     ax = min(abs(x), 1.0)
     if ax <= math.sin(stall):
@@ -118,10 +158,37 @@ def finite_hydrofoil_coefficients(alpha, reynolds, lift_ratio, aspect_ratio, cd_
       a = Helmbold(a0 = 2 pi, A_e) (``lift_ratio`` = a/a0), so C_L(alpha) = c_l(alpha a/a0):
       slope a at zero incidence, the section's own c_l,max, reached at a larger angle (finite
       wings stall later). The table's 0-2 deg slope is 6.30 /rad at Re >= 8e4, 2 pi to 0.4 %.
-      Drag as :func:`hydrofoil_coefficients` reads eq. 24, with the induced drag on A_e.
+      Drag as :func:`~sailmujoco.forces.foil_sections.hydrofoil_coefficients` reads Wille
+      (2016a) eq. 24, with the induced drag on A_e.
     * Past the section angle ``match_angle`` (alpha > match_angle a0/a): Viterna & Corrigan
       matched there, C_D -> C_D,max(A_e) at 90 deg instead of the 2-D table's 1.8.
     * |alpha| > 90 deg: mirrored as a flat plate (C_L odd about 90 deg, C_D even).
+
+    Parameters
+    ----------
+    alpha : float
+        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil`); wrapped to [-pi, pi).
+    reynolds : float
+        Reynolds number on the chord, -.
+    lift_ratio : float
+        a/a0, the finite wing's lift slope over the section's 2 pi, - (``FB_KEEL_RATIO`` or
+        ``FB_RUDDER_RATIO`` of :func:`pack_foil_block`).
+    aspect_ratio : float
+        Effective aspect ratio A_e, - (``FB_KEEL_AR`` or ``FB_RUDDER_AR``).
+    cd_max : float
+        C_D,max(A_e) at 90 deg, - (``FB_KEEL_CD_MAX`` or ``FB_RUDDER_CD_MAX``).
+    match_angle : float
+        Section (effective) angle where Viterna & Corrigan take over, rad (``FB_MATCH_ANGLE``).
+    thickness_ratio : float
+        Thickness over chord t/c, -.
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The section table, as for
+        :func:`~sailmujoco.forces.foil_sections.section_coefficients`.
+
+    Returns
+    -------
+    c_lift, c_drag : float
+        C_L and C_D on the foil's planform area.
     """
     a = wrap_pi(alpha)
     sign = 1.0 if a >= 0.0 else -1.0
@@ -155,6 +222,13 @@ def downwash_factor(distance: float, keel_span: float) -> float:
     1 at the keel (Prandtl's downwash at the lifting line) and 2 far behind. The bound vortex's
     share (it is the keel's own, and singular on its line) and the rudder's depth below the
     vortices' plane are left out; the latter makes k an upper bound.
+
+    Parameters
+    ----------
+    distance : float
+        x: from the keel's CP aft to the rudder's CP, along body x, m.
+    keel_span : float
+        The keel's geometric span, m.
     """
     s = 0.25 * math.pi * keel_span
     return 1.0 + distance / math.sqrt(distance * distance + s * s)
@@ -162,7 +236,24 @@ def downwash_factor(distance: float, keel_span: float) -> float:
 
 def pack_foil_block(p, end_plate_keel: float = KEEL_END_PLATE,
                     end_plate_rudder: float = RUDDER_END_PLATE) -> np.ndarray:
-    """The finite-wing constants of boat ``p`` (BoatParams), FOIL_BLOCK_SIZE floats at most."""
+    """The finite-wing constants of a boat, laid out by the ``FB_*`` offsets.
+
+    The block goes into the boat's parameter array at ``P_FOIL_BLOCK`` (see
+    :func:`sailmujoco.forces.boat.pack_parameters`), FOIL_BLOCK_SIZE floats at most.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat: its sail, keel and rudder aspect ratios, and the keel's and rudder's x (body
+        frame, m) and span.
+    end_plate_keel, end_plate_rudder : float
+        A_e / A of the keel and of the rudder, - (the hull as an end plate).
+
+    Returns
+    -------
+    numpy.ndarray, shape (11,)
+        The block.
+    """
     block = np.zeros(11)
     block[FB_SAIL_SLOPE] = helmbold_lift_slope(THIN_AIRFOIL_SLOPE, p.sail.aspect_ratio)
     block[FB_SAIL_CD_MAX] = viterna_corrigan_cd_max(p.sail.aspect_ratio)

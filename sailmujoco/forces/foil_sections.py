@@ -21,9 +21,22 @@ from .damping import ittc_friction_coefficient
 class SectionTable:
     """NACA 0015 section coefficients through 180 deg (Sheldahl & Klimas 1981, SAND80-2114).
 
-    Attributes are plain arrays so they can be handed to compiled kernels:
-    ``alpha`` (rad, ascending, shared by every Reynolds number), ``log_re`` (log10 Re of each
-    table), ``cl`` and ``cd`` (shape (n_re, n_alpha)).
+    Attributes are plain arrays so they can be handed to compiled kernels.
+
+    Parameters
+    ----------
+    alpha : array_like, shape (n_alpha,)
+        Section angles of attack, rad, ascending, shared by every Reynolds number (the foil
+        frame of :mod:`sailmujoco.forces.foil`).
+    log_re : array_like, shape (n_re,)
+        log10 of the Reynolds number of each table, ascending.
+    cl, cd : array_like, shape (n_re, n_alpha)
+        Section lift and drag coefficients c_l, c_d, one row per Reynolds number.
+
+    Attributes
+    ----------
+    alpha, log_re, cl, cd : numpy.ndarray
+        The parameters as contiguous float arrays.
     """
 
     def __init__(self, alpha, log_re, cl, cd):
@@ -38,7 +51,19 @@ class SectionTable:
 
 
 def parse_section_table(text: str) -> SectionTable:
-    """Parse the CACTUS-format NACA 0015 file shipped in ``sailmujoco/data``."""
+    """Parse the CACTUS-format NACA 0015 file shipped in ``sailmujoco/data``.
+
+    Parameters
+    ----------
+    text : str
+        The file's text: one ``Reynolds Number: <Re>`` header per table, each followed by rows of
+        alpha (deg), c_l, c_d; every table on the same alpha grid.
+
+    Returns
+    -------
+    SectionTable
+        The tables, alpha converted to radians.
+    """
     blocks: list[tuple[float, list[list[float]]]] = []
     for line in text.splitlines():
         s = line.strip()
@@ -67,7 +92,13 @@ def naca0015() -> SectionTable:
 
 @kernel
 def wrap_pi(angle):
-    """Wrap to [-pi, pi)."""
+    """Wrap an angle to [-pi, pi).
+
+    Parameters
+    ----------
+    angle : float
+        Angle, rad.
+    """
     return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
@@ -77,6 +108,24 @@ def section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_
 
     Re is clamped to the table's range (1e4 to 1e7): the Reynolds number is picked from the
     flow at every call.
+
+    Parameters
+    ----------
+    alpha : float
+        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil`; wrapped to
+        [-pi, pi).
+    reynolds : float
+        Reynolds number on the chord, -.
+    alpha_grid, log_re_grid : numpy.ndarray, shapes (n_alpha,) and (n_re,)
+        The table's angles (rad, ascending) and log10 Reynolds numbers (:class:`SectionTable`'s
+        ``alpha`` and ``log_re``).
+    cl_table, cd_table : numpy.ndarray, shape (n_re, n_alpha)
+        The table's c_l and c_d (:class:`SectionTable`'s ``cl`` and ``cd``).
+
+    Returns
+    -------
+    c_l, c_d : float
+        Section lift and drag coefficients.
     """
     a = wrap_pi(alpha)
     n = alpha_grid.shape[0]
@@ -103,7 +152,7 @@ def section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_
 @kernel
 def hydrofoil_coefficients(alpha, reynolds, aspect_ratio, thickness_ratio,
                            alpha_grid, log_re_grid, cl_table, cd_table):
-    """Finite-span C_L, C_D of the keel or rudder.
+    """Finite-span C_L, C_D of the keel or rudder, Wille (2016a) eqs. 23-24.
 
     * Lift: Wille (2016a) eq. 23 with Asp_0 = infinity, because the Sheldahl & Klimas data are
       2-D section data: C_L = c_l / (1 + 2/Asp).
@@ -113,6 +162,24 @@ def hydrofoil_coefficients(alpha, reynolds, aspect_ratio, thickness_ratio,
       finite-span induced drag C_L^2 / (pi Asp). Eq. 24's friction term replaces the table's
       zero-lift drag, which is also how the thinner NACA 0009 keel differs from the 0015 table
       it borrows (no NACA 0009 table through 180 deg is available; the 0015 table stands in).
+
+    Parameters
+    ----------
+    alpha : float
+        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil`.
+    reynolds : float
+        Reynolds number on the chord, -.
+    aspect_ratio : float
+        Geometric aspect ratio Asp of the foil, -.
+    thickness_ratio : float
+        Thickness over chord t/c, -.
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The section table, as for :func:`section_coefficients`.
+
+    Returns
+    -------
+    c_lift, c_drag : float
+        C_L and C_D on the foil's planform area.
     """
     cl, cd = section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_table)
     _, cd0 = section_coefficients(0.0, reynolds, alpha_grid, log_re_grid, cl_table, cd_table)
