@@ -22,5 +22,7 @@ module                  what it computes
 ``wind``                the wind's configuration, NORSOK spectrum, log profile and its
                         seeded field (gust tables, wander series), current
 ``wind_kernels``        the compiled wind velocity at a time and height (eqs. 39-43)
+``boat``                every force on the boat at one instant (one compiled kernel)
+``boat_parameters``     the boat's parameters packed into the kernel's flat array
 ======================  ===========================================================
 """
