@@ -56,35 +56,24 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
                     vertical_damping: str = "world", restoring_axes: str = "horizontal",
                     resistance: str = "dsyhs", foils: str = "finite", keel_downwash: bool = True,
                     windage: bool = True) -> np.ndarray:
-    """Flatten boat parameters and force switches into the array the kernel reads.
+    """Flatten boat parameters and force switches into ``P`` (P_SIZE,), laid out by the P_* indices.
 
     Parameters
     ----------
     p : BoatParams
         The boat (SI units; positions in the body frame FLU about CO).
-    hydrostatics : str
-        One of ``HYDROSTATIC_MODES``: the restoring model.
-    sail, keel, rudder, damping, added_mass : bool
-        Whether each force term is on.
+    hydrostatics, added_mass_coupling, vertical_damping, restoring_axes, resistance, foils : str
+        The modelling forms, one of ``HYDROSTATIC_MODES``, ``ADDED_MASS_COUPLINGS``,
+        ``VERTICAL_DAMPING_FORMS``, ``RESTORING_AXES``, ``RESISTANCE_FORMS``, ``FOIL_FORMS``.
+    sail, keel, rudder, damping, added_mass, keel_downwash, windage : bool
+        Whether each force term is on (``keel_downwash``: the keel's downwash at the rudder;
+        ``windage``: the topsides' and mast's).
     sail_tangential : bool
         Whether the sail has a tangential coefficient (False: C_T = 0).
     wind : WindConfig or None
-        The wind: its mean speed (m/s), bearing it comes from (rad) and current (m/s east,
-        north); None leaves them 0.
+        Mean speed (m/s), bearing it comes from (rad), current (m/s east, north); None: all 0.
     wander_dt : float
         Time step of the wind's wander series, s.
-    added_mass_coupling, vertical_damping, restoring_axes, resistance, foils : str
-        The modelling forms, one of ``ADDED_MASS_COUPLINGS``, ``VERTICAL_DAMPING_FORMS``,
-        ``RESTORING_AXES``, ``RESISTANCE_FORMS``, ``FOIL_FORMS``.
-    keel_downwash : bool
-        Whether the keel's downwash turns the rudder's inflow.
-    windage : bool
-        Whether the topsides' and mast's windage is on.
-
-    Returns
-    -------
-    numpy.ndarray, shape (P_SIZE,)
-        ``P``, laid out by the ``P_*`` indices and the blocks' offsets.
     """
     for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
                                  ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
