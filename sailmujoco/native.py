@@ -512,12 +512,27 @@ def _split_one(model_address, data_address, nstep, row):
 
 @numba.njit(nogil=True, cache=True)
 def rk4_steps(model_address, data_address, nstep, row, saved):
-    """``nstep`` calls of MuJoCo's mj_step (RK4) with :func:`stage_callback` as the control
-    callback, for the boat whose registry row is ``row`` (in the table, see :class:`Stepping`).
+    """``nstep`` calls of MuJoCo's mj_step (RK4) with :func:`stage_callback` as the control callback.
 
-    On a bad first-stage status the step is undone (time, qpos, qvel, act as before it) and the
-    status returned; ``saved`` is scratch for that state. Returns (status, steps done, whether
-    MuJoCo counted a new warning).
+    For the boat whose registry row is ``row`` (in the table, see :class:`Stepping`). On a bad
+    first-stage status the step is undone (time, qpos, qvel, act as before it) and the status
+    returned.
+
+    Parameters
+    ----------
+    model_address, data_address : int
+        Addresses of the boat's MjModel and MjData (the C structs).
+    nstep : int
+        Number of sub-steps.
+    row : numpy.ndarray, shape (ROW,), int64
+        The boat's :func:`registry_row`: the addresses and sizes of its kernel arguments.
+    saved : numpy.ndarray, shape (nq + nv + na,)
+        Scratch for the state before a step, to undo it.
+
+    Returns
+    -------
+    status, steps, warned : int, int, bool
+        The force kernel's status, the steps done, and whether MuJoCo counted a new warning.
     """
     return _rk4_one(model_address, data_address, nstep, row, saved)
 
@@ -528,15 +543,41 @@ def split_steps(model_address, data_address, nstep, row):
 
     Stops before integrating a state whose forces are not OK; returns what :func:`rk4_steps`
     returns. Needs no callback (``row`` need not be in the table).
+
+    Parameters
+    ----------
+    model_address, data_address : int
+        Addresses of the boat's MjModel and MjData (the C structs).
+    nstep : int
+        Number of sub-steps.
+    row : numpy.ndarray, shape (ROW,), int64
+        The boat's :func:`registry_row`: the addresses and sizes of its kernel arguments.
     """
     return _split_one(model_address, data_address, nstep, row)
 
 
 @numba.njit(nogil=True, parallel=True, cache=True)
 def batch_steps(models, datas, nstep, slots, rk4, saved, status, done, warned):
-    """``nstep`` sub-steps of every boat i (MjModel ``models[i]``, MjData ``datas[i]``, registry
-    row ``slots[i]``) in parallel threads; per boat, what :func:`rk4_steps` returns goes into
-    ``status``, ``done`` and ``warned``. A boat whose ``status`` is not OK on entry is skipped.
+    """``nstep`` sub-steps of every boat i in parallel threads.
+
+    Per boat, what :func:`rk4_steps` returns goes into ``status``, ``done`` and ``warned``. A
+    boat whose ``status`` is not OK on entry is skipped.
+
+    Parameters
+    ----------
+    models, datas : numpy.ndarray, shape (n,), int64
+        Addresses of each boat's MjModel and MjData.
+    nstep : int
+        Number of sub-steps.
+    slots : numpy.ndarray, shape (n,), int64
+        Each boat's slot in the registry (:class:`Stepping`).
+    rk4 : bool
+        MuJoCo's RK4 (:func:`rk4_steps`) or the first-order split step (:func:`split_steps`).
+    saved : numpy.ndarray, shape (n, nq + nv + na)
+        Per boat, scratch for the state before a step.
+    status, done, warned : numpy.ndarray, shape (n,)
+        Per boat: the kernel status (in: skip if not OK; out), the steps done, and whether MuJoCo
+        counted a new warning.
     """
     registry = numba.carray(_pointer(_registry_address()), (SLOTS, ROW), np.int64)
     for i in numba.prange(slots.shape[0]):
@@ -557,9 +598,19 @@ _T_HYDRO, _P_G = kernels.T_HYDRO, kernels.P_G
 
 @numba.njit(nogil=True, cache=True)
 def forces_4dof(t, row, add_mass):
-    """The forces of the 4-DOF boat (heave and pitch held) whose registry row is ``row`` on its
-    x, y, yaw and roll joints, and with ``add_mass`` its added mass in MuJoCo's M; returns the
-    kernel status. (Called from Python; in the compiled loop the stage callback does the same.)
+    """The forces of the 4-DOF boat (heave and pitch held) on its x, y, yaw and roll joints.
+
+    With ``add_mass`` also its added mass in MuJoCo's M; returns the kernel status. (Called
+    from Python; in the compiled loop the stage callback does the same.)
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    row : numpy.ndarray, shape (ROW,), int64
+        The boat's :func:`registry_row`: the addresses and sizes of its kernel arguments.
+    add_mass : bool
+        Whether to add the added mass to MuJoCo's mass matrix.
     """
     return _forces_4dof(row, t, add_mass)
 

@@ -63,12 +63,24 @@ from .._jit import kernel
 
 @kernel
 def kirchhoff_terms(nu_r, a, full, out):
-    """-C_A(nu_r) nu_r for a diagonal M_A (Fossen 2011 eq. 6.54) into ``out`` (6,).
+    """-C_A(nu_r) nu_r for a diagonal M_A (Fossen 2011 eq. 6.54) into ``out``.
 
-    ``full`` False: the manoeuvring and rotational triples only (module docstring); True: all
-    four (unbounded ideal fluid). In 4 DOF (w = q = 0) the surge, sway and yaw rows are
-    Wille (2016a) eq. 11: (-Y_vdot v_r r, X_udot u_r r, ..., (Y_vdot - X_udot) u_r v_r), the
-    last being the Munk moment.
+    In 4 DOF (w = q = 0) the surge, sway and yaw rows are Wille (2016a) eq. 11:
+    (-Y_vdot v_r r, X_udot u_r r, ..., (Y_vdot - X_udot) u_r v_r), the last being the Munk
+    moment.
+
+    Parameters
+    ----------
+    nu_r : numpy.ndarray, shape (6,)
+        (u, v, w, p, q, r) relative to the water, body frame, m/s and rad/s.
+    a : numpy.ndarray, shape (6,)
+        Positive diagonal added masses (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot),
+        kg and kg m^2.
+    full : bool
+        False: the manoeuvring and rotational triples only (module docstring); True: all four
+        (unbounded ideal fluid, ``coupling="kirchhoff"``).
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, body frame about CO, N and N m.
     """
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
     a1, a2, a3, a4, a5, a6 = a[0], a[1], a[2], a[3], a[4], a[5]
@@ -94,13 +106,23 @@ def kirchhoff_terms(nu_r, a, full, out):
 
 @kernel
 def added_mass_velocity_terms(nu_r, a, full, out):
-    """Explicit added-mass wrench for the MuJoCo step (body frame, about CO) into ``out`` (6,).
+    """Explicit added-mass wrench for the MuJoCo step (body frame, about CO) into ``out``.
 
     The kept Kirchhoff terms plus A1 (omega x v_r), which undoes the omega x v_r that the
     world-frame acceleration in the augmented mass matrix brings in (module docstring).
-    ``nu_r`` = (u, v, w, p, q, r) relative to the water; ``a`` = positive diagonal added masses
-    (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot); ``full`` as in
-    :func:`kirchhoff_terms`.
+
+    Parameters
+    ----------
+    nu_r : numpy.ndarray, shape (6,)
+        (u, v, w, p, q, r) relative to the water, body frame, m/s and rad/s.
+    a : numpy.ndarray, shape (6,)
+        Positive diagonal added masses (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot),
+        kg and kg m^2.
+    full : bool
+        False: the manoeuvring and rotational triples only (module docstring); True: all four
+        (unbounded ideal fluid, ``coupling="kirchhoff"``).
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, body frame about CO, N and N m.
     """
     kirchhoff_terms(nu_r, a, full, out)
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]

@@ -3,8 +3,8 @@
 :func:`boat_forces` is a pure function of (time, generalised position and velocity, packed
 parameters, wind arrays). It calls the force models of this package and returns each term's
 wrench, the hinge moments and the generalised forces MuJoCo needs. The packing of
-:class:`~sailmujoco.params.BoatParams` into the flat array ``P`` (numba dispatches a flat
-array in well under a microsecond; a record of 60 fields takes many) is defined here too.
+:class:`~sailmujoco.params.BoatParams` into the flat array ``P`` is defined in
+:mod:`sailmujoco.forces.boat_parameters`; its names are importable from here too.
 
 Term order (rows of ``terms``), each a body-frame wrench about CO:
 ``TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external",
@@ -15,15 +15,93 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
-from .. import hull as hull_geometry
 from .._jit import kernel
-from ..constants import GRAVITY
-from ..options import AddedMassCoupling, Foils, Hydrostatics, Resistance, RestoringAxes, VerticalDamping
-from ..options import choices as literal_choices
-from ..params import BoatParams
 from .added_mass import added_mass_velocity_terms
+from .boat_parameters import (  # noqa: F401 - the layout of P, importable from here too
+    ADDED_MASS_COUPLINGS,
+    FOIL_BLOCK_SIZE,
+    FOIL_FORMS,
+    HYDROSTATIC_MODES,
+    P_A1,
+    P_A2,
+    P_A3,
+    P_A4,
+    P_A5,
+    P_A6,
+    P_BF0,
+    P_BL,
+    P_BODY_DAMPING,
+    P_BODY_RESTORING,
+    P_BOOM_Z,
+    P_CE_AFT,
+    P_CE_HEIGHT,
+    P_CF_SAIL,
+    P_CG_X,
+    P_CG_Z,
+    P_CROSSFLOW_CD,
+    P_CURRENT_E,
+    P_CURRENT_N,
+    P_D11,
+    P_D22,
+    P_D33,
+    P_D55,
+    P_D66,
+    P_FINITE_FOILS,
+    P_FLOTATION_X,
+    P_FOIL_BLOCK,
+    P_FORM_K,
+    P_FULL_KIRCHHOFF,
+    P_G,
+    P_HYDRO_MODE,
+    P_K_HEAVE,
+    P_K_PITCH,
+    P_KEEL_AR,
+    P_KEEL_AREA,
+    P_KEEL_CHORD,
+    P_KEEL_DOWNWASH,
+    P_KEEL_TC,
+    P_KEEL_X,
+    P_KEEL_Z,
+    P_LENGTH,
+    P_MASS,
+    P_MAST_X,
+    P_NU_W,
+    P_OMEGA_ROLL,
+    P_ON_ADDED,
+    P_ON_DAMPING,
+    P_ON_KEEL,
+    P_ON_RUDDER,
+    P_ON_SAIL,
+    P_ON_WINDAGE,
+    P_RESISTANCE_BLOCK,
+    P_RESISTANCE_DSYHS,
+    P_RHO_A,
+    P_RHO_W,
+    P_RIGHTING_K,
+    P_RIGHTING_SIN,
+    P_RUD_AR,
+    P_RUD_AREA,
+    P_RUD_CHORD,
+    P_RUD_TC,
+    P_RUD_X,
+    P_RUD_Z,
+    P_SAIL_AREA,
+    P_SIZE,
+    P_STALL,
+    P_SUCTION,
+    P_TANGENTIAL,
+    P_WANDER_DT,
+    P_WETTED,
+    P_WIND_FROM,
+    P_WIND_SPEED,
+    P_WINDAGE_BLOCK,
+    RESISTANCE_BLOCK_SIZE,
+    RESISTANCE_FORMS,
+    RESTORING_AXES,
+    VERTICAL_DAMPING_FORMS,
+    WINDAGE_BLOCK_SIZE,
+    pack_parameters,
+)
 from .damping import hull_damping
 from .foil import (
     FB_DOWNWASH_GAIN,
@@ -40,12 +118,11 @@ from .foil import (
     foil_world_force,
     hydrofoil_coefficients,
     lift_drag_components,
-    pack_foil_block,
     sail_force,
     section_flow,
 )
 from .hydrostatics import geometric_buoyancy, paper_restoring
-from .resistance import delft_hull, pack_resistance, residuary_surge_force
+from .resistance import residuary_surge_force
 from .wind import wind_velocities
 from .windage import (
     W_AREA_FRONT,
@@ -59,41 +136,11 @@ from .windage import (
     W_MAST_X,
     W_MAST_Z,
     mast_force,
-    pack_windage,
     topsides_force,
 )
 
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
-HYDROSTATIC_MODES = literal_choices(Hydrostatics)  # the index is the kernel's code for the mode
-# Each of these modelling choices keeps its alternative form, so its effect can be measured
-# (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
-ADDED_MASS_COUPLINGS = literal_choices(AddedMassCoupling)  # heave/pitch forward-speed terms out / in
-VERTICAL_DAMPING_FORMS = literal_choices(VerticalDamping)  # heave/pitch damping on vertical motion / w, q
-RESTORING_AXES = literal_choices(RestoringAxes)  # paper restoring moments about level axes / body axes
-# The boat as built; the first value of each is the papers' form:
-RESISTANCE_FORMS = literal_choices(Resistance)  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
-FOIL_FORMS = literal_choices(Foils)  # the papers' foil coefficients / finite-wing slope and stall
-
-# ---- layout of the packed parameter array P -------------------------------------------
-(P_RHO_W, P_RHO_A, P_NU_W, P_G, P_MASS, P_CG_X, P_CG_Z,
- P_A1, P_A2, P_A3, P_A4, P_A5, P_A6,
- P_D11, P_D22, P_D33, P_D55, P_D66, P_BF0, P_BL, P_OMEGA_ROLL, P_LENGTH, P_WETTED, P_FORM_K,
- P_CROSSFLOW_CD,
- P_RIGHTING_K, P_RIGHTING_SIN, P_K_HEAVE, P_K_PITCH,
- P_KEEL_AREA, P_KEEL_AR, P_KEEL_TC, P_KEEL_CHORD, P_KEEL_X, P_KEEL_Z,
- P_RUD_AREA, P_RUD_AR, P_RUD_TC, P_RUD_CHORD, P_RUD_X, P_RUD_Z,
- P_SAIL_AREA, P_MAST_X, P_BOOM_Z, P_CE_AFT, P_CE_HEIGHT, P_SUCTION, P_STALL, P_CF_SAIL,
- P_ON_SAIL, P_ON_KEEL, P_ON_RUDDER, P_HYDRO_MODE, P_ON_DAMPING, P_ON_ADDED, P_TANGENTIAL,
- P_WIND_SPEED, P_WIND_FROM, P_CURRENT_E, P_CURRENT_N, P_WANDER_DT,
- P_FLOTATION_X, P_FULL_KIRCHHOFF, P_BODY_DAMPING, P_BODY_RESTORING,
- P_RESISTANCE_DSYHS, P_FINITE_FOILS, P_KEEL_DOWNWASH, P_ON_WINDAGE) = range(69)
-# Blocks of P owned by one force module each (the module defines the offsets inside its block):
-P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
-P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/foil.py (finite-wing forms)
-P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
-P_SIZE = 165
-
 # ---- diagnostics (``diag`` output) ------------------------------------------------------
 (D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
  D_WIND_X, D_WIND_Y, D_WIND_Z, D_CE_HEIGHT, D_SUBMERGED, D_CN, D_CT, D_SAIL_HINGE,
@@ -103,71 +150,17 @@ STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
 WORK_SIZE = 72  # scratch floats handed to boat_forces
 
 
-def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
-                    keel: bool = True, rudder: bool = True, damping: bool = True,
-                    added_mass: bool = True, sail_tangential: bool = True, wind=None,
-                    wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
-                    vertical_damping: str = "world", restoring_axes: str = "horizontal",
-                    resistance: str = "dsyhs", foils: str = "finite", keel_downwash: bool = True,
-                    windage: bool = True) -> np.ndarray:
-    """Flatten boat parameters and switches into the array the kernel reads."""
-    for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
-                                 ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
-                                 ("vertical_damping", vertical_damping, VERTICAL_DAMPING_FORMS),
-                                 ("restoring_axes", restoring_axes, RESTORING_AXES),
-                                 ("resistance", resistance, RESISTANCE_FORMS),
-                                 ("foils", foils, FOIL_FORMS)):
-        if value not in choices:
-            raise ValueError(f"unknown {name} {value!r}; choose one of {choices}")
-    h = p.hull
-    volume = p.displaced_volume
-    P = np.zeros(P_SIZE)
-    P[P_RHO_W], P[P_RHO_A], P[P_NU_W], P[P_G] = p.rho_water, p.rho_air, p.nu_water, GRAVITY
-    P[P_MASS], P[P_CG_X], P[P_CG_Z] = p.mass, p.cg_x, p.cg_z
-    P[P_A1:P_A6 + 1] = p.added_mass_diagonal
-    P[P_D11:P_D66 + 1] = p.linear_damping
-    P[P_BF0], P[P_BL], P[P_OMEGA_ROLL] = p.roll_friction, p.roll_lift, p.roll_frequency
-    P[P_LENGTH], P[P_WETTED], P[P_FORM_K] = h.length, p.wetted_surface, p.form_factor
-    P[P_CROSSFLOW_CD] = p.crossflow_cd
-    P[P_RIGHTING_K] = p.rho_water * GRAVITY * volume * p.gm_t
-    P[P_RIGHTING_SIN] = 1.0 if p.paper_righting == "sin" else 0.0
-    P[P_K_HEAVE] = p.rho_water * GRAVITY * hull_geometry.waterplane_area(h)
-    P[P_K_PITCH] = p.rho_water * GRAVITY * volume * hull_geometry.gm_longitudinal(h, p.cg_z)
-    for base, foil in ((P_KEEL_AREA, p.keel), (P_RUD_AREA, p.rudder)):
-        P[base:base + 6] = (foil.area, foil.aspect_ratio, foil.thickness_ratio, foil.chord,
-                            foil.x, foil.z)
-    s = p.sail
-    P[P_SAIL_AREA], P[P_MAST_X], P[P_BOOM_Z] = s.area, s.mast_x, s.boom_height
-    P[P_CE_AFT], P[P_CE_HEIGHT] = s.ce_aft, s.ce_height
-    P[P_SUCTION], P[P_STALL], P[P_CF_SAIL] = (s.suction_efficiency, s.suction_stall,
-                                              s.friction_coefficient)
-    P[P_ON_SAIL], P[P_ON_KEEL], P[P_ON_RUDDER] = float(sail), float(keel), float(rudder)
-    P[P_HYDRO_MODE] = HYDROSTATIC_MODES.index(hydrostatics)
-    P[P_ON_DAMPING], P[P_ON_ADDED], P[P_TANGENTIAL] = (float(damping), float(added_mass),
-                                                       float(sail_tangential))
-    if wind is not None:
-        P[P_WIND_SPEED], P[P_WIND_FROM] = wind.speed, wind.direction_from
-        P[P_CURRENT_E], P[P_CURRENT_N] = wind.current_east, wind.current_north
-    P[P_WANDER_DT] = wander_dt
-    P[P_FLOTATION_X] = hull_geometry.centre_of_flotation_x(h)
-    P[P_FULL_KIRCHHOFF] = float(added_mass_coupling == "kirchhoff")
-    P[P_BODY_DAMPING] = float(vertical_damping == "body")
-    P[P_BODY_RESTORING] = float(restoring_axes == "body")
-    P[P_RESISTANCE_DSYHS] = float(resistance == "dsyhs")
-    block = pack_resistance(delft_hull(h), p.rho_water, GRAVITY)
-    P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + block.size] = block
-    P[P_FINITE_FOILS] = float(foils == "finite")
-    block = pack_foil_block(p)
-    P[P_FOIL_BLOCK:P_FOIL_BLOCK + block.size] = block
-    P[P_KEEL_DOWNWASH] = float(keel_downwash)
-    P[P_ON_WINDAGE] = float(windage)
-    pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
-    return P
-
-
 @kernel
 def rotation_from_quat(q, out):
-    """Body->world rotation matrix of a unit quaternion (w, x, y, z) into ``out`` (3x3)."""
+    """Body->world rotation matrix of a quaternion into ``out``.
+
+    Parameters
+    ----------
+    q : numpy.ndarray, shape (4,)
+        Quaternion (w, x, y, z), body FLU -> world ENU (MuJoCo's order); normalised here.
+    out : numpy.ndarray, shape (3, 3)
+        Receives the rotation matrix.
+    """
     w, x, y, z = q[0], q[1], q[2], q[3]
     n = w * w + x * x + y * y + z * z
     s = 2.0 / n
@@ -205,21 +198,50 @@ def _point_flow(fluid_body, v, w, point, extra, out):
 def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rho, nu, current_b, v, w,
                     alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force,
                     finite, lift_ratio, aspect_ratio_e, cd_max, match_angle, downwash):
-    """Lift and drag of a keel or rudder (Wille eqs. 30-36): (alpha, speed, C_L); the force into ``force``.
+    """Lift and drag of a keel or rudder, Wille (2016a) eqs. 30-36; the force into ``force``.
 
-    The foil stands at (x, 0, z) in the body frame, turned by ``angle`` [rad] about -z (the
-    rudder's sigma; 0 for the keel): chord (cos, -sin, 0), normal (sin, cos, 0). The flow is the
-    water's velocity relative to that point (current less the hull's motion, the foil's own turn
-    rate neglected); C_L, C_D from the section table at the chord Reynolds number, corrected
-    for the aspect ratio (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`). ``point``,
-    ``flow``, ``chord``, ``normal`` are work arrays (3,), left holding this foil's values;
-    ``zero3`` is a zero vector (no point velocity beyond the hull's).
+    The foil stands at (x, 0, z) in the body frame, turned by ``angle`` about -z: chord
+    (cos, -sin, 0), normal (sin, cos, 0). The flow is the water's velocity relative to that
+    point (current less the hull's motion, the foil's own turn rate neglected); C_L, C_D from
+    the section table at the chord Reynolds number, corrected for the aspect ratio
+    (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`), or with ``finite`` the finite
+    wing's (:func:`sailmujoco.forces.foil.finite_hydrofoil_coefficients`). ``downwash``, when
+    not 0, turns the inflow about the span by that angle against the angle of attack (the
+    keel's downwash at the rudder): alpha -> alpha - downwash, same speed; lift and drag follow
+    the turned flow.
 
-    ``finite`` picks :func:`sailmujoco.forces.foil.finite_hydrofoil_coefficients` (slope ratio
-    ``lift_ratio`` = a/a0, effective aspect ratio, Viterna-Corrigan C_D,max, matching angle).
-    ``downwash`` [rad], when not 0, turns the inflow about the span by that angle against the
-    angle of attack (the keel's downwash at the rudder): alpha -> alpha - downwash, same speed;
-    lift and drag follow the turned flow. The returned alpha is the turned one.
+    Parameters
+    ----------
+    angle : float
+        The foil's turn about -z, rad (the rudder's sigma; 0 for the keel).
+    x, z, chord_length : float
+        The foil's centre of pressure in the body frame and its chord, m.
+    aspect_ratio, thickness, area : float
+        Geometric aspect ratio (-), thickness over chord (-) and planform area (m^2).
+    rho, nu : float
+        Water density (kg/m^3) and kinematic viscosity (m^2/s).
+    current_b, v, w : numpy.ndarray, shape (3,)
+        The current (m/s), the velocity of CO (m/s) and the angular velocity (rad/s), body
+        frame.
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+    zero3, point, flow, chord, normal : numpy.ndarray, shape (3,)
+        A zero vector (no point velocity beyond the hull's); work arrays, left holding this
+        foil's point (m), flow (m/s), chord and normal axes (body frame).
+    force : numpy.ndarray, shape (3,)
+        Receives the force, N, body frame.
+    finite : bool
+        The finite-wing coefficients instead of Wille's eqs. 23-24.
+    lift_ratio, aspect_ratio_e, cd_max, match_angle : float
+        The finite wing's a/a0 (-), effective aspect ratio (-), C_D,max (-) and matching angle
+        (rad), from the boat's ``FB_*`` block (:func:`~sailmujoco.forces.foil.pack_foil_block`).
+    downwash : float
+        Inflow turn epsilon, rad (0: none).
+
+    Returns
+    -------
+    alpha, speed, c_l : float
+        The (turned) angle of attack (rad), the in-plane flow speed (m/s) and C_L.
     """
     point[0], point[1], point[2] = x, 0.0, z
     _point_flow(current_b, v, w, point, zero3, flow)
@@ -248,14 +270,56 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
                 external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
-    ``idx`` = (qpos index of the rudder hinge, its dof, qpos index of the sail hinge, its dof).
-    Writes ``terms`` (len(TERMS), 6) body wrenches about CO, ``diag`` (D_SIZE,), ``qfrc`` (nv,)
-    generalised forces, and ``madd`` (3, 3), the world-frame translational added-mass block
-    R diag(a1, a2, a3) R^T. With ``add_mass`` it also adds the hull's added mass to MuJoCo's
-    sparse mass matrix ``mass_csr`` at ``csr_addr``: the six lower-triangle entries of the
-    translational block ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational
-    diagonal entries. ``work`` (WORK_SIZE,) is scratch space, so the kernel allocates nothing.
-    Returns STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    qpos, qvel : numpy.ndarray, shapes (nq,) and (nv,)
+        MuJoCo's generalised position and velocity: the free joint (CO's world ENU position in
+        m, quaternion body FLU -> world; world velocity of CO in m/s, body angular velocity in
+        rad/s), then the rudder and sail hinges (rad, rad/s).
+    idx : numpy.ndarray, shape (4,)
+        (qpos index of the rudder hinge, its dof, qpos index of the sail hinge, its dof).
+    P : numpy.ndarray, shape (P_SIZE,)
+        The boat's parameters as packed by :func:`pack_parameters`, laid out by the P_* indices.
+    columns : numpy.ndarray, shape (5, n)
+        The hull's columns (:func:`~sailmujoco.forces.hydrostatics.submerged_volume`).
+    strips : numpy.ndarray, shape (3, n)
+        The cross-flow strips: body x (m), weights (m), drafts (m)
+        (:func:`~sailmujoco.forces.damping.crossflow_drag`).
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    gust_f, gust_phase, gust_amp, log_z, wander, gust_cos : numpy.ndarray
+        The wind field's tables (:class:`~sailmujoco.forces.wind.WindField`'s
+        ``gust_frequency``, ``gust_phase``, ``gust_amplitude``, ``log_z``, ``wander`` and
+        ``gust_cos``), as for :func:`~sailmujoco.forces.wind_kernels.wind_velocities`.
+    external : numpy.ndarray, shape (6,)
+        An external wrench, body frame about CO, N and N m.
+    terms : numpy.ndarray, shape (len(TERMS), 6)
+        Receives each term's body-frame wrench about CO, N and N m.
+    diag : numpy.ndarray, shape (D_SIZE,)
+        Receives the diagnostics, laid out by the D_* indices.
+    qfrc : numpy.ndarray, shape (nv,)
+        Receives the generalised forces: world force on CO (N), body torque (N m), hinge
+        moments (N m).
+    madd : numpy.ndarray, shape (3, 3)
+        Receives the world-frame translational added-mass block R diag(a1, a2, a3) R^T, kg.
+    mass_csr : numpy.ndarray
+        MuJoCo's sparse mass matrix (``qM``); with ``add_mass`` the hull's added mass is added.
+    csr_addr : numpy.ndarray, shape (9,)
+        Addresses in ``mass_csr`` of the six lower-triangle entries of the translational block
+        ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational diagonal entries.
+    work : numpy.ndarray, shape (WORK_SIZE,)
+        Scratch space, so the kernel allocates nothing.
+    add_mass : bool
+        Whether to add the added mass to ``mass_csr``.
+
+    Returns
+    -------
+    int
+        STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
     """
     for k in range(qpos.shape[0]):
         if not math.isfinite(qpos[k]):

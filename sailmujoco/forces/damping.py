@@ -31,14 +31,36 @@ MIN_REYNOLDS = 1.0e5
 
 @kernel
 def ittc_friction_coefficient(reynolds):
-    """ITTC-1957 friction line C_F = 0.075 / (log10 Re - 2)^2, Wille (2016a) eq. 16."""
+    """ITTC-1957 friction line C_F = 0.075 / (log10 Re - 2)^2, Wille (2016a) eq. 16.
+
+    Parameters
+    ----------
+    reynolds : float
+        Reynolds number, -; held at ``MIN_REYNOLDS`` from below.
+    """
     lr = math.log10(max(reynolds, MIN_REYNOLDS))
     return 0.075 / ((lr - 2.0) * (lr - 2.0))
 
 
 @kernel
 def surge_resistance(u_r, rho, wetted_surface, form_factor, length, nu):
-    """ITTC surge drag force (N), eq. 15: -1/2 rho S_H (1 + k) C_F(Re) |u_r| u_r."""
+    """ITTC surge drag force (N), Wille (2016a) eq. 15: -1/2 rho S_H (1 + k) C_F(Re) |u_r| u_r.
+
+    Parameters
+    ----------
+    u_r : float
+        Surge velocity relative to the water (body x), m/s.
+    rho : float
+        Water density, kg/m^3.
+    wetted_surface : float
+        Wetted surface S_H, m^2.
+    form_factor : float
+        Form factor k, -.
+    length : float
+        Waterline length (the Reynolds number's length), m.
+    nu : float
+        Kinematic viscosity of the water, m^2/s.
+    """
     reynolds = abs(u_r) * length / nu
     cf = ittc_friction_coefficient(reynolds)
     return -0.5 * rho * wetted_surface * (1.0 + form_factor) * cf * abs(u_r) * u_r
@@ -46,7 +68,25 @@ def surge_resistance(u_r, rho, wetted_surface, form_factor, length, nu):
 
 @kernel
 def crossflow_drag(v_r, r, rho, cd, strip_x, strip_w, strip_draft):
-    """Cross-flow drag (sway force, yaw moment), eqs. 17-18, Gauss-Legendre strips along x."""
+    """Cross-flow drag (sway force, yaw moment), Wille (2016a) eqs. 17-18, Gauss-Legendre strips along x.
+
+    Parameters
+    ----------
+    v_r, r : float
+        Sway velocity relative to the water (body y, m/s) and yaw rate (body z, rad/s).
+    rho : float
+        Water density, kg/m^3.
+    cd : float
+        Cross-flow drag coefficient, -.
+    strip_x, strip_w, strip_draft : numpy.ndarray, shape (n,)
+        Gauss-Legendre strips along the hull: body x of each strip (m, forward of CO), its
+        quadrature weight (m) and the hull's draft there (m).
+
+    Returns
+    -------
+    fy, mz : float
+        Body-y force (N) and body-z moment about CO (N m).
+    """
     fy = 0.0
     mz = 0.0
     for k in range(strip_x.shape[0]):
@@ -60,12 +100,27 @@ def crossflow_drag(v_r, r, rho, cd, strip_x, strip_w, strip_draft):
 
 @kernel
 def roll_damping(p, u_r, roll_friction, roll_lift, roll_frequency, length):
-    """Roll damping moment, eq. 19 (Himeno 1981 / Kato friction and lift components).
+    """Roll damping moment about body x (N m), Wille (2016a) eq. 19 (Himeno 1981 / Kato).
 
     The extracted eq. 19 reads B_F0 (L_WL + 4.1 u/(omega L_WL)) p, which adds metres to a
     dimensionless term. Kato's friction damping, which Himeno quotes, is
     B_F = B_F0 (1 + 4.1 u / (omega L)); we use that. |u_r| replaces u_r so that neither
     term turns into negative damping when the boat moves astern.
+
+    Parameters
+    ----------
+    p : float
+        Roll rate (body x), rad/s.
+    u_r : float
+        Surge velocity relative to the water, m/s.
+    roll_friction : float
+        Friction component B_F0, N m s/rad.
+    roll_lift : float
+        Lift component per unit speed, N m s^2/(m rad) (times |u_r| it is N m s/rad).
+    roll_frequency : float
+        Roll natural frequency omega, rad/s.
+    length : float
+        Waterline length L_WL, m.
     """
     speed = abs(u_r)
     b = roll_friction * (1.0 + 4.1 * speed / (roll_frequency * length)) + roll_lift * speed
@@ -74,11 +129,25 @@ def roll_damping(p, u_r, roll_friction, roll_lift, roll_frequency, length):
 
 @kernel
 def vertical_damping(rot, nu, flotation_x, d33, d55, out):
-    """Heave and pitch damping on the vertical motion (module docstring); adds to ``out`` (6,).
+    """Heave and pitch damping on the vertical motion (module docstring); adds to ``out``.
 
-    ``rot`` body->world, ``nu`` = (u, v, w, p, q, r) of the hull (body frame; the current is
-    horizontal, so relative and absolute vertical motion agree), ``flotation_x`` the centre of
-    flotation forward of CO (it lies on the waterline, z = 0). Body-frame wrench about CO.
+    The hull's body velocity is used for the vertical motion: the current is horizontal, so
+    relative and absolute vertical motion agree.
+
+    Parameters
+    ----------
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    nu : numpy.ndarray, shape (6,)
+        (u, v, w, p, q, r) of the hull, body frame, m/s and rad/s.
+    flotation_x : float
+        Centre of flotation forward of CO along body x, m (on the waterline, z = 0).
+    d33 : float
+        Heave damping on dz_F/dt, N s/m.
+    d55 : float
+        Pitch damping on dtheta/dt, N m s/rad.
+    out : numpy.ndarray, shape (6,)
+        The body-frame wrench about CO (N, N m) the damping is added to.
     """
     u, v, w, q, r = nu[0], nu[1], nu[2], nu[4], nu[5]
     r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
@@ -112,12 +181,41 @@ def vertical_damping(rot, nu, flotation_x, d33, d55, out):
 def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu, crossflow_cd,
                  strip_x, strip_w, strip_draft, roll_friction, roll_lift, roll_frequency,
                  flotation_x, body_frame_vertical, out):
-    """Total hull damping wrench (body frame, about CO) into ``out`` (6,).
+    """Total hull damping wrench (body frame, about CO) into ``out``.
 
-    ``nu_r`` = (u, v, w, p, q, r) relative to the water. ``linear`` = (d11, d22, d33, d55, d66):
-    eq. 13 gives d11, d22, d66; heave and pitch (d33, d55) are ours (the papers hold them),
-    acting on the vertical motion (:func:`vertical_damping`), or, with
+    Linear damping (eq. 13) plus ITTC surge resistance (eqs. 15-16), cross-flow drag (eqs.
+    17-18) and roll damping (eq. 19) of Wille (2016a); heave and pitch (d33, d55) are ours (the
+    papers hold them), acting on the vertical motion (:func:`vertical_damping`), or, with
     ``body_frame_vertical``, on body w and q (kept to measure the difference).
+
+    Parameters
+    ----------
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    nu_r : numpy.ndarray, shape (6,)
+        (u, v, w, p, q, r) relative to the water, body frame, m/s and rad/s.
+    rho : float
+        Water density, kg/m^3.
+    linear : numpy.ndarray, shape (5,)
+        (d11, d22, d33, d55, d66): surge and sway (N s/m), heave (N s/m), pitch and yaw
+        (N m s/rad) linear damping; eq. 13 gives d11, d22, d66.
+    wetted_surface, form_factor, length, nu : float
+        S_H (m^2), k (-), waterline length (m) and the water's kinematic viscosity (m^2/s), as
+        for :func:`surge_resistance`.
+    crossflow_cd : float
+        Cross-flow drag coefficient, -.
+    strip_x, strip_w, strip_draft : numpy.ndarray, shape (n,)
+        Gauss-Legendre strips along the hull: body x of each strip (m, forward of CO), its
+        quadrature weight (m) and the hull's draft there (m).
+    roll_friction, roll_lift, roll_frequency : float
+        B_F0 (N m s/rad), the lift component per unit speed (N m s^2/(m rad)) and the roll
+        natural frequency (rad/s), as for :func:`roll_damping`.
+    flotation_x : float
+        Centre of flotation forward of CO, m.
+    body_frame_vertical : bool
+        Heave and pitch damping on body w and q instead of the vertical motion.
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, N and N m.
     """
     u, v, w, p, q, r = nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5]
     fy_cf, mz_cf = crossflow_drag(v, r, rho, crossflow_cd, strip_x, strip_w, strip_draft)

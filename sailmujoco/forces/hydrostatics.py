@@ -24,9 +24,23 @@ from .._jit import kernel
 def submerged_volume(pos_z, rot, columns):
     """(V, Qx, Qy, Qz): submerged volume and its first moment in body coordinates.
 
-    ``rot`` is body->world (3x3), ``columns`` rows = (x, y, area, z_bottom, z_top). Along a
-    column at body (x, y) the world height is pos_z + R20 x + R21 y + R22 z, so it is wet
-    below body z_w = -(pos_z + R20 x + R21 y) / R22 (above it when R22 < 0, upside down).
+    Along a column at body (x, y) the world height is pos_z + R20 x + R21 y + R22 z, so it is
+    wet below body z_w = -(pos_z + R20 x + R21 y) / R22 (above it when R22 < 0, upside down).
+
+    Parameters
+    ----------
+    pos_z : float
+        World height of CO (z up, water plane z = 0), m.
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    columns : numpy.ndarray, shape (5, n)
+        The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top) in m
+        and m^2 (:func:`sailmujoco.hull.column_quadrature`).
+
+    Returns
+    -------
+    vol, qx, qy, qz : float
+        V (m^3) and its first moment about CO along body x, y, z (m^4).
     """
     r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
     vol = 0.0
@@ -65,6 +79,22 @@ def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
 
     F_b = rho g V e_z,b and M_b = Q x F_b / V = rho g (Q x e_z,b), where e_z,b = R^T e_z is the
     world vertical in body axes and Q the first moment of the submerged volume.
+
+    Parameters
+    ----------
+    pos_z : float
+        World height of CO (z up, water plane z = 0), m.
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    columns : numpy.ndarray, shape (5, n)
+        The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top) in m
+        and m^2 (:func:`sailmujoco.hull.column_quadrature`).
+    rho : float
+        Water density, kg/m^3.
+    g : float
+        Gravitational acceleration, m/s^2.
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, N and N m.
     """
     vol, qx, qy, qz = submerged_volume(pos_z, rot, columns)
     ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
@@ -84,6 +114,15 @@ def paper_righting_moment(heel, righting_stiffness, righting_sin_only):
 
     -K sin(phi) cos(phi) (Wille), or -K sin(phi) (Saoud, ``righting_sin_only``), with
     K = rho g V GM_t = m g l_phi.
+
+    Parameters
+    ----------
+    heel : float
+        Heel angle phi, rad (positive starboard down).
+    righting_stiffness : float
+        K = rho g V GM_t, N m/rad.
+    righting_sin_only : bool
+        Saoud's -K sin(phi) instead of Wille's -K sin(phi) cos(phi).
     """
     if righting_sin_only:
         return -righting_stiffness * math.sin(heel)
@@ -95,8 +134,8 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
                     k_pitch, cg_x, cg_z, body_axes, out):
     """Paper-mode restoring wrench (body frame, about CO) into ``out``.
 
-    ``righting_stiffness`` = rho g V GM_t (= m g l_phi). Roll moment -K sin(phi) cos(phi),
-    Wille eq. 20, or -K sin(phi), Saoud eq. 4 (``righting_sin_only``). Pitch: k_pitch sin(theta)
+    Roll moment -K sin(phi) cos(phi), Wille (2016a) eq. 20, or -K sin(phi), Saoud (2015) eq. 4
+    (``righting_sin_only``). Pitch: k_pitch sin(theta)
     (theta > 0 bow up; the moment pushes the bow down). Heave: world-vertical force
     weight - k_heave (z_G - z_G0) through the CG, where z_G is the CG's world height: the reduced
     models hold the CG's height (Saoud writes his equations at G), so a spring on CO's height
@@ -113,6 +152,30 @@ def paper_restoring(pos_z, rot, weight, righting_stiffness, righting_sin_only, k
     instead: heeled and trimmed, that form has a world-vertical (yaw) part,
     +725 N m on the yacht at heel -5 deg, pitch -1 deg, 44 % of the rudder's yaw moment under
     sail; it is kept only to measure that difference.
+
+    Parameters
+    ----------
+    pos_z : float
+        World height of CO (z up, water plane z = 0), m.
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    weight : float
+        The boat's weight m g, N (the buoyancy at the design waterline).
+    righting_stiffness : float
+        K = rho g V GM_t (= m g l_phi), N m/rad.
+    righting_sin_only : bool
+        Saoud's -K sin(phi) instead of Wille's -K sin(phi) cos(phi).
+    k_heave : float
+        Heave spring k_z = rho g A_wp, N/m.
+    k_pitch : float
+        Pitch spring k_theta = rho g V GM_L, N m/rad.
+    cg_x, cg_z : float
+        The CG in the body frame, m; the CG's design world height is ``cg_z`` (CO on the
+        waterline).
+    body_axes : bool
+        Roll and pitch moments about body x and y instead of the level axes x1, y1.
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, N and N m.
     """
     heel = math.atan2(rot[2, 1], rot[2, 2])
     pitch = math.asin(max(-1.0, min(1.0, rot[2, 0])))

@@ -33,7 +33,13 @@ def _exact_product(x, y):
 
 @kernel
 def hypot(x, y):
-    """sqrt(x^2 + y^2), bit for bit as CPython's ``math.hypot(x, y)``."""
+    """sqrt(x^2 + y^2), bit for bit as CPython's ``math.hypot(x, y)``.
+
+    Parameters
+    ----------
+    x, y : float
+        The two legs, any unit (the result has it).
+    """
     x, y = abs(x), abs(y)
     if math.isinf(x) or math.isinf(y):
         return math.inf

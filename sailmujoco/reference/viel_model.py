@@ -161,7 +161,17 @@ def apparent_wind(a_tw: float, psi_tw: float, theta: float, v: float) -> tuple[f
     """Apparent wind (a_aw [m/s], psi_aw [rad]) in the body frame, Viel §2.3.
 
     ``W_c,aw = [a_tw cos(psi_tw - theta) - |v|, a_tw sin(psi_tw - theta)]`` (the paper's
-    ``|v|`` is kept, see the module docstring), ``psi_aw = atan2(W_c,aw)``.
+    ``|v|`` is kept, see the module docstring), ``psi_aw = atan2(W_c,aw)``: where the apparent
+    wind blows towards, ccw from the bow.
+
+    Parameters
+    ----------
+    a_tw, psi_tw : float
+        True wind speed (m/s) and direction psi_tw (where it blows towards, ccw from east, rad).
+    theta : float
+        Heading, ccw from east, rad.
+    v : float
+        Surge speed, m/s.
     """
     wx = a_tw * math.cos(psi_tw - theta) - abs(v)  # Viel §2.3
     wy = a_tw * math.sin(psi_tw - theta)  # Viel §2.3
@@ -180,6 +190,15 @@ def rudder_forces(params: VielParams, v: float, u: float, delta_r: float) -> tup
     eqs. 7-8 as printed (then p5 is in kg/m); the viel_fig3 study reports both. Measured: with
     the printed squares the rudder has no authority once the boat has stopped in the target area
     (g_rv ~ v^2), and the hull wind p1 a_tw^2 turns and pushes it out of the area.
+
+    Parameters
+    ----------
+    params : VielParams
+        Viel's Table 1 parameters and rudder law.
+    v, u : float
+        Surge (forward) and sway (to port) speed, m/s.
+    delta_r : float
+        Rudder angle in Viel's sign, rad, positive trailing edge to starboard.
     """
     return _rudder_forces(params.p5, params.rudder_law == "printed", float(v), float(u), float(delta_r))
 
@@ -213,8 +232,25 @@ def pack_parameters(params: VielParams) -> np.ndarray:
 
 @kernel
 def forces_kernel(P, state, delta_r, delta_s, a_tw, psi_tw, out):
-    """The eq. 4-9 terms into ``out`` in the order of ``FORCE_NAMES`` (see :func:`model_forces`).
-    Returns False where the Python model raised ValueError (theta infinite: math.cos(inf))."""
+    """The Viel eq. 4-9 terms into ``out`` in the order of ``FORCE_NAMES`` (see :func:`model_forces`).
+
+    Returns False where the Python model raised ValueError (theta infinite: math.cos(inf)).
+
+    Parameters
+    ----------
+    P : numpy.ndarray, shape (12,)
+        The parameters as packed by :func:`pack_parameters`, laid out by ``P1`` ... ``PRINTED``.
+    state : array_like, shape (6,)
+        Viel's state (x, y, theta, v, u, omega): world position x east, y north (m), heading
+        theta ccw from east (rad), surge v forward and sway u to port (m/s), yaw rate omega
+        (rad/s, ccw).
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    a_tw, psi_tw : float
+        True wind speed (m/s) and direction psi_tw (where it blows towards, ccw from east, rad).
+    out : numpy.ndarray, shape (9,)
+        Receives the terms, N, N m, m/s and rad as in :func:`model_forces`.
+    """
     theta, v, u, omega = state[2], state[3], state[4], state[5]
     if math.isinf(theta):
         return False
@@ -235,8 +271,27 @@ def forces_kernel(P, state, delta_r, delta_s, a_tw, psi_tw, out):
 
 @kernel
 def rates_kernel(P, state, delta_r, delta_s, a_tw, psi_tw, forces, out):
-    """d/dt (x, y, theta, v, u, omega) into ``out`` (eqs. 1-6); ``forces`` (9,) is work space.
-    Returns False where the Python model raised ValueError (see :func:`forces_kernel`)."""
+    """d/dt (x, y, theta, v, u, omega) into ``out``, Viel eqs. 1-6.
+
+    Returns False where the Python model raised ValueError (see :func:`forces_kernel`).
+
+    Parameters
+    ----------
+    P : numpy.ndarray, shape (12,)
+        The parameters as packed by :func:`pack_parameters`, laid out by ``P1`` ... ``PRINTED``.
+    state : array_like, shape (6,)
+        Viel's state (x, y, theta, v, u, omega): world position x east, y north (m), heading
+        theta ccw from east (rad), surge v forward and sway u to port (m/s), yaw rate omega
+        (rad/s, ccw).
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    a_tw, psi_tw : float
+        True wind speed (m/s) and direction psi_tw (where it blows towards, ccw from east, rad).
+    forces : numpy.ndarray, shape (9,)
+        Work space for :func:`forces_kernel`.
+    out : numpy.ndarray, shape (6,)
+        Receives the rates.
+    """
     theta, v, u, omega = state[2], state[3], state[4], state[5]
     if not forces_kernel(P, state, delta_r, delta_s, a_tw, psi_tw, forces):
         return False
@@ -253,7 +308,36 @@ def rates_kernel(P, state, delta_r, delta_s, a_tw, psi_tw, forces, out):
 @kernel
 def stage_rates(t, y, P, delta_r, delta_s, z, speed10, direction_from, oscillation, frequency, phase,
                 amplitude, log_z, wander_dt, wander, work, out):
-    """:func:`rates_kernel` in the wind at time ``t``, height ``z`` (``work``: (2, 9))."""
+    """:func:`rates_kernel` in the wind at time ``t``, height ``z``.
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    y : numpy.ndarray, shape (6,)
+        The state, as ``state`` of :func:`rates_kernel`.
+    P : numpy.ndarray, shape (12,)
+        The parameters as packed by :func:`pack_parameters`, laid out by ``P1`` ... ``PRINTED``.
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    z : float
+        Height above the water where the wind is taken, m.
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+    work : numpy.ndarray, shape (2, 9) or more rows
+        Work space: row 0 the world wind (ENU, m/s), row 1 the force terms.
+    out : numpy.ndarray, shape (6,)
+        Receives the rates.
+    """
     wind = work[0]
     wind_velocity(t, z, speed10, direction_from, oscillation, frequency, phase, amplitude, log_z, wander_dt,
                   wander, wind)
@@ -264,8 +348,40 @@ def stage_rates(t, y, P, delta_r, delta_s, z, speed10, direction_from, oscillati
 @kernel
 def advance(t0, y, dt, n, P, delta_r, delta_s, z, speed10, direction_from, oscillation, frequency, phase,
             amplitude, log_z, wander_dt, wander, work):
-    """``n`` RK4 steps of ``dt / n`` of eqs. 1-9 from (t0, y), y in place, in the wind of
-    :func:`stage_rates`; returns a status of :mod:`.integrators`. ``work``: (7, 9)."""
+    """``n`` RK4 steps of ``dt / n`` of Viel eqs. 1-9 from (t0, y), y in place.
+
+    In the wind of :func:`stage_rates`; returns a status of :mod:`.integrators`.
+
+    Parameters
+    ----------
+    t0 : float
+        Start time, s.
+    y : numpy.ndarray, shape (6,)
+        The state, as ``state`` of :func:`rates_kernel`; advanced in place.
+    dt : float
+        The time to advance, s.
+    n : int
+        Number of RK4 steps.
+    P : numpy.ndarray, shape (12,)
+        The parameters as packed by :func:`pack_parameters`, laid out by ``P1`` ... ``PRINTED``.
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    z : float
+        Height above the water where the wind is taken, m.
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+    work : numpy.ndarray, shape (7, 9)
+        Work space (rows 0-1 for :func:`stage_rates`, 2-6 for k1..k4 and a stage's state).
+    """
     h = dt / n
     k1, k2, k3, k4, ys = work[2], work[3], work[4], work[5], work[6]
     wind = (z, speed10, direction_from, oscillation, frequency, phase, amplitude, log_z, wander_dt, wander)
@@ -288,11 +404,27 @@ def advance(t0, y, dt, n, P, delta_r, delta_s, z, speed10, direction_from, oscil
 
 def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
                  psi_tw: float) -> dict:
-    """The force terms of eqs. 4-9 (Viel signs), N and N m.
+    """The force terms of Viel eqs. 4-9 (Viel signs), N and N m.
 
-    Returns a dict with ``g_s``, ``g_rv``, ``g_ru`` (eqs. 7-9), ``a_aw``, ``psi_aw``, and the
-    right-hand sides ``surge`` (= p9 dv/dt, eq. 4), ``sway`` (= p9 du/dt, eq. 5),
-    ``yaw`` (= p10 domega/dt, eq. 6).
+    Parameters
+    ----------
+    params : VielParams
+        Viel's Table 1 parameters and rudder law.
+    state : array_like, shape (6,)
+        Viel's state (x, y, theta, v, u, omega): world position x east, y north (m), heading
+        theta ccw from east (rad), surge v forward and sway u to port (m/s), yaw rate omega
+        (rad/s, ccw).
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    a_tw, psi_tw : float
+        True wind speed (m/s) and direction psi_tw (where it blows towards, ccw from east, rad).
+
+    Returns
+    -------
+    dict
+        ``g_s``, ``g_rv``, ``g_ru`` (eqs. 7-9, N), ``a_aw`` (m/s), ``psi_aw`` (rad),
+        ``hull_wind`` (N), and the right-hand sides ``surge`` (= p9 dv/dt, eq. 4), ``sway``
+        (= p9 du/dt, eq. 5), ``yaw`` (= p10 domega/dt, eq. 6).
     """
     out = np.empty(len(FORCE_NAMES))
     if not forces_kernel(pack_parameters(params), np.asarray(state, dtype=float), float(delta_r),
@@ -303,7 +435,21 @@ def model_forces(params: VielParams, state, delta_r: float, delta_s: float, a_tw
 
 def model_rates(params: VielParams, state, delta_r: float, delta_s: float, a_tw: float,
                 psi_tw: float) -> np.ndarray:
-    """d/dt (x, y, theta, v, u, omega), Viel eqs. 1-6 (Viel signs for delta_r, delta_s)."""
+    """d/dt (x, y, theta, v, u, omega), Viel eqs. 1-6 (Viel signs for delta_r, delta_s).
+
+    Parameters
+    ----------
+    params : VielParams
+        Viel's Table 1 parameters and rudder law.
+    state : array_like, shape (6,)
+        Viel's state (x, y, theta, v, u, omega): world position x east, y north (m), heading
+        theta ccw from east (rad), surge v forward and sway u to port (m/s), yaw rate omega
+        (rad/s, ccw).
+    delta_r, delta_s : float
+        Rudder and sail angles in Viel's sign, rad, positive trailing edge to starboard.
+    a_tw, psi_tw : float
+        True wind speed (m/s) and direction psi_tw (where it blows towards, ccw from east, rad).
+    """
     out = np.empty(6)
     if not rates_kernel(pack_parameters(params), np.asarray(state, dtype=float), float(delta_r),
                         float(delta_s), float(a_tw), float(psi_tw), np.empty(len(FORCE_NAMES)), out):

@@ -44,8 +44,18 @@ TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriol
 
 
 def pack_parameters(p, switches, model: str) -> np.ndarray:
-    """The flat float64 array the kernels read: boat ``p`` (BoatParams), ``switches``
-    (ForceSwitches fields, 1.0 on), ``model`` ("rigid": 1.0)."""
+    """The flat float64 array the kernels read, laid out by the indices of this module.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat (SI; positions body FLU, converted here to the paper's lever arms l1..l4,
+        h1..h3).
+    switches : ForceSwitches
+        Which force terms are on (1.0 on).
+    model : str
+        ``"paper"`` or ``"rigid"`` (the ``RIGID`` entry 1.0).
+    """
     d11, d22, _, _, d66 = p.linear_damping
     values = {
         MASS: p.mass, IXX: p.inertia[0], IYY: p.inertia[1], IZZ: p.inertia[2],
@@ -78,8 +88,20 @@ def pack_parameters(p, switches, model: str) -> np.ndarray:
 
 @kernel
 def ran_away(state, P):
-    """True where the Python model raised ValueError: math.cos or math.sin of an infinite angle
-    (heel, heading, and the rudder and sail angles where those forces act)."""
+    """True where the Python model raised ValueError.
+
+    That is: math.cos or math.sin of an infinite angle (heel, heading, and the rudder and sail
+    angles where those forces act).
+
+    Parameters
+    ----------
+    state : numpy.ndarray, shape (10,)
+        The paper's state (x, y, phi, psi, u, v, p, r, sigma, lam): NED position (m), heel and
+        heading (rad), FRD velocities (m/s, rad/s), rudder and sail angles (rad)
+        (:data:`sailmujoco.reference.wille.STATE`).
+    P : numpy.ndarray, shape (N_PARAMETERS,)
+        The boat and switches as packed by :func:`pack_parameters`, laid out by its indices.
+    """
     return (math.isinf(state[2]) or math.isinf(state[3]) or (P[ON_SAIL] != 0.0 and math.isinf(state[9]))
             or (P[ON_RUDDER] != 0.0 and math.isinf(state[8])))
 
@@ -87,8 +109,41 @@ def ran_away(state, P):
 @kernel
 def sail_flow(t, state, P, lam_d, wind, speed10, direction_from, oscillation, frequency, phase, amplitude,
               log_z, wander_dt, wander):
-    """V_ws, the air velocity relative to the sail CE in FRD, eq. 26 (wind at eq. 42's height);
-    ``wind`` (3,) receives the world wind there."""
+    """V_ws, the air velocity relative to the sail CE in FRD, Wille (2016a) eq. 26.
+
+    The wind is taken at eq. 42's height, h1 cos(phi).
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    state : numpy.ndarray, shape (10,)
+        The paper's state (x, y, phi, psi, u, v, p, r, sigma, lam): NED position (m), heel and
+        heading (rad), FRD velocities (m/s, rad/s), rudder and sail angles (rad)
+        (:data:`sailmujoco.reference.wille.STATE`).
+    P : numpy.ndarray, shape (N_PARAMETERS,)
+        The boat and switches as packed by :func:`pack_parameters`, laid out by its indices.
+    lam_d : float
+        Commanded sail angle, rad (the sail's rate is its lag toward it).
+    wind : numpy.ndarray, shape (3,)
+        Receives the world wind at the CE, ENU, m/s.
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+
+    Returns
+    -------
+    vws_u, vws_v : float
+        The FRD (x, y) components, m/s.
+    """
     phi, psi, u, v, pr, r, lam = state[2], state[3], state[4], state[5], state[6], state[7], state[9]
     cphi, cpsi, spsi = math.cos(phi), math.cos(psi), math.sin(psi)
     wind_velocity(t, P[H1] * cphi, speed10, direction_from, oscillation, frequency, phase, amplitude, log_z,
@@ -107,10 +162,51 @@ def sail_flow(t, state, P, lam_d, wind, speed10, direction_from, oscillation, fr
 def force_terms(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draft, alpha_grid,
                 log_re_grid, cl_table, cd_table, current, speed10, direction_from, oscillation, frequency,
                 phase, amplitude, log_z, wander_dt, wander, work, out):
-    """Every (X, Y, K, N, M) term in FRD at (t, state) into ``out`` (len(TERMS), 5), rows in the
-    order of ``TERMS``, signs as on the right of eq. 3 (M, the pitch moment, is not in the paper's
-    model; only ``model="rigid"`` uses it). ``work``: (7, 6). Returns False where the Python model
-    raised (:func:`ran_away`), with ``out`` untouched."""
+    """Every (X, Y, K, N, M) term in FRD at (t, state) into ``out``, Wille (2016a) eqs. 3-36.
+
+    Rows in the order of ``TERMS``, signs as on the right of eq. 3 (M, the pitch moment, is not
+    in the paper's model; only ``model="rigid"`` uses it). Returns False where the Python model
+    raised (:func:`ran_away`), with ``out`` untouched.
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    state : numpy.ndarray, shape (10,)
+        The paper's state (x, y, phi, psi, u, v, p, r, sigma, lam): NED position (m), heel and
+        heading (rad), FRD velocities (m/s, rad/s), rudder and sail angles (rad)
+        (:data:`sailmujoco.reference.wille.STATE`).
+    P : numpy.ndarray, shape (N_PARAMETERS,)
+        The boat and switches as packed by :func:`pack_parameters`, laid out by its indices.
+    sigma_d, lam_d : float
+        Commanded rudder and sail angles, rad (the actuators lag toward them, §2.1).
+    external : numpy.ndarray, shape (4,)
+        External (X, Y, K, N), FRD, N and N m.
+    a : numpy.ndarray, shape (6,)
+        Positive diagonal added masses (-X_udot, ..., -N_rdot), kg and kg m^2.
+    strip_x, strip_w, strip_draft : numpy.ndarray, shape (n,)
+        Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
+        (:func:`sailmujoco.forces.damping.crossflow_drag`).
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+    current : numpy.ndarray, shape (3,)
+        The current, world ENU, m/s (where the water goes).
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+    work : numpy.ndarray, shape (7, 6)
+        Work space.
+    out : numpy.ndarray, shape (len(TERMS), 5)
+        Receives the terms, N and N m.
+    """
     if ran_away(state, P):
         return False
     phi, psi, u, v, pr, r, sigma, lam = (state[2], state[3], state[4], state[5], state[6], state[7], state[8],
@@ -188,9 +284,53 @@ def force_terms(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, stri
 def rates(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draft, alpha_grid, log_re_grid,
           cl_table, cd_table, current, speed10, direction_from, oscillation, frequency, phase, amplitude,
           log_z, wander_dt, wander, mass_matrix, mass_inverse, terms, work, out):
-    """d/dt of the state (eqs. 3-4 and the actuator lags) into ``out`` (10,); ``terms``
-    (len(TERMS), 5) and ``work`` (7, 6) are work space. Returns False where the Python model
-    raised (:func:`ran_away`)."""
+    """d/dt of the state (Wille (2016a) eqs. 3-4 and the actuator lags) into ``out``.
+
+    Returns False where the Python model raised (:func:`ran_away`).
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    state : numpy.ndarray, shape (10,)
+        The paper's state (x, y, phi, psi, u, v, p, r, sigma, lam): NED position (m), heel and
+        heading (rad), FRD velocities (m/s, rad/s), rudder and sail angles (rad)
+        (:data:`sailmujoco.reference.wille.STATE`).
+    P : numpy.ndarray, shape (N_PARAMETERS,)
+        The boat and switches as packed by :func:`pack_parameters`, laid out by its indices.
+    sigma_d, lam_d : float
+        Commanded rudder and sail angles, rad (the actuators lag toward them, §2.1).
+    external : numpy.ndarray, shape (4,)
+        External (X, Y, K, N), FRD, N and N m.
+    a : numpy.ndarray, shape (6,)
+        Positive diagonal added masses (-X_udot, ..., -N_rdot), kg and kg m^2.
+    strip_x, strip_w, strip_draft : numpy.ndarray, shape (n,)
+        Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
+        (:func:`sailmujoco.forces.damping.crossflow_drag`).
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+    current : numpy.ndarray, shape (3,)
+        The current, world ENU, m/s (where the water goes).
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+    mass_matrix, mass_inverse : numpy.ndarray, shape (4, 4)
+        M_RB + M_A of eq. 3 over (u, v, p, r) and its inverse.
+    terms : numpy.ndarray, shape (len(TERMS), 5)
+        Work space for :func:`force_terms`.
+    work : numpy.ndarray, shape (7, 6)
+        Work space.
+    out : numpy.ndarray, shape (10,)
+        Receives the rates.
+    """
     if not force_terms(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draft, alpha_grid,
                        log_re_grid, cl_table, cd_table, current, speed10, direction_from, oscillation,
                        frequency, phase, amplitude, log_z, wander_dt, wander, work, terms):
@@ -248,8 +388,53 @@ def rates(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draf
 def advance(t0, y, dt, n, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draft, alpha_grid,
             log_re_grid, cl_table, cd_table, current, speed10, direction_from, oscillation, frequency, phase,
             amplitude, log_z, wander_dt, wander, mass_matrix, mass_inverse, terms, work, stages):
-    """``n`` RK4 steps of ``dt / n`` from (t0, y), y in place; returns a status of
-    :mod:`.integrators`. ``stages``: (5, 10) work space for k1..k4 and a stage's state."""
+    """``n`` RK4 steps of ``dt / n`` from (t0, y), y in place; returns a status of :mod:`.integrators`.
+
+    Parameters
+    ----------
+    t0 : float
+        Start time, s.
+    y : numpy.ndarray, shape (10,)
+        The state, as ``state`` of :func:`rates`; advanced in place.
+    dt : float
+        The time to advance, s.
+    n : int
+        Number of RK4 steps.
+    P : numpy.ndarray, shape (N_PARAMETERS,)
+        The boat and switches as packed by :func:`pack_parameters`, laid out by its indices.
+    sigma_d, lam_d : float
+        Commanded rudder and sail angles, rad (the actuators lag toward them, §2.1).
+    external : numpy.ndarray, shape (4,)
+        External (X, Y, K, N), FRD, N and N m.
+    a : numpy.ndarray, shape (6,)
+        Positive diagonal added masses (-X_udot, ..., -N_rdot), kg and kg m^2.
+    strip_x, strip_w, strip_draft : numpy.ndarray, shape (n,)
+        Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
+        (:func:`sailmujoco.forces.damping.crossflow_drag`).
+    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+    current : numpy.ndarray, shape (3,)
+        The current, world ENU, m/s (where the water goes).
+    speed10, direction_from : float
+        Mean wind speed at 10 m (m/s) and the compass bearing it comes from (rad).
+    oscillation : numpy.ndarray, shape (3,)
+        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
+    frequency, phase, amplitude, log_z : numpy.ndarray
+        The gust tables of :class:`~sailmujoco.forces.wind.WindField`: f_k (Hz), Y_k (rad), the
+        amplitudes sqrt(2 S df) (m/s), shape (m, n), at the heights whose ln (m) is ``log_z`` (m,).
+    wander_dt : float
+        Time step of ``wander``, s.
+    wander : numpy.ndarray
+        The direction wander (rad) at ``k wander_dt`` seconds (Wille (2016a) eq. 43).
+    mass_matrix, mass_inverse : numpy.ndarray, shape (4, 4)
+        M_RB + M_A of eq. 3 over (u, v, p, r) and its inverse.
+    terms : numpy.ndarray, shape (len(TERMS), 5)
+        Work space for :func:`force_terms`.
+    work : numpy.ndarray, shape (7, 6)
+        Work space.
+    stages : numpy.ndarray, shape (5, 10)
+        Work space for k1..k4 and a stage's state.
+    """
     h = dt / n
     k1, k2, k3, k4, ys = stages[0], stages[1], stages[2], stages[3], stages[4]
     model = (P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draft, alpha_grid, log_re_grid, cl_table,

@@ -56,7 +56,15 @@ def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
 
 @dataclass
 class Report:
-    """A Markdown report: paragraphs, tables of paper vs ours, figures."""
+    """A Markdown report: paragraphs, tables of paper vs ours, figures.
+
+    Parameters
+    ----------
+    title : str
+        The report's title (its first heading).
+    parts : list of str
+        The Markdown blocks added so far, in order (empty to start).
+    """
 
     title: str
     parts: list = field(default_factory=list)
