@@ -12,6 +12,7 @@ from sailmujoco.study import Runs
 from ..kit.wille import TABLE1_DURATION, TABLE1_SMOKE_DURATION, TABLE1_WIND
 
 NAME = "assumptions"
+TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
 
 ABOUT = """Scenarios
     * the wind plane: true wind 2-14 m/s x true wind angle 30-180 deg, steady wind, heading held

@@ -44,6 +44,9 @@ from ..kit.saoud import (
 
 NAME = "saoud_fig6"
 TITLE = "Saoud (2015) Fig. 6: speed and roll over time, optimal sail S vs Briere's Bm"
+# the scenario `sailmujoco study saoud_fig6 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "speed_trial", "controller": "saoud", "seconds": 60.0,
+         "boat_options": {"l_phi": 1.0}}
 WORLD_NAMES = {"paper": "paper world (4-DOF reduced model)", "mujoco": "MuJoCo 6-DOF"}
 SEGMENTS = tuple((start, angle, end) for (start, angle), end in
                  zip(SpeedTrial.segments, [t for t, _ in SpeedTrial.segments[1:]] + [SpeedTrial.duration],

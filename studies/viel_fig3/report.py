@@ -27,6 +27,7 @@ from .scenario import (
     PAPER_DT,
     PAPER_MAX_M,
     PAPER_P5,
+    TITLE,
     TRAJECTORY_RATE,
     VARIANT_LABELS,
     VIEL_LENGTH,
@@ -35,7 +36,7 @@ from .scenario import (
 )
 
 
-def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
+def report(analysis: Analysis, smoke: bool) -> str:
     """The Markdown of report.md.
 
     Parameters
@@ -44,10 +45,8 @@ def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
         The study's numbers.
     smoke : bool
         The study's short pass (said in the title).
-    title : str
-        The study's title (its heading).
     """
-    r = Report(title + (" (smoke)" if smoke else ""))
+    r = Report(TITLE + (" (smoke)" if smoke else ""))
     r.paragraph(ABOUT)
     numbers = headline(analysis)
     _bound(r, analysis, numbers)

@@ -15,6 +15,7 @@ from sailmujoco.params import get_boat
 from sailmujoco.study import Runs
 
 NAME = "viel_fig3"
+TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, four worlds"
 # the scenario `sailmujoco study viel_fig3 --video` films
 VIDEO = {"boat": "saoud_robot", "task": "position_keeping", "controller": "viel",
          "seconds": 120.0, "camera": "top", "case": 2}

@@ -30,8 +30,12 @@ from sailmujoco.study import Runs
 from ..kit.wille import make_env
 
 NAME = "wille_course_table2"
+TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 CONTROL_TIMESTEP = 0.02  # s, 50 Hz (see the module docstring)
+# the scenario `sailmujoco study wille_course_table2 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "course_hold", "controller": "wille_course",
+         "seconds": 60.0, "camera": "top", "control_timestep": CONTROL_TIMESTEP}
 DURATION = 200.0  # s, §4
 SMOKE_DURATION = 30.0  # s
 PAPER_TABLE2 = {  # Table 2: x = east (cross-track, m), y = north (m), error (deg)

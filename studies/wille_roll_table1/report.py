@@ -22,19 +22,18 @@ from .scenario import (
     SIM_LABELS,
     SIMS,
     SWITCH_SIMS,
+    TITLE,
     WORLDS,
     paper_sim,
 )
 from .scenario import __doc__ as SCENARIO
 
 
-def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
-    """The Markdown of report.md (the study's report is this with its title bound).
+def report(analysis: Analysis, smoke: bool) -> str:
+    """The Markdown of report.md.
 
     Parameters
     ----------
-    title : str
-        The heading.
     analysis : Analysis
         The study's numbers.
     smoke : bool
@@ -46,7 +45,7 @@ def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
         The report.
     """
     a, r = analysis, analysis.runs
-    text = Report(title)
+    text = Report(TITLE)
     text.paragraph(SCENARIO.split("\n\n", 1)[1])
     n_sweep = sum(len(t) for t in a.tables.values())
     text.paragraph(

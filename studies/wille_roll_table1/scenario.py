@@ -50,6 +50,10 @@ from ..kit.wille import (
 )
 
 NAME = "wille_roll_table1"
+TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"
+# the scenario `sailmujoco study wille_roll_table1 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "beam_reach_roll", "controller": "wille_roll",
+         "seconds": 60.0, "controller_options": {"wind": "perfect"}}
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 SIMS = TABLE1_SIMS  # the simulations: options of the registered "wille_roll" controller
 SWITCH_SIMS = ("sim1", "sim1_mean", "sim2", "sim3")  # the simulations each switch reruns
