@@ -30,6 +30,7 @@ from ..kit import run_episode
 from ..kit.saoud import (
     BOAT,
     L_PHI,
+    PHI_MAX_DEG,
     TRUE_WIND,
     WIND_SOURCE,
     WORLDS,
@@ -52,7 +53,7 @@ SEGMENTS = tuple((start, angle, end) for (start, angle), end in
                  zip(SpeedTrial.segments, [t for t, _ in SpeedTrial.segments[1:]] + [SpeedTrial.duration],
                      strict=True))
 ANGLES_DEG = tuple(a for _, a, _ in SEGMENTS)  # ∠v_w^B of the three segments
-LAWS = {"S": "Saoud optimal sail, $\\phi_{max}$ = 30°", "Bm": "Briere/IBOAT trimming (Fig. 5)"}
+LAWS = {"S": f"Saoud optimal sail, $\\phi_{{max}}$ = {PHI_MAX_DEG:g}°", "Bm": "Briere/IBOAT trimming (Fig. 5)"}
 FACTORIES = {("S", "saoud_v"): saoud_law, ("Bm", "saoud_v"): briere_law,
              ("S", "ce"): saoud_law_ce, ("Bm", "ce"): briere_law_ce,
              ("S", "masthead"): saoud_law_masthead, ("Bm", "masthead"): briere_law_masthead}

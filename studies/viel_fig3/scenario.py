@@ -49,7 +49,7 @@ LABELS = {"paper": "paper world (Viel 3-DOF)", "viel_boat": "viel_boat (6-DOF, T
 SWEPT = ("paper", "wille_yacht", "saoud_robot")  # sweep runs; viel_boat runs through
 # switches.simulate, which also samples what the boat does (speed, apparent wind, rudder, heel, mode)
 VARIANT_LABELS = {
-    "baseline": "as the paper (dt 0.01 s, eqs. 7-8 linear in speed)",
+    "baseline": f"as the paper (dt {PAPER_DT:g} s, eqs. 7-8 linear in speed)",
     "dt_0.1": "control period 0.1 s (the suite's)",
     "no_hull_wind": "p1 = 0 (no hull-wind term)",
     "printed_rudder": "eqs. 7-8 as printed (p5 v² sin δr)",

@@ -37,6 +37,7 @@ CONTROL_TIMESTEP = 0.02  # s, 50 Hz (see the module docstring)
 VIDEO = {"boat": "wille_yacht", "task": "course_hold", "controller": "wille_course",
          "seconds": 60.0, "camera": "top", "control_timestep": CONTROL_TIMESTEP}
 DURATION = 200.0  # s, §4
+PAPER_WIND = (5.0, 130.0)  # §4: U10 [m/s] and beta_w [deg], the direction the wind blows to
 SMOKE_DURATION = 30.0  # s
 PAPER_TABLE2 = {  # Table 2: x = east (cross-track, m), y = north (m), error (deg)
     "heading": {"east": 32.9, "north": 583.1, "error_deg": 3.23},

@@ -19,6 +19,7 @@ from .scenario import (
     PAPER_TABLE1,
     QUANTITIES,
     SAIL_FACTOR,
+    SHARES_WIND,
     SIM_LABELS,
     SIMS,
     SWITCH_SIMS,
@@ -74,7 +75,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     text.figure(FIGURES["5"], "Fig. 5: roll angle φ, all simulations (last 50 s)")
     text.figure(FIGURES["6"], "Fig. 6: roll rate p, simulations 1 and 2")
     text.figure(FIGURES["7"], "Fig. 7: roll rate p, simulations 2 and 3")
-    text.paragraph("## Fig. 3: moment shares in roll (beam reach, U10 = 5 m/s, roll control off)")
+    text.paragraph(f"## Fig. 3: moment shares in roll (beam reach, U10 = {SHARES_WIND:g} m/s, roll control off)")
     text.comparison(_share_rows(a))
     text.figure(FIGURES["3"], "Fig. 3: roll moments of each force term")
     text.paragraph("## Fig. 8: top surge speed against φ_d")
