@@ -177,12 +177,6 @@ def time_constants() -> dict:
     return out
 
 
-def _surge_drag(physics, speed):
-    physics._compute_forces()
-    total = physics.force_term("damping")[0] + physics.force_term("keel")[0] + physics.force_term("rudder")[0]
-    return -float(total)
-
-
 def _surge_drag(physics) -> float:
     """The surge force [N] that holds the boat's speed: minus hull, keel and rudder drag now."""
     total = physics.force_term("damping")[0] + physics.force_term("keel")[0] + physics.force_term("rudder")[0]
