@@ -134,6 +134,15 @@ def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monke
     assert [c["resume"] for c in calls] == [False, False] and calls[0]["engine"].serial
 
 
+def test_an_entry_point_that_names_no_study_is_refused(monkeypatch, tmp_path):
+    def run(out):  # a function, not a declared Study
+        return {}
+    entry = SimpleNamespace(load=lambda: run, module=__name__)
+    monkeypatch.setattr(study_runner, "studies", lambda: {"plain": entry})
+    with pytest.raises(TypeError, match="not a sailmujoco.study.Study"):
+        study_runner.run_studies(["plain"], tmp_path, workers=1, progress=False)
+
+
 WALL = re.compile(r"\d+(\.\d+)? s\b|wall|took")
 
 
