@@ -7,9 +7,9 @@ pool (:class:`sailmujoco.sweep.Engine`); a finished study leaves a marker (``don
 study, smoke or not, the digest of the code) beside its report, and ``--resume`` keeps the
 studies whose marker matches and runs only the missing simulations of the others.
 
-An entry point may also name a study module's ``run(out, smoke, workers, progress, video,
-engine, resume) -> dict`` function, the form of a study written as one script; it runs on the
-same pool, with the same markers.
+A study's title and the scenario ``--video`` films are its :class:`~sailmujoco.study.Study`'s
+``title`` and ``video``; ``--help`` reads the titles from the studies' sources, without
+importing them, so it stays fast.
 """
 
 from __future__ import annotations
@@ -36,8 +36,8 @@ def studies() -> dict:
     Returns
     -------
     dict
-        name -> its entry point (``load()`` gives the :class:`~sailmujoco.study.Study`, or the
-        ``run`` function of a study written as one script; ``module`` names its module).
+        name -> its entry point (``load()`` gives the :class:`~sailmujoco.study.Study`;
+        ``module`` names its module).
     """
     from importlib import metadata
 
@@ -78,9 +78,9 @@ def select(name: str) -> list[str]:
 
 
 def _source_title(path: Path) -> str:
-    """The title a study's source declares: ``title=`` of its ``Study(...)`` (a string, or the
-    name of a string assigned in the module or in a sibling module it imports it from) or a
-    module-level ``TITLE``; "" when none is a constant."""
+    """The title a study's source declares: ``title=`` of its ``STUDY = Study(...)`` (a string,
+    or the name of a string assigned in the module or in a sibling module it imports it from);
+    "" when it is none of these."""
     constants, imported, title = {}, {}, None
     for node in ast.parse(path.read_text(encoding="utf-8")).body:
         if isinstance(node, ast.ImportFrom) and node.level == 1 and node.module:
@@ -101,7 +101,7 @@ def _source_title(path: Path) -> str:
         sibling, name = imported[title.id]
         if sibling.is_file():
             return _constant(sibling, name)
-    return str(constants.get("TITLE", ""))
+    return ""
 
 
 def _constant(path: Path, name: str) -> str:
@@ -219,8 +219,8 @@ def record_video(scenario, out: Path, smoke: bool) -> None:
     print(f"      video: {recording.path}")
 
 
-def run_one(entry, out: Path, engine, *, smoke: bool = False, workers: int | None = None,
-            progress: bool = True, video: bool = False, resume: bool = False) -> dict:
+def run_one(entry, out: Path, engine, *, smoke: bool = False, progress: bool = True,
+            video: bool = False, resume: bool = False) -> dict:
     """Run one registered study into ``out`` (and film it with ``video``); its headline numbers.
 
     Parameters
@@ -233,29 +233,27 @@ def run_one(entry, out: Path, engine, *, smoke: bool = False, workers: int | Non
         The worker pool.
     smoke : bool
         The study's short pass.
-    workers : int, optional
-        The ``--workers`` given (a ``run`` function's own pool when it is given no engine).
     progress : bool
         Show progress on stderr.
     video : bool
         Also film the study's main scenario.
     resume : bool
         Run only the simulations not stored in ``out`` yet.
-    """
-    import importlib
 
-    from .study import Study, run_study
+    Raises
+    ------
+    TypeError
+        When the entry point names something that is not a :class:`~sailmujoco.study.Study`.
+    """
+    from . import study
 
     loaded = entry.load()
-    if isinstance(loaded, Study):
-        headline = run_study(loaded, out, engine, smoke=smoke, resume=resume, progress=progress)
-        scenario = loaded.video
-    else:
-        headline = loaded(out, smoke=smoke, workers=workers, progress=progress, video=video,
-                          engine=engine, resume=resume)
-        scenario = getattr(importlib.import_module(entry.module), "VIDEO", None) if video else None
+    if not isinstance(loaded, study.Study):
+        raise TypeError(f"the study entry point in {entry.module} names a {type(loaded).__name__}, "
+                        "not a sailmujoco.study.Study")
+    headline = study.run_study(loaded, out, engine, smoke=smoke, resume=resume, progress=progress)
     if video:
-        record_video(scenario, out, smoke)
+        record_video(loaded.video, out, smoke)
     return headline
 
 
@@ -313,8 +311,8 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
             print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''} -> {out}"
                   + (" (resumed)" if resume else "") + note, flush=True)
             (out / DONE_MARKER).unlink(missing_ok=True)
-            headline = run_one(found[name], out, engine, smoke=smoke, workers=workers,
-                               progress=progress, video=video, resume=resume)
+            headline = run_one(found[name], out, engine, smoke=smoke, progress=progress,
+                               video=video, resume=resume)
             (out / DONE_MARKER).write_text(json.dumps(held, indent=1) + "\n")
             took[name] = time.perf_counter() - t0
             print(f"      done in {took[name]:.0f} s: {headline_line(headline)}", flush=True)

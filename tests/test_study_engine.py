@@ -14,7 +14,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sailmujoco import cli, study_runner, sweep
+from sailmujoco import cli, study, study_runner, sweep
 from sailmujoco.study import Results, Runs, Study, run_study
 
 HERE = f"{Path(__file__).stem}"
@@ -80,20 +80,35 @@ def test_a_failing_job_is_named_and_the_finished_ones_stay_stored(tmp_path):
         sweep.run_jobs("no_such_module:f", jobs, tmp_path / "store", progress=False)
 
 
-def _fake_study(calls: list, interrupt: bool = False):
-    def run(out, smoke=False, workers=None, progress=True, video=False, engine=None, resume=False):
-        calls.append({"out": Path(out).name, "engine": engine, "resume": resume})
+def _fake_study(name: str, interrupt: bool = False):
+    """The entry point of a declared study that simulates nothing (Ctrl-C in its analysis with
+    ``interrupt``)."""
+    def analyse(results, smoke):
         if interrupt:
             raise KeyboardInterrupt
-        (Path(out) / "report.md").write_text("# fake\n")
-        return {"answer": 42}
-    return SimpleNamespace(load=lambda: run, module=__name__)
+
+    fake = Study(name=name, title=f"The {name} study", runs=lambda smoke: Runs(), analyse=analyse,
+                 write=lambda analysis, out: None, report=lambda analysis, smoke: "# fake\n",
+                 headline=lambda analysis: {"answer": 42})
+    return SimpleNamespace(load=lambda: fake, module=__name__)
+
+
+def _record_runs(monkeypatch, calls: list) -> None:
+    """Record the folder, engine and resume flag of every study's runs (:func:`study.execute`)."""
+    execute = study.execute
+
+    def recorded(runs, out, engine, **options):
+        calls.append({"out": Path(out).name, "engine": engine, "resume": options.get("resume", False)})
+        return execute(runs, out, engine, **options)
+
+    monkeypatch.setattr(study, "execute", recorded)
 
 
 def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monkeypatch, tmp_path):
     calls = []
-    studies = {"first": _fake_study(calls), "second": _fake_study(calls, interrupt=True)}
+    studies = {"first": _fake_study("first"), "second": _fake_study("second", interrupt=True)}
     monkeypatch.setattr(study_runner, "studies", lambda: studies)
+    _record_runs(monkeypatch, calls)
     argv = ["study", "all", "--smoke", "--out", str(tmp_path), "--no-progress"]
     assert cli.main(argv) == cli.INTERRUPTED  # Ctrl-C in the second study
     assert [c["out"] for c in calls] == ["first", "second"]
@@ -102,7 +117,7 @@ def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monke
     marker = json.loads((tmp_path / "first" / "done.json").read_text())
     assert marker["study"] == "first" and marker["smoke"] is True and len(marker["code"]) == 16
     assert not (tmp_path / "second" / "done.json").exists()
-    studies["second"] = _fake_study(calls)
+    studies["second"] = _fake_study("second")
     calls.clear()
     assert cli.main(argv + ["--resume"]) == 0
     assert [(c["out"], c["resume"]) for c in calls] == [("second", True)]  # the first is kept
@@ -117,6 +132,15 @@ def test_study_all_shares_one_engine_and_resume_skips_the_finished_studies(monke
     calls.clear()
     assert cli.main(argv + ["--workers", "1"]) == 0  # no resume: both again, in this process
     assert [c["resume"] for c in calls] == [False, False] and calls[0]["engine"].serial
+
+
+def test_an_entry_point_that_names_no_study_is_refused(monkeypatch, tmp_path):
+    def run(out):  # a function, not a declared Study
+        return {}
+    entry = SimpleNamespace(load=lambda: run, module=__name__)
+    monkeypatch.setattr(study_runner, "studies", lambda: {"plain": entry})
+    with pytest.raises(TypeError, match="not a sailmujoco.study.Study"):
+        study_runner.run_studies(["plain"], tmp_path, workers=1, progress=False)
 
 
 WALL = re.compile(r"\d+(\.\d+)? s\b|wall|took")
@@ -215,17 +239,15 @@ def test_every_registered_study_is_declared_and_its_title_is_read_without_import
     assert set(study_runner.STUDY_ORDER) <= set(found)
     titles = study_runner.study_titles()
     for name, entry in found.items():
-        study = entry.load()
-        if not isinstance(study, Study):  # a study still written as one script: its run()
-            assert callable(study), name
-            continue
-        assert study.name == name and study.title and titles[name] == study.title
+        declared = entry.load()
+        assert isinstance(declared, Study), name
+        assert declared.name == name and declared.title and titles[name] == declared.title
         for part in ("runs", "analyse", "write", "report", "headline"):
-            assert callable(getattr(study, part)), (name, part)
-        assert study.more_runs is None or callable(study.more_runs)
-        assert study.video is None or isinstance(study.video.get("boat"), str)
+            assert callable(getattr(declared, part)), (name, part)
+        assert declared.more_runs is None or callable(declared.more_runs)
+        assert declared.video is None or isinstance(declared.video.get("boat"), str)
         for smoke in (True, False):
-            runs = study.runs(smoke)
+            runs = declared.runs(smoke)
             assert isinstance(runs, Runs)
             for function, items in runs.jobs.values():
                 module, _, attribute = function.partition(":")

@@ -5,13 +5,19 @@ import time
 from types import SimpleNamespace
 
 from sailmujoco import cli, study_runner, sweep
+from sailmujoco.study import Runs, Study
 
 
 def _fake_study(seconds):
-    def run(out, smoke=False, workers=None, progress=True, video=False, engine=None, resume=False):
+    """The entry point of a declared study that simulates nothing and takes ``seconds``."""
+    def runs(smoke):
         time.sleep(seconds)
-        return {"answer": 42}
-    return SimpleNamespace(load=lambda: run, module=__name__)
+        return Runs()
+
+    fake = Study(name="fake", title="A fake study", runs=runs, analyse=lambda results, smoke: None,
+                 write=lambda analysis, out: None, report=lambda analysis, smoke: "# fake\n",
+                 headline=lambda analysis: {"answer": 42})
+    return SimpleNamespace(load=lambda: fake, module=__name__)
 
 
 def test_study_all_prints_progress_eta_and_a_timing_table(monkeypatch, tmp_path, capsys):

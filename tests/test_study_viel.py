@@ -23,7 +23,7 @@ def smoke(tmp_path_factory):
 def test_smoke_writes_report_figures_and_data(smoke):
     out, headline = smoke
     report = (out / "report.md").read_text()
-    assert "Done-when" in report and "max after stop" in report
+    assert "Reproduction criterion" in report and "max after stop" in report
     for name in ("fig3_paper.png", "fig3_viel_boat.png", "fig3_wille_yacht.png", "fig3_saoud_robot.png",
                  "max_distance.png", "six_dof_switches.png"):
         assert (out / name).stat().st_size > 10_000, name

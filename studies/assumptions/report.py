@@ -7,11 +7,11 @@ from __future__ import annotations
 from ..kit import Report
 from .analysis import Analysis
 from .figures import FIGURES
-from .scenario import ABOUT
+from .scenario import ABOUT, TITLE
 from .table import COLUMNS, rows
 
 
-def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
+def report(analysis: Analysis, smoke: bool) -> str:
     """The Markdown of report.md.
 
     Parameters
@@ -20,10 +20,8 @@ def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
         The study's numbers.
     smoke : bool
         The study's short pass (the numbers say it; the text is the same).
-    title : str
-        The study's title (its heading).
     """
-    r = Report(title)
+    r = Report(TITLE)
     r.paragraph(ABOUT)
     r.table(rows(analysis), COLUMNS)
     r.figure(FIGURES["wind_plane"], "The metrics over true wind angle × true wind speed")

@@ -7,11 +7,13 @@ with and without residuary resistance (:mod:`studies.kit.wille`).
 
 from __future__ import annotations
 
+from sailmujoco.boats import SAOUD_CN_POLY
 from sailmujoco.study import Runs
 
 from ..kit.wille import TABLE1_DURATION, TABLE1_SMOKE_DURATION, TABLE1_WIND
 
 NAME = "assumptions"
+TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
 
 ABOUT = """Scenarios
     * the wind plane: true wind 2-14 m/s x true wind angle 30-180 deg, steady wind, heading held
@@ -44,7 +46,7 @@ BUILT = (
      "Friction-only resistance: no wave-making (residuary) resistance",
      "Wille eqs. 15-16 (ITTC-57 friction with form factor)"),
     ("paper_foils", {"env.foils": "paper"},
-     "The papers' foil coefficients: sail slope 7.15 /rad, 2-D post-stall drag",
+     f"The papers' foil coefficients: sail slope {SAOUD_CN_POLY[0]:g} /rad, 2-D post-stall drag",
      "Saoud §VII-A C_N polynomial; Wille eq. 23 with the 2-D table"),
     ("no_downwash", {"env.keel_downwash": False},
      "Rudder in undisturbed flow: no keel downwash", "Wille eqs. 34-36"),

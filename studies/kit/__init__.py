@@ -2,22 +2,18 @@
 
 A study declares a :class:`sailmujoco.study.Study` (its runs as data, its analysis, figures and
 report) and registers it under the ``sailmujoco.studies`` entry points; the study runner
-(:mod:`sailmujoco.study_runner`) executes its runs on the sweep engine and calls the rest. The
-job functions its runs name (``"package.module:function"``) call :func:`run_episode`; its
-report is a :class:`Report`; :mod:`.verdict` states how far ours is from the paper's.
-Modules of this package hold what several studies of one paper share (:mod:`.saoud`).
+(:mod:`sailmujoco.study_runner`) executes its runs on the sweep engine and calls the rest.
 
-A study still written as one script registers its ``run(out, smoke, workers, progress, video,
-engine, resume) -> dict`` instead; its simulations go through :func:`run_batch`,
-:func:`run_jobs` and :func:`run_sweep` on :func:`engine_for`'s engine, stored under ``out``
-(``resume`` runs only what is not stored there yet).
+This package gives those parts their common pieces: :func:`run_episode` (one episode, for the
+job functions a study's runs name as ``"package.module:function"``), :class:`Report` (the
+Markdown of report.md), :func:`setup_matplotlib` and :func:`save_figure` (the figures),
+:func:`timer` (a wall clock) and :mod:`.verdict` (how far ours is from the paper's). Its other
+modules hold what the studies of one paper share: :mod:`.saoud` and :mod:`.wille`.
 """
 
 from __future__ import annotations
 
-import contextlib
 import math
-import shutil
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -153,120 +149,6 @@ def _cell(value) -> str:
             return "—"
         return f"{value:.3g}"
     return str(value).replace("|", "\\|")
-
-
-@contextlib.contextmanager
-def engine_for(engine: sweep.Engine | None, workers: int | None):
-    """``engine`` if given (left open), else an engine of this study's own, closed at the end: in
-    this process for ``workers=1``, else an embedded cluster of ``workers`` processes.
-
-    Parameters
-    ----------
-    engine : sailmujoco.sweep.Engine or None
-        An engine to use.
-    workers : int, optional
-        Worker processes of an engine of its own.
-    """
-    if engine is not None:
-        yield engine
-        return
-    with sweep.Engine("serial" if workers == 1 else None, workers) as own:
-        yield own
-
-
-def run_batch(engine: sweep.Engine, out: Path, *, sweeps: list = (), jobs: list = (),
-              resume: bool = False, progress: bool = True, label: str = "simulations") -> tuple[list, list]:
-    """Sweeps and job lists queued together on the engine (:func:`sailmujoco.sweep.run_many`);
-    returns (each sweep's table, each job list's results in input order).
-
-    ``sweeps``: ``(spec, folder)`` pairs, one folder per sweep; ``jobs``: ``(function, jobs,
-    name)`` triples (``"package.module:function"``, its JSON-able jobs), stored in
-    ``out/jobs/<name>``. Folders and stores are cleared first (fresh results) unless
-    ``resume``: then only what is not stored yet runs (a folder holding another sweep, e.g. a
-    smoke run's, is cleared: nothing of it to resume).
-
-    Parameters
-    ----------
-    engine : sailmujoco.sweep.Engine
-        The worker pool.
-    out : pathlib.Path
-        The study's folder.
-    sweeps : list of (dict, pathlib.Path)
-        Sweep specs and their folders.
-    jobs : list of (str, list, str)
-        Job function, its items and the store's name.
-    resume : bool
-        Keep what is stored and run the rest.
-    progress : bool
-        Show progress on stderr.
-    label : str
-        Names the progress bar.
-    """
-    for spec, folder in sweeps:
-        same = False
-        if resume:
-            try:
-                sweep.check_folder(sweep.validate(spec), folder)
-                same = True
-            except sweep.SweepError:
-                same = False
-        if not same:
-            shutil.rmtree(folder, ignore_errors=True)
-    stores = []
-    for function, items, name in jobs:
-        store = Path(out) / "jobs" / name
-        if not resume:
-            shutil.rmtree(store, ignore_errors=True)
-        stores.append((function, items, store))
-    return sweep.run_many(list(sweeps), stores, engine=engine, resume=resume, progress=progress,
-                          label=label)
-
-
-def run_jobs(function: str, jobs: list, out: Path, engine: sweep.Engine, *, resume: bool = False,
-             progress: bool = True, label: str = "simulations") -> list:
-    """``[function(job) for job in jobs]`` on the engine, stored in ``out/jobs/<label>``
-    (:func:`run_batch`).
-
-    Parameters
-    ----------
-    function : str
-        ``"package.module:function"``.
-    jobs : list
-        Its JSON-able items.
-    out : pathlib.Path
-        The study's folder.
-    engine : sailmujoco.sweep.Engine
-        The worker pool.
-    resume : bool
-        Keep what is stored and run the rest.
-    progress : bool
-        Show progress on stderr.
-    label : str
-        Names the store and the progress bar.
-    """
-    return run_batch(engine, out, jobs=[(function, jobs, label)], resume=resume, progress=progress,
-                     label=label)[1][0]
-
-
-def run_sweep(spec: dict, folder: Path, engine: sweep.Engine, *, resume: bool = False,
-              progress: bool = True):
-    """One sweep into ``folder`` on the engine (:func:`run_batch`); its table.
-
-    Parameters
-    ----------
-    spec : dict
-        The sweep.
-    folder : pathlib.Path
-        Its folder.
-    engine : sailmujoco.sweep.Engine
-        The worker pool.
-    resume : bool
-        Keep what is stored and run the rest.
-    progress : bool
-        Show progress on stderr.
-    """
-    return run_batch(engine, Path(folder).parent, sweeps=[(spec, folder)], resume=resume,
-                     progress=progress, label=f"sweep {spec['name']}")[0][0]
 
 
 def setup_matplotlib():

@@ -9,11 +9,7 @@ from sailmujoco.study import Study
 from .analysis import analyse, headline
 from .figure import write
 from .report import report
-from .scenario import NAME, TITLE, runs
-
-# the scenario `sailmujoco study saoud_fig6 --video` films
-VIDEO = {"boat": "saoud_robot", "task": "speed_trial", "controller": "saoud", "seconds": 60.0,
-         "boat_options": {"l_phi": 1.0}}
+from .scenario import NAME, TITLE, VIDEO, runs
 
 STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
               headline=headline, video=VIDEO)

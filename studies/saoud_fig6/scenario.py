@@ -30,6 +30,7 @@ from ..kit import run_episode
 from ..kit.saoud import (
     BOAT,
     L_PHI,
+    PHI_MAX_DEG,
     TRUE_WIND,
     WIND_SOURCE,
     WORLDS,
@@ -44,12 +45,15 @@ from ..kit.saoud import (
 
 NAME = "saoud_fig6"
 TITLE = "Saoud (2015) Fig. 6: speed and roll over time, optimal sail S vs Briere's Bm"
+# the scenario `sailmujoco study saoud_fig6 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "speed_trial", "controller": "saoud", "seconds": 60.0,
+         "boat_options": {"l_phi": 1.0}}
 WORLD_NAMES = {"paper": "paper world (4-DOF reduced model)", "mujoco": "MuJoCo 6-DOF"}
 SEGMENTS = tuple((start, angle, end) for (start, angle), end in
                  zip(SpeedTrial.segments, [t for t, _ in SpeedTrial.segments[1:]] + [SpeedTrial.duration],
                      strict=True))
 ANGLES_DEG = tuple(a for _, a, _ in SEGMENTS)  # ∠v_w^B of the three segments
-LAWS = {"S": "Saoud optimal sail, $\\phi_{max}$ = 30°", "Bm": "Briere/IBOAT trimming (Fig. 5)"}
+LAWS = {"S": f"Saoud optimal sail, $\\phi_{{max}}$ = {PHI_MAX_DEG:g}°", "Bm": "Briere/IBOAT trimming (Fig. 5)"}
 FACTORIES = {("S", "saoud_v"): saoud_law, ("Bm", "saoud_v"): briere_law,
              ("S", "ce"): saoud_law_ce, ("Bm", "ce"): briere_law_ce,
              ("S", "masthead"): saoud_law_masthead, ("Bm", "masthead"): briere_law_masthead}

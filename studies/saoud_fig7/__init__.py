@@ -11,11 +11,7 @@ from sailmujoco.study import Study
 from .analysis import analyse, headline
 from .figure import write
 from .report import report
-from .scenario import NAME, TITLE, more_runs, runs
-
-# the scenario `sailmujoco study saoud_fig7 --video` films
-VIDEO = {"boat": "saoud_robot", "task": "heading_hold", "controller": "saoud", "seconds": 40.0,
-         "wind_speed": 5.82, "wind_from_deg": 100.0, "gusts": False, "wander": False}
+from .scenario import NAME, TITLE, VIDEO, more_runs, runs
 
 STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
               headline=headline, more_runs=more_runs, video=VIDEO)

@@ -44,6 +44,9 @@ from ..kit.saoud import (
 
 NAME = "saoud_fig7"
 TITLE = "Saoud (2015) Fig. 7: maximum velocity vs relative wind angle, S vs Bm vs vel_max"
+# the scenario `sailmujoco study saoud_fig7 --video` films
+VIDEO = {"boat": "saoud_robot", "task": "heading_hold", "controller": "saoud", "seconds": 40.0,
+         "wind_speed": 5.82, "wind_from_deg": 100.0, "gusts": False, "wander": False}
 ANGLES_DEG = tuple(float(a) for a in range(0, 181, 15))  # ∠v_w^B
 COARSE_SAIL_DEG = tuple(float(s) for s in range(10, 91, 10))  # vel_max grid, first pass
 REFINE_DEG = 5.0  # second pass: the best coarse sail +- this

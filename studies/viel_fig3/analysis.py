@@ -47,7 +47,8 @@ class Analysis:
     variants : pandas.DataFrame
         ``main`` (variant "baseline") and every switching experiment's row.
     grid : pandas.DataFrame
-        The paper world over every start and seed.
+        The paper world over every start and seed, in the order of its sweep's runs
+        (:func:`sailmujoco.sweep.expand`).
     capability : pandas.DataFrame
         The PID heading-hold check (boat, wind speed, steady speed, rudder).
     smoke : bool

@@ -27,6 +27,7 @@ from .scenario import (
     PAPER_DT,
     PAPER_MAX_M,
     PAPER_P5,
+    TITLE,
     TRAJECTORY_RATE,
     VARIANT_LABELS,
     VIEL_LENGTH,
@@ -35,7 +36,7 @@ from .scenario import (
 )
 
 
-def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
+def report(analysis: Analysis, smoke: bool) -> str:
     """The Markdown of report.md.
 
     Parameters
@@ -44,10 +45,8 @@ def report(analysis: Analysis, smoke: bool, *, title: str) -> str:
         The study's numbers.
     smoke : bool
         The study's short pass (said in the title).
-    title : str
-        The study's title (its heading).
     """
-    r = Report(title + (" (smoke)" if smoke else ""))
+    r = Report(TITLE + (" (smoke)" if smoke else ""))
     r.paragraph(ABOUT)
     numbers = headline(analysis)
     _bound(r, analysis, numbers)
@@ -69,7 +68,7 @@ def _bound(r: Report, analysis: Analysis, h: dict) -> None:
     at_entry = " (the entry crossing itself: the boat never heads back out)" if (
         largest > PAPER_D_T - 0.05 and after_stop < largest - 0.5) else ""
     r.paragraph(
-        f"**Done-when (paper world, task start, seed 0): distance after entering the target area < "
+        f"**Reproduction criterion (paper world, task start, seed 0): distance after entering the target area < "
         f"{PAPER_D_T:g} m in all six cases: {'met' if h['paper_all_below_7m'] else 'NOT met'}** (largest "
         f"{largest:.4f} m{at_entry}; at most {after_stop:.2f} m once stopped, below the paper's "
         f"{PAPER_MAX_M:g} m in {h['paper_cases_below_6_4m']} of {len(paper)} cases). Over {h['grid_runs']} "
@@ -108,7 +107,7 @@ def _measure(r: Report) -> None:
         f"the boat does next. The paper's {PAPER_MAX_M:g} m can only be read as the excursions once the "
         "boat has arrived; we measure them from the *stop*, the first minimum of the distance after "
         "entry (`max after stop`). The task's metric is kept next to it: "
-        f"'< {PAPER_D_T:g} m' (the done-when) is the same on both.")
+        f"'< {PAPER_D_T:g} m' (the reproduction criterion) is the same on both.")
 
 
 def _per_case(r: Report, analysis: Analysis) -> None:

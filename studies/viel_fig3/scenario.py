@@ -15,6 +15,7 @@ from sailmujoco.params import get_boat
 from sailmujoco.study import Runs
 
 NAME = "viel_fig3"
+TITLE = "Viel et al. (2019) Fig. 3: position keeping around a buoy, six winds, four worlds"
 # the scenario `sailmujoco study viel_fig3 --video` films
 VIDEO = {"boat": "saoud_robot", "task": "position_keeping", "controller": "viel",
          "seconds": 120.0, "camera": "top", "case": 2}
@@ -48,7 +49,7 @@ LABELS = {"paper": "paper world (Viel 3-DOF)", "viel_boat": "viel_boat (6-DOF, T
 SWEPT = ("paper", "wille_yacht", "saoud_robot")  # sweep runs; viel_boat runs through
 # switches.simulate, which also samples what the boat does (speed, apparent wind, rudder, heel, mode)
 VARIANT_LABELS = {
-    "baseline": "as the paper (dt 0.01 s, eqs. 7-8 linear in speed)",
+    "baseline": f"as the paper (dt {PAPER_DT:g} s, eqs. 7-8 linear in speed)",
     "dt_0.1": "control period 0.1 s (the suite's)",
     "no_hull_wind": "p1 = 0 (no hull-wind term)",
     "printed_rudder": "eqs. 7-8 as printed (p5 v² sin δr)",

@@ -8,7 +8,7 @@ from sailmujoco.figures import legend_below, wind_arrow
 
 from ..kit import save_figure, setup_matplotlib
 from .analysis import Analysis
-from .scenario import LAWS, WORLDS
+from .scenario import DURATION, LAWS, PAPER_WIND, WORLDS
 
 COLOURS = {"heading": "tab:blue", "course": "tab:red", "course_sail_only": "tab:green"}
 FIG4 = "fig4_position.png"
@@ -32,6 +32,7 @@ def figure_positions(results: dict, out: Path, plt) -> Path:
     pathlib.Path
         The figure's file.
     """
+    speed, to_deg = PAPER_WIND
     fig, axes = plt.subplots(1, 2, figsize=(10, 5.5), sharey=True)
     for ax, world in zip(axes, WORLDS, strict=True):
         for law in ("heading", "course"):
@@ -48,11 +49,12 @@ def figure_positions(results: dict, out: Path, plt) -> Path:
         span = max(40.0, max(abs(results[("main", world, law)]["trajectory"]["east"]).max()
                              for law in ("heading", "course")) * 1.3)
         ax.set_xlim(-span, span)
-        wind_arrow(ax, 130.0, "wind 5 m/s (U10)\nfrom 310° (NW),\nblowing to 130°")
+        wind_arrow(ax, to_deg, f"wind {speed:g} m/s (U10)\nfrom {(to_deg + 180.0) % 360.0:g}° (NW),\n"
+                               f"blowing to {to_deg:g}°")
     axes[0].set_ylabel("x, north [m]")
     legend_below(fig, axes[0], ncol=2)
     fig.suptitle("Fig. 4 (reproduced): position, heading and course controller\n"
-                 "(U10 = 5 m/s, β_w = 130°: the wind blows towards 130°, 200 s)")
+                 f"(U10 = {speed:g} m/s, β_w = {to_deg:g}°: the wind blows towards {to_deg:g}°, {DURATION:g} s)")
     return save_figure(fig, out / FIG4)
 
 

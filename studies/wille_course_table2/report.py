@@ -5,17 +5,24 @@ from __future__ import annotations
 from ..kit import Report
 from .analysis import Analysis
 from .figures import FIG4, FIG5
-from .scenario import CONTROL_TIMESTEP, LAWS, PAPER_REDUCTION, PAPER_SPEED, PAPER_TABLE2, SAIL_FACTOR, WORLDS
+from .scenario import (
+    CONTROL_TIMESTEP,
+    LAWS,
+    PAPER_REDUCTION,
+    PAPER_SPEED,
+    PAPER_TABLE2,
+    SAIL_FACTOR,
+    TITLE,
+    WORLDS,
+)
 from .scenario import __doc__ as SCENARIO
 
 
-def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
-    """The Markdown of report.md (the study's report is this with its title bound).
+def report(analysis: Analysis, smoke: bool) -> str:
+    """The Markdown of report.md.
 
     Parameters
     ----------
-    title : str
-        The heading.
     analysis : Analysis
         The study's numbers.
     smoke : bool
@@ -27,7 +34,7 @@ def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
         The report.
     """
     a = analysis
-    text = Report(title)
+    text = Report(TITLE)
     text.paragraph(SCENARIO.split("\n\n", 1)[1])
     text.paragraph(
         f"Runs: {len(a.results)} simulations of {a.duration:g} s{' (smoke mode)' if smoke else ''}, "

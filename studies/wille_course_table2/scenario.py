@@ -30,9 +30,14 @@ from sailmujoco.study import Runs
 from ..kit.wille import make_env
 
 NAME = "wille_course_table2"
+TITLE = "Wille (2016a) §4, Table 2 and Figs. 4-5: heading vs course controller, close-hauled"
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 CONTROL_TIMESTEP = 0.02  # s, 50 Hz (see the module docstring)
+# the scenario `sailmujoco study wille_course_table2 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "course_hold", "controller": "wille_course",
+         "seconds": 60.0, "camera": "top", "control_timestep": CONTROL_TIMESTEP}
 DURATION = 200.0  # s, §4
+PAPER_WIND = (5.0, 130.0)  # §4: U10 [m/s] and beta_w [deg], the direction the wind blows to
 SMOKE_DURATION = 30.0  # s
 PAPER_TABLE2 = {  # Table 2: x = east (cross-track, m), y = north (m), error (deg)
     "heading": {"east": 32.9, "north": 583.1, "error_deg": 3.23},

@@ -8,9 +8,12 @@ from .analysis import STALLED, Analysis, RunTable, reduction
 from .scenario import (
     FAST_CONTROL_S,
     FIG8_LABELS,
+    FIG8_WINDS,
     LAG_SEEDS,
+    LAG_SWITCH_S,
     NARROW_BAND_DEG,
     PAPER_GAIN,
+    PAPER_SAIL_LAG_S,
     PAPER_TABLE1,
     REALISATION_SEEDS,
     SAIL_FACTOR,
@@ -172,14 +175,14 @@ def _cause_lag(r: RunTable) -> str:
                          + "°" for seed in LAG_SEEDS)
     return f"""6. **Sim 3's remaining roll: the sail actuator's lag, and the gust moment it lets through**
    (paper {p3:g}°, ours {m['sim3']['roll_amplitude']:.2f}° on the seed mean). The paper names the
-   actuator's delay (T_λ = 0.5 s). With perfect wind the law asks at every step for the moment it
+   actuator's delay (T_λ = {PAPER_SAIL_LAG_S:g} s). With perfect wind the law asks at every step for the moment it
    wants, and a gust's change of moment reaches the hull only for as long as the sail takes to
    follow; so the residual is T_λ times how fast a gust changes the sail's roll moment at the eased
    trim, a property of the sail's coefficients. Switched: T_λ = {lag_text} s gives sim-3
    amplitudes {_lag_values(False)} with our 10 Hz control, and {_lag_values(True)} at
    {1 / FAST_CONTROL_S:g} Hz: the residual is proportional to the lag until the control period
-   sets a floor (at 10 Hz near 0.2°, reached below T_λ = 0.25 s); at the paper's 0.5 s the control
-   rate hardly matters. The paper's {p3:g}° lies between our residuals at T_λ = 0.5 and 0.25 s: its
+   sets a floor (at 10 Hz near 0.2°, reached below T_λ = {LAG_SWITCH_S[0]:g} s); at the paper's {PAPER_SAIL_LAG_S:g} s the control
+   rate hardly matters. The paper's {p3:g}° lies between our residuals at T_λ = {PAPER_SAIL_LAG_S:g} and {LAG_SWITCH_S[0]:g} s: its
    sail lets less gust moment through the lag than ours does. Over {len(reals)} gust realisations (seeds 0-{REALISATION_SEEDS[-1]}, figure below)
    sim 3's amplitude is {min_amp:.2f}-{max_amp:.2f}°, {within} of them within {100 * WITHIN:.0f} % of the
    paper's {p3:g}° (the smallest: seed {min_seed}, sim-1 heel {min_heel:.1f}°); where sim 1 heels
@@ -223,16 +226,17 @@ def _cause_six_dof(a: Analysis) -> str:
 
 
 def _fig8_broach(tables: dict) -> str:
-    """Where the MuJoCo boat broaches in the Fig. 8 sweep at U10 = 16 m/s ("" if nowhere)."""
+    """Where the MuJoCo boat broaches in the Fig. 8 sweep at its strongest wind ("" if nowhere)."""
+    wind = max(FIG8_WINDS)
     broach = []
     for variant in ("mujoco", "mujoco_dofs4"):
         t = tables.get(variant)
         if t is None:
             continue
-        slow = t[(t["wind_speed"] == 16.0) & (t["mean_surge"] < STALLED)]
+        slow = t[(t["wind_speed"] == wind) & (t["mean_surge"] < STALLED)]
         if len(slow):
             broach.append(f"{FIG8_LABELS[variant]} for φ_d ≥ {slow['heel_desired_deg'].min():g}°")
-    return ("; in the Fig. 8 sweep at U10 = 16 m/s: " + ", ".join(broach)) if broach else ""
+    return (f"; in the Fig. 8 sweep at U10 = {wind:g} m/s: " + ", ".join(broach)) if broach else ""
 
 
 def _six_dof_vs_paper(six: dict, paper: dict) -> str:

@@ -19,6 +19,7 @@ from .scenario import (
     FIG8_WINDS,
     LAG_SEEDS,
     PAPER_OPTIMUM_DEG,
+    PAPER_SAIL_LAG_S,
     PAPER_TABLE1,
     REALISATION_SEEDS,
     SAIL_FACTOR,
@@ -161,7 +162,7 @@ def figure_realisations(r: RunTable, out, plt) -> Path:
     ax.axvline(math.degrees(PHI_D), color="k", lw=0.7, ls="--", label="φ_d = 10°")
     ax.set_xlabel("sim 1 (roll control off): mean heel over the window [deg]")
     ax.set_ylabel("sim 3 (perfect wind): roll amplitude [deg]")
-    ax.set_title("one point per gust realisation (paper world, U10 = 10 m/s)", fontsize=10)
+    ax.set_title(f"one point per gust realisation (paper world, U10 = {TABLE1_WIND:g} m/s)", fontsize=10)
     ax.legend(fontsize=7, loc="upper right")
     for seed, colour in zip(LAG_SEEDS, ("tab:blue", "tab:orange"), strict=True):
         for fast, style in ((False, "-"), (True, "--")):
@@ -171,7 +172,7 @@ def figure_realisations(r: RunTable, out, plt) -> Path:
                         color=colour, label=f"seed {seed}, control at {50 if fast else 10} Hz")
     bx.set_xlim(left=0.0)
     bx.set_ylim(bottom=0.0)
-    bx.set_xlabel("sail actuator lag T_λ [s] (paper 0.5 s)")
+    bx.set_xlabel(f"sail actuator lag T_λ [s] (paper {PAPER_SAIL_LAG_S:g} s)")
     bx.set_ylabel("sim 3: roll amplitude [deg]")
     bx.set_title("sim 3's residual against the sail actuator's lag", fontsize=10)
     bx.legend(fontsize=7, loc="upper left")

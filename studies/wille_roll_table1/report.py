@@ -19,22 +19,22 @@ from .scenario import (
     PAPER_TABLE1,
     QUANTITIES,
     SAIL_FACTOR,
+    SHARES_WIND,
     SIM_LABELS,
     SIMS,
     SWITCH_SIMS,
+    TITLE,
     WORLDS,
     paper_sim,
 )
 from .scenario import __doc__ as SCENARIO
 
 
-def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
-    """The Markdown of report.md (the study's report is this with its title bound).
+def report(analysis: Analysis, smoke: bool) -> str:
+    """The Markdown of report.md.
 
     Parameters
     ----------
-    title : str
-        The heading.
     analysis : Analysis
         The study's numbers.
     smoke : bool
@@ -46,7 +46,7 @@ def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
         The report.
     """
     a, r = analysis, analysis.runs
-    text = Report(title)
+    text = Report(TITLE)
     text.paragraph(SCENARIO.split("\n\n", 1)[1])
     n_sweep = sum(len(t) for t in a.tables.values())
     text.paragraph(
@@ -75,7 +75,7 @@ def markdown(title: str, analysis: Analysis, smoke: bool) -> str:
     text.figure(FIGURES["5"], "Fig. 5: roll angle φ, all simulations (last 50 s)")
     text.figure(FIGURES["6"], "Fig. 6: roll rate p, simulations 1 and 2")
     text.figure(FIGURES["7"], "Fig. 7: roll rate p, simulations 2 and 3")
-    text.paragraph("## Fig. 3: moment shares in roll (beam reach, U10 = 5 m/s, roll control off)")
+    text.paragraph(f"## Fig. 3: moment shares in roll (beam reach, U10 = {SHARES_WIND:g} m/s, roll control off)")
     text.comparison(_share_rows(a))
     text.figure(FIGURES["3"], "Fig. 3: roll moments of each force term")
     text.paragraph("## Fig. 8: top surge speed against φ_d")

@@ -50,6 +50,10 @@ from ..kit.wille import (
 )
 
 NAME = "wille_roll_table1"
+TITLE = "Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail"
+# the scenario `sailmujoco study wille_roll_table1 --video` films
+VIDEO = {"boat": "wille_yacht", "task": "beam_reach_roll", "controller": "wille_roll",
+         "seconds": 60.0, "controller_options": {"wind": "perfect"}}
 WORLDS = {"paper": "paper (4-DOF)", "mujoco": "MuJoCo (6-DOF)"}
 SIMS = TABLE1_SIMS  # the simulations: options of the registered "wille_roll" controller
 SWITCH_SIMS = ("sim1", "sim1_mean", "sim2", "sim3")  # the simulations each switch reruns
@@ -96,7 +100,8 @@ FIG8_HEEL_DEG = (10.0, 15.0, 20.0, 25.0, 30.0, 35.0, 40.0)
 FIG8_SWITCH_HEEL_DEG = (25.0, 30.0, 35.0, 40.0)
 SAIL_FACTOR = 1.5  # sail-force switch: our seed-0 sim-1 surge meets the paper's 7.75 m/s
 NARROW_BAND_DEG = 1.0  # hysteresis switch: heel_off = heel_on - 1 deg
-LAG_SWITCH_S = (0.25, 0.125)  # sail actuator lag switch: T_lambda (the paper's 0.5 s) halved, quartered
+PAPER_SAIL_LAG_S = 0.5  # s, the sail actuator's lag T_lambda the paper names
+LAG_SWITCH_S = (PAPER_SAIL_LAG_S / 2, PAPER_SAIL_LAG_S / 4)  # sail actuator lag switch: halved, quartered
 LAG_SEEDS = (1, 2)  # the headline seeds whose window keeps the law on (no lull)
 FAST_CONTROL_S = 0.02  # control-period switch: 50 Hz in place of 10 Hz
 REALISATION_SEEDS = tuple(range(5, 25))  # more gust realisations for sims 1 and 3 (paper world)
@@ -126,7 +131,7 @@ CASES = {"main": "headline", "sail": f"switch: sail force x{SAIL_FACTOR:g}",
          "dofs4": "switch: heave and pitch held (dofs = 4)",
          "friction": "switch: friction-only resistance (Wille eqs. 15-16, no wave making)",
          "sail dofs4": f"switch: sail force x{SAIL_FACTOR:g}, heave and pitch held",
-         **{f"lag {t:g}": f"switch: sail actuator lag T_λ = {t:g} s (paper 0.5 s)" for t in LAG_SWITCH_S},
+         **{f"lag {t:g}": f"switch: sail actuator lag T_λ = {t:g} s (paper {PAPER_SAIL_LAG_S:g} s)" for t in LAG_SWITCH_S},
          "rate": f"switch: control at {1 / FAST_CONTROL_S:g} Hz (ours 10 Hz)",
          **{f"rate lag {t:g}": f"switch: control at {1 / FAST_CONTROL_S:g} Hz and T_λ = {t:g} s"
             for t in LAG_SWITCH_S},
