@@ -137,8 +137,9 @@ def test_roll_shares_sum_to_one_and_restoring_balances_a_heeled_hull():
 
 
 def test_study_smoke(tmp_path):
-    from sailmujoco import study, sweep
     from sailmujoco.studies import assumptions
+
+    from sailmujoco import study, sweep
 
     with sweep.Engine() as engine:
         headline = study.run_study(assumptions.STUDY, tmp_path, engine, smoke=True, progress=False)
