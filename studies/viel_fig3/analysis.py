@@ -28,6 +28,7 @@ from .scenario import (
     cases,
     duration,
     is_start,
+    sweep_folder,
 )
 
 COLUMNS = ["variant", "world", "case", "start", "seed", "d_T", "entered_at", "max_distance_after_entry",
@@ -83,7 +84,7 @@ def sweep_rows(key: str, records: list[dict]) -> list[dict]:
     key : str
         The world (a key of ``WORLDS``).
     records : list of dict
-        Its runs' records (:func:`sailmujoco.sweep.execute`: metrics and trajectory).
+        Its runs' stored records (metrics and trajectory), in the sweep's run order.
     """
     rows = []
     for record in records:
@@ -116,7 +117,7 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     smoke : bool
         The study's short pass.
     """
-    rows = [row for key in SWEPT for row in sweep_rows(key, results.jobs[key])]
+    rows = [row for key in SWEPT for row in sweep_rows(key, results.records[sweep_folder(key)])]
     switches = results.jobs[SWITCHES_JOB]
     rows += [r for r in switches if r.get("variant") == "baseline"]  # viel_boat's Fig. 3 column
     switches = [r for r in switches if r.get("variant") != "baseline"]

@@ -305,5 +305,4 @@ def _durations(r: Report, analysis: Analysis) -> None:
         + (f" Failed or stopped sweep runs: {bad}." if bad else ""))
     r.paragraph(
         "Files: `summary.csv` (per world and case), `trajectories.csv` (2 Hz), `switches.csv`, "
-        "`start_grid.csv`, `heading_hold_check.csv`, `jobs/<world>/` and `jobs/viel_switches/` (the "
-        "sweep engine's stores).")
+        "`start_grid.csv`, `heading_hold_check.csv`, `sweeps/<world>/` (the sweep engine's store).")

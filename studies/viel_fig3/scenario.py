@@ -1,7 +1,7 @@
 """Viel et al. (2019) Fig. 3, the scenario: the paper's values, the worlds and the runs, as data.
 
-The runs are the task's episodes in the paper world and the two sweep-engine boats (each a
-run of a :func:`sailmujoco.sweep.expand`-ed sweep, kept whole with its 2 Hz trajectory) and
+The runs are the task's episodes in the paper world and the two sweep-engine boats (a sweep
+per world, each run stored with its 2 Hz trajectory) and
 the switching experiments of :func:`.switches.simulate` (viel_boat's Fig. 3 column, one
 difference at a time, the PID heading-hold check).
 """
@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import pandas as pd
 
-from sailmujoco import sweep
 from sailmujoco.params import get_boat
 from sailmujoco.study import Runs
 
@@ -199,8 +198,8 @@ def switch_specs(smoke: bool) -> list[dict]:
 
 
 def runs(smoke: bool) -> Runs:
-    """The study's runs: each swept world's episodes (``sweep.execute`` of every run of its sweep,
-    record and trajectory returned whole) and the switching experiments.
+    """The study's runs: each swept world's episodes, a sweep stored in ``sweeps/<world>`` (its
+    records, with their 2 Hz trajectories, are ``Results.records``), and the switching experiments.
 
     Parameters
     ----------
@@ -212,6 +211,16 @@ def runs(smoke: bool) -> Runs:
     specs = {"paper": sweep_spec("paper", cases(smoke), starts, seeds, duration(smoke)),
              "wille_yacht": sweep_spec("wille_yacht", cases(smoke), [DEFAULT_START], [0], duration(smoke)),
              "saoud_robot": sweep_spec("saoud_robot", cases(smoke), [DEFAULT_START], [0], duration(smoke))}
-    jobs = {key: ("sailmujoco.sweep:execute", sweep.expand(sweep.validate(spec))) for key, spec in specs.items()}
-    jobs[SWITCHES_JOB] = (f"{__package__}.switches:simulate", switch_specs(smoke))
-    return Runs(jobs=jobs)
+    return Runs(sweeps=tuple((spec, sweep_folder(key)) for key, spec in specs.items()),
+                jobs={SWITCHES_JOB: (f"{__package__}.switches:simulate", switch_specs(smoke))})
+
+
+def sweep_folder(key: str) -> str:
+    """Where the sweep of world ``key`` is stored, in the study's folder.
+
+    Parameters
+    ----------
+    key : str
+        A swept world (``SWEPT``).
+    """
+    return f"sweeps/{key}"
