@@ -7,8 +7,7 @@ on a fresh MjData of the 6-DOF boat the world stands in for, times the number of
 steps in the control period (Wille's yacht for the Wille 4-DOF world, Viel's boat for the Viel
 3-DOF world, as ``studies/viel_fig3.py`` picks it); "world" is one control step of the paper
 world: ``Wille4DOF.step(n)`` (the suite's 0.1 s: ``PaperPhysics``) and ``VielWorld.step(action,
-dt)`` at Viel's 0.01 s (``studies/viel_fig3.py``) and the suite's 0.1 s, in gusty, wandering wind.
-Issue 18 asks for a ratio <= 1.
+dt)`` at Viel's 0.01 s (``studies/viel_fig3``) and the suite's 0.1 s, in gusty, wandering wind.
 """
 
 from __future__ import annotations

@@ -18,7 +18,7 @@ def load(boat="wille_yacht", *, wind=CALM, sail_mode="actuated", dofs=6, **switc
                             dofs=dofs)
 
 
-# The papers' forms of the four issue-16 switches (the defaults are the boat as built)
+# The papers' forms of the four switches of the boat as built (the defaults are the boat as built)
 PAPER_FORMS = dict(resistance="friction", foils="paper", keel_downwash=False, windage=False)
 
 

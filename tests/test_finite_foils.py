@@ -1,4 +1,4 @@
-"""Finite-wing foils (``foils = "finite"``) and the keel's downwash at the rudder (issue 16).
+"""Finite-wing foils (``foils = "finite"``) and the keel's downwash at the rudder.
 
 Expected values come from the published formulas written out here (Helmbold 1942, Viterna &
 Corrigan 1982, Biot-Savart for the trailing vortices), from the Sheldahl & Klimas table as

@@ -32,8 +32,8 @@ def test_table_reproduces_sheldahl_klimas_points():
     assert cl == pytest.approx(1.0141, abs=1e-4)
 
 
-# sha256 of Sheldahl & Klimas (1981) NACA 0015 file as the project received it (../shared/data,
-# issue 2): the shipped copy must stay byte-identical to it, with or without ../shared beside us.
+# sha256 of Sheldahl & Klimas (1981) NACA 0015 file as the project received it (../shared/data): the
+# shipped copy must stay byte-identical to it, with or without ../shared beside us.
 SOURCE_SHA256 = "463b92ae2609c94b4c5b9e50f6aa1696be2c24d3856049475e860cd996ce0c93"
 
 

@@ -89,7 +89,7 @@ def test_bad_wind_file_gives_one_clear_error(tmp_path):
 
 
 def test_wind_at_three_heights_is_each_height_alone():
-    """The kernel's one evaluation for the sail, topsides and mast (issue 18) gives, for each
+    """The kernel's one evaluation for the sail, topsides and mast gives, for each
     height, the bits of the one-height evaluation, and both agree with eqs. 39-41 written out
     here with numpy (mean log profile + sum of cosines with amplitudes linear in ln z)."""
     from sailmujoco.forces.wind import WANDER_DT, wind_velocities, wind_velocity

@@ -91,7 +91,7 @@ def test_switch_off_is_zero_and_changes_nothing_else():
 
 
 def test_windage_without_the_sail_is_the_same_force():
-    """The kernel evaluates the wind for the sail and the windage points in one call (issue 18):
+    """The kernel evaluates the wind for the sail and the windage points in one call:
     with the sail switched off (topsides and mast only) the windage is the same to the bit, in
     gusty, wandering wind on a heeled, moving boat."""
     wind = WindConfig(speed=9.0, direction_from=1.1, seed=4)
