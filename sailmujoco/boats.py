@@ -279,7 +279,7 @@ def viel_boat() -> BoatParams:
     # Stability for the 11.7 m^2 rig (guess, a 2.4mR-like keelboat: ~60-70 % ballast in a bulb):
     # 180 kg lead bulb at the keel tip z = -1.25 m, a 100 kg hull/deck at ~+0.05 m, a 20 kg rig
     # (mast, boom, sail) centred ~3.5 m up: z_G = (-225 + 5 + 70) / 300 = -0.50 m. GM_t follows
-    # from the hull (z_B + BM - z_G with the old 1.05 m beam): ~1.05 m. Checked: steady heel
+    # from the hull (z_B + BM - z_G of a 1.05 m beam): ~1.05 m. Checked: steady heel
     # under the eq. 15 sail in 10 m/s (tests/test_viel_boat.py, xml/viel_boat/README.md step 7).
     gm_t = 1.05  # m, guess (see above)
     cg_z = -0.50  # m, guess (see above)

@@ -3,8 +3,10 @@ of one control period (:class:`sailmujoco.reference.wille.Wille4DOF` holds the s
 readings; its module docstring explains the model and the ``paper``/``rigid`` forms).
 
 The kernels read the boat and the switches from one flat float64 array (:func:`pack_parameters`,
-indices below) and do the arithmetic of the Python model they replaced in its order, so that the
-results are the same bit for bit (``tests/test_paper_world_identity.py``). The force functions
+indices below) and do the arithmetic of the model written in plain Python, in its order: run
+interpreted (``NUMBA_DISABLE_JIT=1``) they give the compiled results bit for bit, and they match
+the plain-Python model's trajectories (``tests/data/paper_worlds_python_reference.json``) to
+rounding (``tests/test_paper_world_identity.py``). The force functions
 are those of the 6-DOF boat (:mod:`sailmujoco.forces`), the wind is :func:`wind_velocity`.
 """
 
