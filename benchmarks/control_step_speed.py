@@ -33,6 +33,7 @@ import numpy as np
 from sailmujoco.controllers import factories
 
 from sailmujoco import suite
+from sailmujoco.options import Dofs, World, choices
 from sailmujoco.physics import BoatPhysics
 
 PAIRS = (("saoud_robot", "speed_trial", "saoud"), ("wille_yacht", "beam_reach_roll", "wille_roll"))
@@ -126,8 +127,8 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--steps", type=int, default=200, help="control steps per round")
     parser.add_argument("--rounds", type=int, default=7)
-    parser.add_argument("--world", choices=("mujoco", "paper"), default="mujoco")
-    parser.add_argument("--dofs", type=int, choices=(6, 4), default=6,
+    parser.add_argument("--world", choices=choices(World), default="mujoco")
+    parser.add_argument("--dofs", type=int, choices=choices(Dofs), default=6,
                         help="MuJoCo world: 6 (default) or 4 (heave and pitch held)")
     args = parser.parse_args()
     columns = ("total", *PARTS, "plumbing")
