@@ -101,7 +101,8 @@ def _add_polar(sub) -> None:
     parser = sub.add_parser("polar", help="polar diagram (speed vs true wind angle) of a boat")
     parser.add_argument("boat")
     parser.add_argument("--controller", default="saoud",
-                        help="sail law + heading rudder by name (saoud, briere, pid, best, ...)")
+                        help="sail law + heading rudder by name (saoud, briere, pid, best, ...), "
+                             "module:factory or file.py:factory")
     parser.add_argument("--compare", help="other controllers to compare, comma separated "
                                           "('best' = brute-force fixed-sail vel_max)")
     parser.add_argument("--world", default="mujoco", choices=choices(World))

@@ -59,7 +59,7 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
             tws_axis.append(float(s))
             twa_axis.append(float(a))
     spec = {
-        "name": f"polar-{boat}-{controller}", "boat": boat, "task": "heading_hold",
+        "name": f"polar-{boat}-{sweep.controller_label(controller)}", "boat": boat, "task": "heading_hold",
         "world": world, "controller": controller, "duration": float(duration), "seeds": [0],
         "metrics": ["steady_speed", "steady_heel"],
         "options": {"task.gusts": False, "task.wander": False, "task.desired_heading_deg": 0.0,
@@ -111,8 +111,9 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
                       options=options)
     # a polar re-run with other winds or duration goes into the same folder (the table keeps
     # this run's rows only): the sweep may replace another spec there (exclusive=False)
-    table = sweep.run(spec, Path(out) / f"sweep-{controller}", scheduler=scheduler, workers=workers,
-                      progress=progress, exclusive=False)
+    folder = Path(out) / f"sweep-{sweep.controller_label(controller)}"
+    table = sweep.run(spec, folder, scheduler=scheduler, workers=workers, progress=progress,
+                      exclusive=False)
     table = table.rename(columns={"task.wind_speed": "tws", "task.wind_from_deg": "twa",
                                   "steady_speed": "speed", "steady_heel": "heel"})
     ok = table[table["status"] == "ok"]
@@ -353,7 +354,8 @@ def run_cli(args) -> int:
     from .params import get_boat
 
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
-    out = out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{args.controller}")
+    label = sweep.controller_label(args.controller)
+    out = out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{label}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
     frames = {}
     for name in names:
@@ -363,15 +365,15 @@ def run_cli(args) -> int:
                                world=args.world, duration=args.duration,
                                scheduler=args.scheduler, workers=args.workers,
                                progress=not args.no_progress)
-        frames[name].to_csv(out / f"polar_{name}.csv", index=False)
+        frames[name].to_csv(out / f"polar_{sweep.controller_label(name)}.csv", index=False)
     main_frame = frames[args.controller]
-    png = out / f"polar_{args.controller}.png"
+    png = out / f"polar_{sweep.controller_label(args.controller)}.png"
     plot_polar(main_frame, png, f"{args.boat}, {args.controller} ({args.world})")
     for tws, best in best_vmg(main_frame).items():
         (au, vu), (ad, vd) = best["upwind"], best["downwind"]
         print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
               f"downwind {vd:.2f} m/s at {ad:g} deg")
-    print(f"wrote {png} and {out / f'polar_{args.controller}.csv'}")
+    print(f"wrote {png} and {out / f'polar_{sweep.controller_label(args.controller)}.csv'}")
     if len(frames) > 1:
         _write_comparison(args, frames, out)
     return 0

@@ -293,7 +293,8 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                     "with 'sailmujoco video' instead (headless: xvfb-run sailmujoco view ...).")
     parser.add_argument("boat")
     parser.add_argument("task")
-    parser.add_argument("--controller", required=True, help="registered controller (pid, saoud, ...)")
+    parser.add_argument("--controller", required=True,
+                        help="a registered controller (pid, saoud, ...), module:factory or file.py:factory")
     parser.add_argument("--world", default="mujoco", choices=choices(World),
                         help="paper: the paper's reduced model, drawn as the 6-DOF boat posed from its state")
     parser.add_argument("--seconds", type=POSITIVE_SECONDS,

@@ -99,7 +99,7 @@ def test_without_a_display_a_bad_name_is_named_not_passed_on_to_video(capsys):
 
     assert main(["view", "wille_yacht", "heading_hold", "--controller", "nope"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "controller = 'nope' is not one of: " in err[0] and "pid" in err[0]
+    assert len(err) == 1 and "unknown controller 'nope'" in err[0] and "pid" in err[0]
     assert "sailmujoco video" not in err[0]
 
 

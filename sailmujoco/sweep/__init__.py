@@ -71,7 +71,14 @@ disk, the table, the JSON form of values), :mod:`.controllers` (controllers by n
 
 from __future__ import annotations
 
-from .controllers import ENTRY_POINTS, controller_factories, controller_factory, make_controller
+from .controllers import (
+    ENTRY_POINTS,
+    controller_factories,
+    controller_factory,
+    controller_label,
+    make_controller,
+    register_controller,
+)
 from .engine import CONNECT_TIMEOUT_S, MAX_LOCAL_WORKERS, Engine
 from .errors import SweepError
 from .runs import execute, execute_job, job_id, lost, run, run_jobs, run_many, summarise
@@ -92,6 +99,7 @@ from .store import ResultStore, decode, encode
 
 __all__ = ["CONNECT_TIMEOUT_S", "ENTRY_POINTS", "MAX_LOCAL_WORKERS", "NAMESPACES", "TOP_KEYS",
            "Engine", "ResultStore", "SweepError", "check_folder", "controller_factories",
-           "controller_factory", "decode", "encode", "env_choices", "env_options", "execute",
-           "execute_job", "expand", "job_id", "load_spec", "lost", "make_controller", "run",
-           "run_id", "run_jobs", "run_many", "spec_hash", "summarise", "sweep_id", "validate"]
+           "controller_factory", "controller_label", "decode", "encode", "env_choices", "env_options",
+           "execute", "execute_job", "expand", "job_id", "load_spec", "lost", "make_controller",
+           "register_controller", "run", "run_id", "run_jobs", "run_many", "spec_hash", "summarise",
+           "sweep_id", "validate"]

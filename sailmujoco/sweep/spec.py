@@ -13,7 +13,6 @@ import hashlib
 import inspect
 import itertools
 import json
-import math
 import re
 from pathlib import Path
 
@@ -22,8 +21,9 @@ import numpy as np
 from ..names import check_known
 from ..options import PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
-from .controllers import controller_factories, controller_factory, factory_options
+from .controllers import controller_factory, factory_options, portable_name
 from .errors import SweepError
+from .kinds import check_kinds, signature_defaults
 
 TOP_KEYS = ("name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
             "options", "grid", "zip", "trajectory_rate")
@@ -93,18 +93,19 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
     if not isinstance(spec, dict):
         raise SweepError("a sweep description must be a table (dict)")
     check_known(spec, TOP_KEYS, source, kind="key", error=SweepError)
-    choices = {"boat": sorted(BOATS), "task": list(TASKS), "world": list(WORLDS),
-               "controller": sorted(controller_factories())}
+    choices = {"boat": sorted(BOATS), "task": list(TASKS), "world": list(WORLDS)}
     spec = {"world": "mujoco", **spec}  # as suite.load: the MuJoCo world unless said
     for key in ("boat", "task", "world", "controller"):
         if key not in spec:
-            raise SweepError(f"missing key {key!r} (one of: {', '.join(choices[key])})")
+            listed = choices.get(key, ["a registered name, 'module:factory' or 'file.py:factory'"])
+            raise SweepError(f"missing key {key!r} (one of: {', '.join(listed)})")
         if not isinstance(spec[key], str):
             raise SweepError(f"{key} must be a string, got {spec[key]!r}")
     for key, allowed in choices.items():
         if spec[key] not in allowed:
             raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}")
-    out = dict(spec)
+    controller_factory(spec["controller"])  # an unknown name or a bad import path: one line
+    out = dict(spec, controller=portable_name(spec["controller"]))
     _check_scalars(out)
     _check_tables(out, source)
     runs = expand(out)
@@ -170,35 +171,6 @@ def _distinct(runs: list[dict], key: str) -> list[dict]:
     return list(seen.values())
 
 
-def _signature_defaults(fn) -> dict:
-    """``{name: (default, None allowed)}`` of ``fn``'s parameters that have a default."""
-    return {name: (p.default, p.default is None or "None" in str(p.annotation))
-            for name, p in inspect.signature(fn).parameters.items() if p.default is not p.empty}
-
-
-def _check_kinds(namespace: str, options: dict, defaults: dict) -> None:
-    """Each option of the kind its default (``defaults``: name -> (default, None allowed)) has:
-    true/false for a flag, a finite number for a number, text for text."""
-    for name, value in options.items():
-        if name not in defaults:
-            continue
-        default, none_ok = defaults[name]
-        if value is None and none_ok:
-            continue
-        if isinstance(default, bool):
-            ok, kind = isinstance(value, bool), "true or false"
-        elif isinstance(default, (int, float)):
-            ok = (isinstance(value, (int, float)) and not isinstance(value, bool)
-                  and math.isfinite(value))
-            kind = "a finite number"
-        elif isinstance(default, str):
-            ok, kind = isinstance(value, str), "a string"
-        else:
-            continue
-        if not ok:
-            raise SweepError(f"{namespace}.{name} = {value!r}: must be {kind}")
-
-
 def _check_values(spec: dict, runs: list[dict]) -> None:
     """Check every run's option values before any run starts: each distinct boat, task and
     controller option set is built once, and the environment once per distinct ``env.`` set
@@ -219,7 +191,7 @@ def _check_values(spec: dict, runs: list[dict]) -> None:
     env_defaults = {name: (default, False) for name, default in env_options().items()}
     env = None
     for r in _distinct(runs, "env_options"):
-        _check_kinds("env", r["env_options"], env_defaults)
+        check_kinds("env", r["env_options"], env_defaults)
         for key, allowed in env_choices().items():  # also where the paper worlds ignore them
             if key in r["env_options"] and r["env_options"][key] not in allowed:
                 raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}")
@@ -231,7 +203,7 @@ def _check_values(spec: dict, runs: list[dict]) -> None:
         env = env or built
     factory = controller_factory(spec["controller"])
     for r in _distinct(runs, "controller_options"):
-        _check_kinds("controller", r["controller_options"], _signature_defaults(factory))
+        check_kinds("controller", r["controller_options"], signature_defaults(factory))
         try:
             factory(env, **r["controller_options"])
         except (TypeError, ValueError) as err:

@@ -31,7 +31,8 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                     f"platform: {FIX}.")
     parser.add_argument("boat")
     parser.add_argument("task")
-    parser.add_argument("--controller", required=True, help="registered controller (pid, saoud, ...)")
+    parser.add_argument("--controller", required=True,
+                        help="a registered controller (pid, saoud, ...), module:factory or file.py:factory")
     parser.add_argument("--world", default="mujoco", choices=choices(World))
     parser.add_argument("--seconds", type=float, default=30.0, help="simulated seconds (default 30)")
     parser.add_argument("--out", required=True, help="output file (.mp4); missing folders are made")
