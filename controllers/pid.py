@@ -1,6 +1,6 @@
 """A PID heading controller: the baseline rudder law.
 
-sigma = -(K_p e + K_i int e dt + K_d de/dt), e = wrap(heading - desired heading), with the
+sigma = K_p e + K_i int e dt + K_d de/dt, e = wrap(heading - desired heading), with the
 derivative taken from the measured yaw rate (de/dt = d(heading)/dt = -yaw_rate, since the
 heading turns clockwise and yaw_rate counter-clockwise). A positive rudder turns the boat to
 port, i.e. lowers the heading, so a heading above the desired one asks for positive rudder.

@@ -26,6 +26,8 @@ from __future__ import annotations
 import inspect
 import math
 
+import numpy as np
+
 from .names import check_known
 from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
 from .params import BOATS, BoatParams, get_boat
@@ -231,12 +233,12 @@ def rollout(env, controller):
     env : SailEnvironment
         An environment from :func:`load`.
     controller : callable
-        ``controller(timestep) -> action``; its ``reset(seed)``, if it has one, is called with
-        the task's seed first.
+        ``controller(timestep) -> action`` (the protocol of :mod:`sailmujoco.controllers.base`);
+        its ``reset(seed)``, if it has one, is called with the task's seed first. A rudder law
+        and a sail law (``law(observation) -> angle``) go together into
+        ``sailmujoco.controllers.base.Composite(rudder, sail)``; given anything else, the first
+        step says what is needed, in one line.
     """
-    import math
-
-    import numpy as np
     import pandas as pd
 
     def row(observation):
@@ -251,11 +253,38 @@ def rollout(env, controller):
                 "awa": float(observation["apparent_wind_angle"]),
                 "aws": float(observation["apparent_wind_speed"])}
 
+    if isinstance(controller, (tuple, list)) or not callable(controller):
+        raise TypeError(f"suite.rollout: the controller must be callable, controller(timestep) -> "
+                        f"[rudder, sail], got {type(controller).__name__}; {_LAWS}")
     if hasattr(controller, "reset"):
         controller.reset(env.task.seed)
     timestep = env.reset()
     rows = [row(timestep.observation)]
+    if not timestep.last():
+        timestep = env.step(_first_action(env, controller, timestep))
+        rows.append(row(timestep.observation))
     while not timestep.last():
         timestep = env.step(controller(timestep))
         rows.append(row(timestep.observation))
     return pd.DataFrame(rows)
+
+
+_LAWS = ("a rudder law and a sail law (observation -> angle [rad]) go together into "
+         "sailmujoco.controllers.base.Composite(rudder, sail), which is one")
+
+
+def _first_action(env, controller, timestep):
+    """The controller's first action, checked: a controller takes the dm_env TimeStep and returns
+    the task's action; anything else is one line saying what it needs."""
+    try:
+        action = controller(timestep)
+    except (TypeError, KeyError, IndexError) as err:
+        raise TypeError(f"suite.rollout: the controller failed on its first TimeStep "
+                        f"({type(err).__name__}: {err}); a controller takes the dm_env TimeStep "
+                        f"(its observation is timestep.observation) and returns [rudder, sail]; "
+                        f"{_LAWS}") from err
+    shape = env.action_spec().shape
+    if np.shape(action) != shape:
+        raise ValueError(f"suite.rollout: the controller returned {action!r}; the action is "
+                         f"[rudder, sail] [rad], shape {shape}; {_LAWS}")
+    return action

@@ -124,3 +124,23 @@ def test_an_option_of_the_wrong_kind_is_one_line(law_file):
         sweep.make_controller(f"{law_file}:make", env, gain="high")
     with pytest.raises(SweepError, match=r"controller.gain = 'high': must be a finite number"):
         sweep.validate({**_spec(f"{law_file}:make"), "grid": {"controller.gain": ["high"]}})
+
+
+def test_rollout_says_what_a_law_needs():
+    """A rudder law alone (observation -> angle) is not a controller: rollout says in one line
+    what it takes, and a Composite of the law with a sail law runs."""
+    from sailmujoco.controllers.base import Composite
+    from sailmujoco.controllers.pid import PIDHeading
+    from sailmujoco.controllers.sail_laws import LeewardSail
+
+    env = suite.load("saoud_robot", "heading_hold", seed=0, time_limit=3)
+    rudder = PIDHeading()
+    with pytest.raises(TypeError, match=r"takes the dm_env TimeStep .*Composite\(rudder, sail\)") as err:
+        suite.rollout(env, rudder)
+    assert "\n" not in str(err.value)
+    with pytest.raises(TypeError, match="must be callable"):
+        suite.rollout(env, (rudder, LeewardSail()))
+    with pytest.raises(ValueError, match=r"returned 0.1; the action is \[rudder, sail\] \[rad\], shape \(2,\)"):
+        suite.rollout(env, lambda timestep: 0.1)
+    log = suite.rollout(env, Composite(rudder, LeewardSail()))
+    assert log["t"].iloc[-1] == pytest.approx(3.0)
