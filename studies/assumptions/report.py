@@ -35,4 +35,4 @@ def report(analysis: Analysis, smoke: bool) -> str:
         "heeled sail's drive, acting high up, turns a boat whose pitch is held to windward; with a "
         "fixed rudder the printed model's heading drifts 33° from the rigid boat's in 60 s of 6 m/s "
         "wind, while the rigid form agrees within 1°.")
-    return f"# {r.title}\n\n" + "\n".join(r.parts)
+    return r.text()

@@ -57,7 +57,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     _six_dof(r, analysis)
     _choices(r)
     _durations(r, analysis)
-    return f"# {r.title}\n\n" + "\n".join(r.parts)
+    return r.text()
 
 
 def _bound(r: Report, analysis: Analysis, h: dict) -> None:

@@ -50,7 +50,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
         text.paragraph(_causes(a))
     text.figure(FIG4, "Fig. 4: position (x north against y east), heading and course controller")
     text.figure(FIG5, "Fig. 5: course over ground, heading and course controller")
-    return f"# {text.title}\n\n" + "\n".join(text.parts)
+    return text.text()
 
 
 def _table2_rows(a: Analysis, smoke: bool) -> list[dict]:

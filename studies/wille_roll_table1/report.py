@@ -82,7 +82,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     text.comparison(_fig8_rows(a.optima, a.tables, a.switch8))
     text.paragraph(_fig8_text(a.tables, a.switch8))
     text.figure(FIGURES["8"], "Fig. 8: mean surge speed (last 50 s) against the desired heel φ_d")
-    return f"# {text.title}\n\n" + "\n".join(text.parts)
+    return text.text()
 
 
 def _table1_rows(a: Analysis, smoke) -> list[dict]:
