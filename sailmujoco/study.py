@@ -73,15 +73,26 @@ class Results:
         Each job list's results, by its name, in the order of its items.
     seconds : float
         Wall time of the runs (all passes), for the report.
-    records : dict of str to list
-        Each sweep's stored run records (parameters, metrics, the trajectory where its spec asks
-        for one), by its folder, in the sweep's run order.
+    root : pathlib.Path, optional
+        The study's folder, where the sweeps' stores are (:meth:`records` reads them).
     """
 
     sweeps: dict = field(default_factory=dict)
     jobs: dict = field(default_factory=dict)
     seconds: float = 0.0
-    records: dict = field(default_factory=dict)
+    root: Path | None = None
+
+    def records(self, folder: str) -> list[dict]:
+        """The run records a sweep stored (parameters, metrics, the trajectory where its spec
+        asks for one), in the order of its table's rows (the sweep's run order), read on demand.
+
+        Parameters
+        ----------
+        folder : str
+            The sweep's folder, as its :class:`Runs` entry names it.
+        """
+        stored = sweep.ResultStore(Path(self.root) / folder).done()
+        return [stored[run_id] for run_id in self.sweeps[folder]["run_id"] if run_id in stored]
 
     def merged(self, other: Results) -> Results:
         """These results and ``other``'s together (``other`` wins a name held by both).
@@ -92,7 +103,7 @@ class Results:
             The results of a later pass.
         """
         return Results({**self.sweeps, **other.sweeps}, {**self.jobs, **other.jobs},
-                       self.seconds + other.seconds, {**self.records, **other.records})
+                       self.seconds + other.seconds, self.root or other.root)
 
 
 @dataclass(frozen=True)
@@ -177,19 +188,11 @@ def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False
             shutil.rmtree(store, ignore_errors=True)
         stores.append((function, list(items), store))
     if not sweeps and not stores:
-        return Results()
+        return Results(root=out)
     tables, results = sweep.run_many(sweeps, stores, engine=engine, resume=resume,
                                      progress=progress, label=label or runs.label)
     return Results({folder: table for (_, folder), table in zip(runs.sweeps, tables, strict=True)},
-                   dict(zip(runs.jobs, results, strict=True)), time.perf_counter() - start,
-                   {folder: _records(spec, out / folder) for spec, folder in runs.sweeps})
-
-
-def _records(spec: dict, folder: Path) -> list[dict]:
-    """The records a sweep stored in ``folder``, in its run order (a run not stored is left out)."""
-    stored = sweep.ResultStore(folder).done()
-    ids = [run["run_id"] for run in sweep.expand(sweep.validate(spec))]
-    return [stored[run_id] for run_id in ids if run_id in stored]
+                   dict(zip(runs.jobs, results, strict=True)), time.perf_counter() - start, out)
 
 
 def run_study(study: Study, out: Path, engine: sweep.Engine, *, smoke: bool = False,

@@ -117,7 +117,7 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     smoke : bool
         The study's short pass.
     """
-    rows = [row for key in SWEPT for row in sweep_rows(key, results.records[sweep_folder(key)])]
+    rows = [row for key in SWEPT for row in sweep_rows(key, results.records(sweep_folder(key)))]
     switches = results.jobs[SWITCHES_JOB]
     rows += [r for r in switches if r.get("variant") == "baseline"]  # viel_boat's Fig. 3 column
     switches = [r for r in switches if r.get("variant") != "baseline"]
