@@ -128,18 +128,6 @@ class Report:
         """The report as Markdown: the title, then the parts in order."""
         return f"# {self.title}\n\n" + "\n".join(self.parts)
 
-    def write(self, out: Path) -> Path:
-        """Write :meth:`text` to ``out/report.md``; returns its path.
-
-        Parameters
-        ----------
-        out : pathlib.Path
-            The study's folder.
-        """
-        path = Path(out) / "report.md"
-        path.write_text(self.text())
-        return path
-
 
 def _cell(value) -> str:
     if value is None:
