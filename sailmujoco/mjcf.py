@@ -27,6 +27,7 @@ Sail modes:
 
 from __future__ import annotations
 
+import functools
 import math
 from importlib import resources
 from pathlib import Path
@@ -349,6 +350,12 @@ def scene_xml(boat: str) -> str:
     return path.read_text()
 
 
+@functools.cache
+def _built_in_lengths() -> dict:
+    """The built-in boats' hull lengths [m], built once per process."""
+    return {name: get_boat(name).hull.length for name in BUILT_IN}
+
+
 def scene_for(p: BoatParams) -> str:
     """The scene (sea, sky, light, cameras) of boat ``p``: its own ``xml/<name>/scene.xml``, or,
     for a boat registered at run time, the scene of the built-in boat nearest in hull length
@@ -361,8 +368,8 @@ def scene_for(p: BoatParams) -> str:
     """
     if xml_root().joinpath(p.name, "scene.xml").is_file():
         return scene_xml(p.name)
-    built_in = {name: get_boat(name).hull.length for name in BUILT_IN}
-    nearest = min(built_in, key=lambda name: abs(built_in[name] - p.hull.length))
+    lengths = _built_in_lengths()
+    nearest = min(lengths, key=lambda name: abs(lengths[name] - p.hull.length))
     text = scene_xml(nearest)
     return (text.replace(f'<include file="{nearest}.xml"/>', f'<include file="{p.name}.xml"/>')
             .replace(f'<mujoco model="{nearest} scene">', f'<mujoco model="{p.name} scene">'))
