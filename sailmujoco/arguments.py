@@ -120,6 +120,60 @@ def setting(text: str) -> tuple[str, object]:
     return key.strip(), literal(value.strip())
 
 
+def add_controller_arguments(parser: argparse.ArgumentParser, default: str | None = None) -> None:
+    """``--controller NAME`` and the repeatable ``--option KEY=VALUE`` of its factory.
+
+    Parameters
+    ----------
+    parser : argparse.ArgumentParser
+        The command's parser.
+    default : str, optional
+        The controller without ``--controller``; None makes the option required.
+    """
+    parser.add_argument("--controller", required=default is None, default=default, metavar="NAME",
+                        help="a registered controller (sailmujoco list), 'package.module:factory' or "
+                             "'path/to/file.py:factory' (no package, no reinstall)")
+    parser.add_argument("--option", type=setting, action="append", default=[], metavar="KEY=VALUE",
+                        help="a keyword of the controller's factory, e.g. kp=2.0 (repeatable; the "
+                             "value a number, true/false, a list or text); checked against the "
+                             "factory's keywords and the kinds of their defaults")
+
+
+def controller_options(args) -> dict:
+    """``--option`` of ``args.controller`` as a dict, checked against its factory's keywords
+    (one line naming an unknown option, or a value of the wrong kind, with what is accepted).
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``controller`` and ``option`` (:func:`add_controller_arguments`).
+
+    Returns
+    -------
+    dict
+    """
+    from .sweep import check_controller_options
+
+    options = dict(args.option)
+    check_controller_options(args.controller, options)
+    return options
+
+
+class HelpFormatter(argparse.RawDescriptionHelpFormatter):
+    """Descriptions and epilogs as written (examples keep their lines), and every option's
+    default in its help unless the help already names it (or the default is unset)."""
+
+    def _get_help_string(self, action):
+        text = action.help or ""
+        default = action.default
+        if ("default" in text or default is None or default is False or default == []
+                or default == argparse.SUPPRESS or not action.option_strings):
+            return text
+        values = default if isinstance(default, (list, tuple)) else [default]
+        shown = ",".join(f"{v:g}" if isinstance(v, float) else str(v) for v in values)
+        return f"{text} (default: {shown})".strip()
+
+
 def check_settings(settings, task: str | None = None) -> None:
     """``--set`` of ``video`` and ``view``: every key one that ``suite.load`` takes for ``task``
     (one line with the nearest name otherwise); the episode's seed and length have options of

@@ -337,6 +337,13 @@ def _cell(value, digits: int) -> str:
     return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
 
 
+DESCRIPTION = f"""\
+The steady speed of BOAT at every true wind speed x true wind angle, each point a heading_hold
+run in a steady wind (no gusts) from TWA off the starboard bow, its speed the mean over the
+last {STEADY_WINDOW_S:g} s. Writes polar_<controller>.png and .csv into --out, and prints the best VMG upwind
+and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept."""
+
+
 def run_cli(args) -> int:
     """The ``polar`` sub-command: the polar of a boat and sail law (and comparisons), PNG + CSV.
 

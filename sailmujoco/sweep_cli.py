@@ -1,21 +1,80 @@
 """``sailmujoco sweep FILE``: run a sweep file on the embedded cluster (or a Dask scheduler),
-print a summary and where its table lies."""
+print a summary and where its table lies; ``sailmujoco sweep --example`` prints a sweep file
+that runs as printed."""
 
 from __future__ import annotations
 
 import sys
+import textwrap
 from pathlib import Path
 
 from .arguments import INTERRUPTED
 
+EXAMPLE = '''\
+# A sweep: every combination of [grid], for each row of [zip], for each seed, is one run.
+# Run it with: sailmujoco sweep example.toml --workers 2
+name = "example"              # results go to results/sweeps/example/ (default: the file's stem)
+boat = "saoud_robot"          # sailmujoco list: the boats, tasks, worlds and controllers
+task = "heading_hold"
+world = "mujoco"              # or "paper": the paper's reduced model (default: mujoco)
+controller = "pid"            # or "my_module:factory", or "path/to/my_law.py:factory"
+duration = 20.0               # simulated seconds per run (default: the task's)
+seeds = [0, 1]                # each seed runs every combination (default [0])
+metrics = ["mean_surge", "heading_error_rms"]  # default: every metric of the task
+
+[options]                     # the same for every run; keys are "<namespace>.<name>"
+"env.hydrostatics" = "geometric"   # env.: suite.load's physics options, control_timestep
+"task.wind_speed" = 5.0            # task.: the task's options (m/s)
+
+[grid]                        # every combination of these lists
+"controller.kp" = [0.5, 1.0]       # controller.: the controller factory's keywords
+
+[zip]                         # lists of equal length, taken together (not crossed)
+"task.wind_from_deg" = [60.0, 90.0]
+"task.desired_heading_deg" = [0.0, 10.0]
+'''
+
+
+def epilog() -> str:
+    """The end of ``sailmujoco sweep --help``: the sweep file's keys and option namespaces, from
+    :mod:`sailmujoco.sweep.spec`, and examples.
+
+    Returns
+    -------
+    str
+    """
+    from .sweep import spec
+
+    keys = "\n".join(f"  {key:16s}{text}" for key, text in spec.KEYS.items())
+    namespaces = "\n".join(f"  {ns + '.':12s}{text}" for ns, text in spec.NAMESPACE_HELP.items())
+    choices = spec.env_choices()
+    names = [f"{n} ({'|'.join(str(c) for c in choices[n])})" if n in choices else n
+             for n in sorted(spec.env_option_names())]
+    env = textwrap.fill(", ".join(names), 90, initial_indent="  env. options: ",
+                        subsequent_indent="    ", break_on_hyphens=False)
+    return (f"keys of a sweep file (TOML):\n{keys}\n\n"
+            f"option keys of [options], [grid] and [zip] are \"<namespace>.<name>\":\n{namespaces}\n"
+            f"{env}\n"
+            "    (the others true or false: a force model on or off; control_timestep in s)\n"
+            "  task., boat. and controller. options: the keywords of the task, boat factory and\n"
+            "  controller factory (a misspelt one is refused, naming the accepted ones)\n\n"
+            "every run's options and the metrics are checked before any run starts. Each finished\n"
+            "run is kept in <out>/runs/; the table is <out>/results.parquet and results.csv.\n\n"
+            "examples:\n"
+            "  sailmujoco sweep --example > example.toml\n"
+            "  sailmujoco sweep example.toml --workers 2\n"
+            "  sailmujoco sweep example.toml --resume          # after Ctrl-C: only the missing runs\n"
+            "  sailmujoco sweep example.toml --scheduler tcp://host:8786")
+
 
 def run_cli(args) -> int:
-    """The ``sweep`` sub-command: run a sweep file, write its table.
+    """The ``sweep`` sub-command: run a sweep file, write its table (or print the example).
 
     Parameters
     ----------
     args : argparse.Namespace
-        ``file``, ``out``, ``scheduler``, ``workers``, ``resume``, ``retries``, ``no_progress``.
+        ``file``, ``example``, ``out``, ``scheduler``, ``workers``, ``resume``, ``retries``,
+        ``no_progress``.
 
     Returns
     -------
@@ -24,6 +83,13 @@ def run_cli(args) -> int:
     """
     from . import sweep
 
+    if args.example:
+        if args.file:
+            raise ValueError("give a sweep FILE or --example, not both")
+        print(EXAMPLE, end="")
+        return 0
+    if not args.file:
+        raise ValueError("give a sweep FILE (TOML); 'sailmujoco sweep --example' prints one")
     spec = sweep.load_spec(args.file)
     out = Path(args.out or Path("results") / "sweeps" / spec["name"])
     sweep.check_folder(spec, out)  # a file, or another sweep's folder: one line, exit 2

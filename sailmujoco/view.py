@@ -28,7 +28,16 @@ from contextlib import nullcontext
 
 import numpy as np
 
-from .arguments import POSITIVE_SECONDS, SEED, check_settings, number, setting
+from .arguments import (
+    POSITIVE_SECONDS,
+    SEED,
+    HelpFormatter,
+    add_controller_arguments,
+    check_settings,
+    controller_options,
+    number,
+    setting,
+)
 from .options import World, choices
 from .screenshot import screenshot
 from .video import (
@@ -52,9 +61,10 @@ KEYS = """keys and mouse:
   Ctrl+P           MuJoCo's own screenshot (screenshot.png in the current folder)
   closing the window stops the run"""
 def _video_hint(args) -> str:
+    world = f" --world {args.world}" if args.world != "mujoco" else ""
+    options = "".join(f" --option {key}={value!r}" for key, value in args.option)
     return (f"record a video instead: sailmujoco video {args.boat} {args.task} "
-            f"--controller {args.controller}{' --world ' + args.world if args.world != 'mujoco' else ''}"
-            f" --out results/{args.boat}_{args.task}.mp4")
+            f"--controller {args.controller}{options}{world} --out results/{args.boat}_{args.task}.mp4")
 
 
 class Keys:
@@ -271,6 +281,14 @@ def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, inte
 
 
 # ----------------------------------------------------------------------------- command line
+EXAMPLES = """examples:
+  sailmujoco view wille_yacht heading_hold --controller pid
+  sailmujoco view saoud_robot heading_hold --controller pid --option kp=2.0 --set wind_speed=4
+  sailmujoco view saoud_robot heading_hold --controller my_law.py:make --paused
+  xvfb-run -a sailmujoco view wille_yacht heading_hold --controller pid --seconds 10 \\
+      --screenshot view.png        # headless: a virtual display"""
+
+
 def add_parser(subparsers) -> argparse.ArgumentParser:
     """Add ``view`` to the ``sailmujoco`` sub-commands.
 
@@ -286,15 +304,14 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     """
     parser = subparsers.add_parser(
         "view", help="watch a task run in MuJoCo's interactive viewer (needs a display)",
-        formatter_class=argparse.RawDescriptionHelpFormatter, epilog=KEYS,
+        formatter_class=HelpFormatter, epilog=KEYS + "\n\n" + EXAMPLES,
         description="Run TASK on BOAT under a controller in MuJoCo's interactive viewer, at real\n"
                     "time, with the wind arrow, force arrows and heel/speed text of the videos.\n"
                     "Without a display it says so in one line (exit status 2): record a video\n"
                     "with 'sailmujoco video' instead (headless: xvfb-run sailmujoco view ...).")
-    parser.add_argument("boat")
-    parser.add_argument("task")
-    parser.add_argument("--controller", required=True,
-                        help="a registered controller (pid, saoud, ...), module:factory or file.py:factory")
+    parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
+    parser.add_argument("task", help="a registered task (sailmujoco list)")
+    add_controller_arguments(parser)
     parser.add_argument("--world", default="mujoco", choices=choices(World),
                         help="paper: the paper's reduced model, drawn as the 6-DOF boat posed from its state")
     parser.add_argument("--seconds", type=POSITIVE_SECONDS,
@@ -305,7 +322,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--paused", action="store_true", help="start paused (space runs)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
     parser.add_argument("--no-overlay", action="store_true", help="no text")
-    parser.add_argument("--seed", type=SEED, default=0)
+    parser.add_argument("--seed", type=SEED, default=0, help="seeds the task and the controller")
     parser.add_argument("--screenshot", metavar="PATH",
                         help="at the end, save the window as this PNG (X11 displays)")
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
@@ -333,8 +350,10 @@ def run_cli(args) -> int:
 
     # names first, so that without a display the suggested video command is one that runs
     validate({"boat": args.boat, "task": args.task, "world": args.world, "controller": args.controller})
+    options = controller_options(args)
     try:
         result = watch(args.boat, args.task, args.controller, world=args.world, seconds=args.seconds,
+                       controller_options=options,
                        seed=args.seed, fps=args.fps, forces=not args.no_forces,
                        overlay=not args.no_overlay, paused=args.paused,
                        screenshot_path=args.screenshot, **dict(args.set))

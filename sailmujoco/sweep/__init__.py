@@ -73,6 +73,7 @@ from __future__ import annotations
 
 from .controllers import (
     ENTRY_POINTS,
+    check_controller_options,
     controller_factories,
     controller_factory,
     controller_label,
@@ -98,8 +99,8 @@ from .spec import (
 from .store import ResultStore, decode, encode
 
 __all__ = ["CONNECT_TIMEOUT_S", "ENTRY_POINTS", "MAX_LOCAL_WORKERS", "NAMESPACES", "TOP_KEYS",
-           "Engine", "ResultStore", "SweepError", "check_folder", "controller_factories",
-           "controller_factory", "controller_label", "decode", "encode", "env_choices", "env_options",
-           "execute", "execute_job", "expand", "job_id", "load_spec", "lost", "make_controller",
-           "register_controller", "run", "run_id", "run_jobs", "run_many", "spec_hash", "summarise",
-           "sweep_id", "validate"]
+           "Engine", "ResultStore", "SweepError", "check_controller_options", "check_folder",
+           "controller_factories", "controller_factory", "controller_label", "decode", "encode",
+           "env_choices", "env_options", "execute", "execute_job", "expand", "job_id", "load_spec",
+           "lost", "make_controller", "register_controller", "run", "run_id", "run_jobs", "run_many",
+           "spec_hash", "summarise", "sweep_id", "validate"]

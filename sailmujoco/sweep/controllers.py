@@ -209,9 +209,25 @@ def make_controller(name: str, env, **options):
         The factory's options: a name it does not take refuses in one line with the nearest; a
         value of another kind than its default (``kp="two"``) in one line naming it.
     """
+    factory = check_controller_options(name, options)
+    return factory(env, **options)
+
+
+def check_controller_options(name: str, options: dict):
+    """Check the options of controller ``name`` against its factory's keywords (names, and the
+    kinds of their defaults) without building it; returns the factory.
+
+    Parameters
+    ----------
+    name : str
+        A registered controller or an import path (module docstring).
+    options : dict
+        The factory's options: a name it does not take refuses in one line with the nearest; a
+        value of another kind than its default (``kp="two"``) in one line naming it.
+    """
     factory = controller_factory(name)
     accepted = factory_options(factory)
     if accepted is not None:
         check_known(options, accepted, f"controller {name!r}", error=SweepError)
     check_kinds("controller", options, signature_defaults(factory))
-    return factory(env, **options)
+    return factory

@@ -25,7 +25,7 @@ def signature_defaults(fn) -> dict:
             for name, p in inspect.signature(fn).parameters.items() if p.default is not p.empty}
 
 
-def check_kinds(namespace: str, options: dict, defaults: dict) -> None:
+def check_kinds(namespace: str, options: dict, defaults: dict, where: str = "") -> None:
     """Each option of the kind its default has: true/false for a flag, a finite number for a
     number, text for text; one line naming the first that is not.
 
@@ -37,6 +37,8 @@ def check_kinds(namespace: str, options: dict, defaults: dict) -> None:
         The options given.
     defaults : dict
         ``name -> (default, None allowed)`` (:func:`signature_defaults`).
+    where : str
+        Appended to the message (``", in sweep file 'x.toml'"``).
     """
     for name, value in options.items():
         if name not in defaults:
@@ -55,4 +57,4 @@ def check_kinds(namespace: str, options: dict, defaults: dict) -> None:
         else:
             continue
         if not ok:
-            raise SweepError(f"{namespace}.{name} = {value!r}: must be {kind}")
+            raise SweepError(f"{namespace}.{name} = {value!r}: must be {kind}{where}")

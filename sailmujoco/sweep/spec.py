@@ -25,10 +25,30 @@ from .controllers import controller_factory, factory_options, portable_name
 from .errors import SweepError
 from .kinds import check_kinds, signature_defaults
 
-TOP_KEYS = ("name", "boat", "task", "world", "controller", "duration", "seeds", "metrics",
-            "options", "grid", "zip", "trajectory_rate")
-NAMESPACES = ("env", "task", "boat", "controller")
+KEYS = {  # a sweep file's top-level keys, what each holds (``sweep --help`` lists them)
+    "name": "the sweep's name: its folder results/sweeps/<name> (default: the file's stem)",
+    "boat": "a registered boat (required)",
+    "task": "a registered task (required)",
+    "world": "'mujoco' (the 6-DOF boat, default) or 'paper' (the paper's reduced model)",
+    "controller": "a registered controller, 'module:factory' or 'file.py:factory' (required)",
+    "duration": "simulated seconds per run (default: the task's)",
+    "seeds": "list of seeds, each a run of every combination (default [0])",
+    "metrics": "the task's metrics to keep in the table (default: all of them)",
+    "trajectory_rate": "Hz: also store x, y, heading, heel, u at this rate in each run's record",
+    "options": "table: 'namespace.name' = value, the same for every run",
+    "grid": "table: 'namespace.name' = [values], every combination of the axes",
+    "zip": "table: 'namespace.name' = [values], equal lengths, taken together, crossed with the grid",
+}
+TOP_KEYS = tuple(KEYS)
+NAMESPACE_HELP = {  # where an option of [options], [grid] or [zip] goes
+    "env": "sailmujoco.suite.load: control_timestep and the physics options",
+    "task": "the task's constructor (wind, references, ...)",
+    "boat": "the boat's parameter factory",
+    "controller": "the controller's factory",
+}
+NAMESPACES = tuple(NAMESPACE_HELP)
 TABLES = ("options", "grid", "zip")
+RUN_KEYS = {"time_limit": "duration", "seed": "seeds"}  # suite.load's keywords a run sets itself
 
 
 def env_options() -> dict:
@@ -36,9 +56,16 @@ def env_options() -> dict:
     ``boat_options``, the ``boat.`` namespace) and ``control_timestep``."""
     from ..suite import load
 
-    defaults = {f.name: f.default for f in dataclasses.fields(PhysicsOptions) if f.name != "boat_options"}
+    fields = {f.name: f.default for f in dataclasses.fields(PhysicsOptions)}
+    defaults = {name: fields[name] for name in env_option_names() if name != "control_timestep"}
     defaults["control_timestep"] = inspect.signature(load).parameters["control_timestep"].default
     return defaults
+
+
+def env_option_names() -> tuple:
+    """The names of the ``env.`` options (:func:`env_options`, without loading the simulation)."""
+    return tuple(f.name for f in dataclasses.fields(PhysicsOptions) if f.name != "boat_options") + (
+        "control_timestep",)
 
 
 def env_choices() -> dict:
@@ -111,7 +138,7 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
     runs = expand(out)
     if not runs:
         raise SweepError("the sweep has no runs (empty grid)")
-    _check_values(out, runs)
+    _check_values(out, runs, source)
     return out
 
 
@@ -153,6 +180,9 @@ def _check_tables(out: dict, source: str) -> None:
                 raise SweepError(f"[{table}] key {key!r}: expected '<namespace>.<name>' with "
                                  f"namespace one of {NAMESPACES}")
             check_known([namespace], NAMESPACES, where, kind="namespace", error=SweepError)
+            if namespace == "env" and name in RUN_KEYS:  # suite.load's, but the run's here
+                raise SweepError(f"{where}: not an env option; give the top-level key "
+                                 f"{RUN_KEYS[name]!r}")
             if allowed[namespace] is not None:
                 check_known([name], allowed[namespace], where, kind=f"{namespace} option",
                             error=SweepError)
@@ -171,43 +201,111 @@ def _distinct(runs: list[dict], key: str) -> list[dict]:
     return list(seen.values())
 
 
-def _check_values(spec: dict, runs: list[dict]) -> None:
+def _check_values(spec: dict, runs: list[dict], source: str = "the sweep description") -> None:
     """Check every run's option values before any run starts: each distinct boat, task and
     controller option set is built once, and the environment once per distinct ``env.`` set
-    (a MuJoCo model build, about 0.05 s)."""
-    from ..params import get_boat
+    (a MuJoCo model build, about 0.05 s); then the metrics asked for."""
+    from ..params import BOATS, get_boat
     from ..suite import TASKS, load
 
+    where = f", in {source}"
+    boat_defaults = signature_defaults(BOATS[spec["boat"]]) if spec["boat"] in BOATS else {}
     for r in _distinct(runs, "boat_options"):
+        check_kinds("boat", r["boat_options"], boat_defaults, where)
         try:
             get_boat(r["boat"], **r["boat_options"])
         except (TypeError, ValueError) as err:
-            raise SweepError(f"boat options {r['boat_options']}: {err}") from None
+            raise SweepError(f"boat options {r['boat_options']}: {err}{where}") from None
+    task_defaults = task_option_defaults(TASKS[spec["task"]])
     for r in _distinct(runs, "task_options"):
+        check_kinds("task", r["task_options"], task_defaults, where)
         try:
             TASKS[r["task"]](seed=0, **r["task_options"])
         except (TypeError, ValueError) as err:
-            raise SweepError(f"task options {r['task_options']}: {err}") from None
+            raise SweepError(f"task options {r['task_options']}: {err}{where}") from None
     env_defaults = {name: (default, False) for name, default in env_options().items()}
     env = None
     for r in _distinct(runs, "env_options"):
-        check_kinds("env", r["env_options"], env_defaults)
+        check_kinds("env", r["env_options"], env_defaults, where)
         for key, allowed in env_choices().items():  # also where the paper worlds ignore them
             if key in r["env_options"] and r["env_options"][key] not in allowed:
-                raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}")
+                raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}{where}")
         try:
             built = load(r["boat"], r["task"], r["world"], seed=r["seed"], time_limit=r.get("duration"),
                          boat_options=r["boat_options"], **r["env_options"], **r["task_options"])
         except (TypeError, ValueError) as err:
-            raise SweepError(f"env options {r['env_options']}: {err}") from None
+            raise SweepError(f"env options {r['env_options']}: {err}{where}") from None
         env = env or built
     factory = controller_factory(spec["controller"])
     for r in _distinct(runs, "controller_options"):
-        check_kinds("controller", r["controller_options"], signature_defaults(factory))
+        check_kinds("controller", r["controller_options"], signature_defaults(factory), where)
         try:
             factory(env, **r["controller_options"])
         except (TypeError, ValueError) as err:
-            raise SweepError(f"controller options {r['controller_options']}: {err}") from None
+            raise SweepError(f"controller options {r['controller_options']}: {err}{where}") from None
+    if spec.get("metrics"):
+        check_metrics(spec["metrics"], runs, source)
+
+
+def task_option_defaults(task_class) -> dict:
+    """``{name: (default, None allowed)}`` of a task's options: its constructor's keywords and
+    its bases' (a subclass's default of a name before its base's).
+
+    Parameters
+    ----------
+    task_class : type
+        A registered task class.
+    """
+    defaults = {}
+    for cls in reversed(task_class.__mro__):
+        init = vars(cls).get("__init__")
+        if init is not None and cls is not object:
+            defaults.update(signature_defaults(init))
+    defaults.pop("seed", None)  # the run's seed, not an option
+    return defaults
+
+
+def metric_names(run: dict) -> set:
+    """The metrics the task of ``run`` reports, with its options: its summary of the initial
+    state (no step is simulated), with ``stopped`` and ``duration``.
+
+    Parameters
+    ----------
+    run : dict
+        A run as :func:`expand` gives it.
+    """
+    from ..suite import load
+
+    env = load(run["boat"], run["task"], run["world"], seed=run["seed"], time_limit=run.get("duration"),
+               boat_options=run["boat_options"], **run["env_options"], **run["task_options"])
+    env.reset()
+    return set(env.task.summarise([env.task.record(env.physics)])) | {"stopped", "duration"}
+
+
+def check_metrics(metrics: list, runs: list[dict], source: str = "the sweep description") -> None:
+    """Refuse, in one line with the nearest name, a metric that no run's task reports.
+
+    Each distinct set of environment and task options is asked for its metric names until
+    every metric asked for is found (one environment build for most sweeps).
+
+    Parameters
+    ----------
+    metrics : list of str
+        The metric names asked for.
+    runs : list of dict
+        The sweep's runs (:func:`expand`).
+    source : str
+        Where the sweep came from, for the message.
+    """
+    known: set = set()
+    for r in _distinct([{**r, "options": [r["env_options"], r["task_options"]]} for r in runs],
+                       "options"):
+        known |= metric_names(r)
+        if known.issuperset(metrics):
+            return
+    check_known(metrics, known, f"'metrics' of {source}", kind="metric", error=SweepError)
+
+
 def expand(spec: dict) -> list[dict]:
     """Every run of a (validated) sweep: options x grid product x zip x seeds.
 

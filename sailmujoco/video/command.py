@@ -4,12 +4,28 @@ from __future__ import annotations
 
 import argparse
 import sys
+import textwrap
 
-from ..arguments import SEED, check_settings, file_argument, setting
+from ..arguments import (
+    SEED,
+    HelpFormatter,
+    add_controller_arguments,
+    check_settings,
+    controller_options,
+    file_argument,
+    setting,
+)
 from ..options import World, choices
 from .gl import FIX, RenderingUnavailable
 from .recording import record
 from .scene import CAMERAS
+
+EXAMPLES = """examples:
+  sailmujoco video wille_yacht heading_hold --controller pid --out results/pid.mp4
+  sailmujoco video saoud_robot heading_hold --controller pid --option kp=2.0 --seconds 20 \\
+      --camera top --set wind_speed=4 --out results/saoud_kp2.mp4 --still results/saoud_kp2.png
+  sailmujoco video saoud_robot heading_hold --controller my_law.py:make --option gain=0.5 \\
+      --out results/my_law.mp4"""
 
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
@@ -27,30 +43,33 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     """
     parser = subparsers.add_parser(
         "video", help="record a task run as an mp4 (offscreen MuJoCo rendering)",
-        description="Run TASK on BOAT under a controller and write an H.264 mp4. Needs an OpenGL "
-                    f"platform: {FIX}.")
-    parser.add_argument("boat")
-    parser.add_argument("task")
-    parser.add_argument("--controller", required=True,
-                        help="a registered controller (pid, saoud, ...), module:factory or file.py:factory")
-    parser.add_argument("--world", default="mujoco", choices=choices(World))
+        formatter_class=HelpFormatter, epilog=EXAMPLES,
+        description=textwrap.fill("Run TASK on BOAT under a controller and write an H.264 mp4. "
+                                  f"Needs an OpenGL platform: {FIX}.", 90))
+    parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
+    parser.add_argument("task", help="a registered task (sailmujoco list)")
+    add_controller_arguments(parser)
+    parser.add_argument("--world", default="mujoco", choices=choices(World),
+                        help="mujoco: the 6-DOF boat; paper: the paper's reduced model, drawn as "
+                             "the 6-DOF boat posed from its state")
     parser.add_argument("--seconds", type=float, default=30.0, help="simulated seconds (default 30)")
     parser.add_argument("--out", required=True, help="output file (.mp4); missing folders are made")
     parser.add_argument("--fps", type=float, default=25.0, help="frames per simulated second")
-    parser.add_argument("--width", type=int, default=640)
-    parser.add_argument("--height", type=int, default=480)
-    parser.add_argument("--camera", default="follow", choices=CAMERAS)
+    parser.add_argument("--width", type=int, default=640, help="frame width, pixels (even)")
+    parser.add_argument("--height", type=int, default=480, help="frame height, pixels (even)")
+    parser.add_argument("--camera", default="follow", choices=CAMERAS,
+                        help="follow: behind the boat; top: from above; side: abeam")
     parser.add_argument("--distance", type=float, help="follow camera distance, m")
     parser.add_argument("--bearing", type=float, default=150.0,
-                        help="follow camera bearing from the bow, deg counter-clockwise (150)")
+                        help="follow camera bearing from the bow, deg counter-clockwise")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
     parser.add_argument("--no-overlay", action="store_true", help="no text box")
-    parser.add_argument("--seed", type=SEED, default=0)
+    parser.add_argument("--seed", type=SEED, default=0, help="seeds the task and the controller")
     parser.add_argument("--still", help="also write the last frame as this PNG")
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper "
                              "(repeatable)")
-    parser.add_argument("--no-progress", action="store_true")
+    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
     parser.set_defaults(func=run_cli)
     return parser
 
@@ -69,11 +88,13 @@ def run_cli(args) -> int:
         0, or 1 where no OpenGL platform loads (one line on stderr).
     """
     check_settings(args.set, args.task)
+    options = controller_options(args)
     file_argument("--out", args.out, "run.mp4")
     if args.still:
         file_argument("--still", args.still, "last.png")
     try:
         rec = record(args.boat, args.task, args.controller, args.out, seconds=args.seconds,
+                     controller_options=options,
                      world=args.world, fps=args.fps, width=args.width, height=args.height,
                      camera=args.camera, overlay=not args.no_overlay, forces=not args.no_forces,
                      seed=args.seed, still=args.still, progress=not args.no_progress,
