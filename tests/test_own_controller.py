@@ -1,14 +1,21 @@
 """A controller of one's own, in one file outside the package, named by its import path or
-registered at run time: it runs in Python, in a sweep on worker processes and in a polar, with
-its options checked (names and kinds) before anything runs."""
+registered at run time: it runs in Python, in a sweep on worker processes, in a polar, in a
+video and in the viewer (from Python and the command line), with its options checked (names
+and kinds) before anything runs."""
 
 import math
+import os
+import re
+import subprocess
+import sys
 import textwrap
 
 import numpy as np
 import pytest
+from test_view import xvfb  # noqa: F401  (the fixture: a virtual X server, skipped as there)
 
 from sailmujoco import polar, suite, sweep
+from sailmujoco.cli import main
 from sailmujoco.sweep import SweepError
 
 LAW = textwrap.dedent('''
@@ -140,7 +147,140 @@ def test_rollout_says_what_a_law_needs():
     assert "\n" not in str(err.value)
     with pytest.raises(TypeError, match="must be callable"):
         suite.rollout(env, (rudder, LeewardSail()))
-    with pytest.raises(ValueError, match=r"returned 0.1; the action is \[rudder, sail\] \[rad\], shape \(2,\)"):
+    with pytest.raises(ValueError,
+                       match=r"returned 0.1; the action is \[rudder, sail\] \[rad\], shape \(2,\)"):
         suite.rollout(env, lambda timestep: 0.1)
     log = suite.rollout(env, Composite(rudder, LeewardSail()))
     assert log["t"].iloc[-1] == pytest.approx(3.0)
+
+
+# ---- the command line: a file controller that notes every call ------------------------------
+CONSTANT = textwrap.dedent('''
+    """A constant rudder and sail; each call appends the time and the rudder angle it sees."""
+    import math
+
+    import numpy as np
+
+
+    class Constant:
+        def __init__(self, action, marker):
+            self.action, self.marker = action, marker
+
+        def reset(self, seed=None):
+            pass
+
+        def __call__(self, timestep):
+            state = timestep.observation["true_state"]
+            with open(self.marker, "a") as f:
+                f.write(f"{state['time']:.6f} {math.degrees(state['rudder']):.6f}\\n")
+            return self.action
+
+
+    def make(env, rudder_deg: float = 0.0, sail_deg: float = 30.0, marker: str = "calls.txt"):
+        """A constant rudder and sail (degrees)."""
+        return Constant(np.radians([rudder_deg, sail_deg]), marker)
+''')
+CONTROL_TIMESTEP = 0.1  # s, suite.load's default: the controller is called at 10 Hz
+
+
+@pytest.fixture
+def constant_file(tmp_path, monkeypatch):
+    path = tmp_path / "constant.py"
+    path.write_text(CONSTANT)
+    monkeypatch.chdir(tmp_path)  # the default marker, calls.txt, lands here
+    return path
+
+
+def _display_env(**changes) -> dict:
+    """This process's environment without its display, with ``changes``."""
+    env = {k: v for k, v in os.environ.items() if k not in ("DISPLAY", "WAYLAND_DISPLAY")}
+    env.update(changes)
+    return env
+
+
+def _calls(marker) -> np.ndarray:
+    """(time s, rudder deg) of every call the controller noted."""
+    return np.loadtxt(marker, ndmin=2)
+
+
+def _check_calls(marker, seconds: float, rudder_deg: float) -> None:
+    """Called once per control step from t = 0, and the rudder it commands reaches the boat: a
+    servo settles on a constant command within a second."""
+    calls = _calls(marker)
+    steps = round(seconds / CONTROL_TIMESTEP)
+    np.testing.assert_allclose(calls[:, 0], CONTROL_TIMESTEP * np.arange(steps), atol=1e-6)
+    assert calls[0, 1] == pytest.approx(0.0, abs=1e-9)  # the task starts with the rudder amidships
+    assert calls[-1, 1] == pytest.approx(rudder_deg, abs=0.5)
+
+
+def test_a_file_controller_records_a_video_with_its_options(constant_file, tmp_path, capsys):
+    pytest.importorskip("imageio_ffmpeg")
+    marker, out = tmp_path / "video_calls.txt", tmp_path / "run.mp4"
+    code = main(["video", "saoud_robot", "heading_hold", "--controller", f"{constant_file}:make",
+                 "--option", "rudder_deg=20", "--option", f"marker={marker}", "--seconds", "2",
+                 "--width", "160", "--height", "120", "--fps", "10", "--out", str(out),
+                 "--no-progress"])
+    assert code == 0, capsys.readouterr().err
+    assert "wrote" in capsys.readouterr().out and out.stat().st_size > 1000
+    _check_calls(marker, 2.0, 20.0)
+
+
+def test_a_file_controller_runs_in_the_viewer(constant_file, tmp_path, xvfb):  # noqa: F811
+    """In a real window (a virtual X server), through ``python -m sailmujoco``."""
+    marker = tmp_path / "view_calls.txt"
+    out = subprocess.run([sys.executable, "-m", "sailmujoco", "view", "saoud_robot", "heading_hold",
+                          "--controller", f"{constant_file}:make", "--option", "rudder_deg=-15",
+                          "--option", f"marker={marker}", "--seconds", "1.5"],
+                         env=_display_env(DISPLAY=xvfb), cwd=tmp_path, capture_output=True,
+                         text=True, timeout=180)
+    assert out.returncode == 0, out.stderr[-2000:]
+    assert "viewed 1.50 s simulated" in out.stdout
+    _check_calls(marker, 1.5, -15.0)
+
+
+def test_a_file_controller_draws_a_polar_from_the_command_line(constant_file, tmp_path, capsys):
+    out = tmp_path / "polar"
+    assert main(["polar", "saoud_robot", "--controller", "constant.py:make", "--tws", "4",
+                 "--twa", "90", "--duration", "3", "--scheduler", "serial", "--out", str(out),
+                 "--no-progress"]) == 0
+    assert (out / "polar_make.csv").is_file() and (out / "polar_make.png").is_file()
+    _check_calls(tmp_path / "calls.txt", 3.0, 0.0)
+
+
+def test_a_file_controller_runs_in_a_sweep_file_on_two_workers(constant_file, tmp_path, capsys):
+    """Named by a path relative to the working folder, with an option; two worker processes."""
+    marker = tmp_path / "sweep_calls.txt"
+    (tmp_path / "own.toml").write_text(textwrap.dedent(f"""
+        boat = "saoud_robot"
+        task = "heading_hold"
+        controller = "constant.py:make"
+        duration = 2.0
+        seeds = [0, 1]
+        [options]
+        "controller.marker" = "{marker}"
+        [grid]
+        "controller.rudder_deg" = [-10.0, 10.0]
+    """))
+    assert main(["sweep", "own.toml", "--workers", "2", "--out", "out", "--no-progress"]) == 0
+    assert "status: ok 4, stopped 0, failed 0" in capsys.readouterr().out
+    calls = _calls(marker)
+    assert len(calls) == 4 * round(2.0 / CONTROL_TIMESTEP)
+    assert sorted(np.round(calls[calls[:, 0] > 1.85, 1]).tolist()) == [-10.0, -10.0, 10.0, 10.0]
+
+
+@pytest.mark.parametrize("option, message", [
+    ("rudder_dge=20", r"unknown option 'rudder_dge' in controller '.*constant.py:make'; "
+                      r"did you mean 'rudder_deg'\? \(accepted: marker, rudder_deg, sail_deg\)"),
+    ("rudder_deg=hard", r"controller.rudder_deg = 'hard': must be a finite number"),
+])
+@pytest.mark.parametrize("command", ["video", "view"])
+def test_a_bad_option_is_one_line_before_anything_runs(constant_file, tmp_path, command, option,
+                                                       message, capsys, monkeypatch):
+    """Named in one line and exit 2, with no display (view) and before any frame (video)."""
+    monkeypatch.delenv("DISPLAY", raising=False)
+    out = ["--out", str(tmp_path / "x.mp4")] if command == "video" else []
+    assert main([command, "saoud_robot", "heading_hold", "--controller", f"{constant_file}:make",
+                 "--option", option, *out]) == 2
+    err = capsys.readouterr().err.splitlines()
+    assert len(err) == 1 and re.search(message, err[0]), err
+    assert not (tmp_path / "calls.txt").exists() and not (tmp_path / "x.mp4").exists()
