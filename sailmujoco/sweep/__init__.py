@@ -33,7 +33,12 @@ key and the nearest accepted name.
 
 Every option value of every run is checked before any run starts (boats, tasks and
 controllers built once per distinct option set, the environment once per distinct ``env.``
-set), so a bad value anywhere in the grid ends as one line naming it.
+set; a value of another kind than the option's default, ``"controller.kp" = "two"``, is
+refused by its kind), so a bad value anywhere in the grid ends as one line naming it. The
+``metrics`` asked for are checked against the ones the task reports with the sweep's options
+(``mean_sped`` is one line with the nearest name, not a column of no data).
+``sailmujoco sweep --example`` prints a complete sweep file, and ``sailmujoco sweep --help``
+lists its keys (``sailmujoco.sweep.spec.KEYS``) and namespaces.
 
 Every finished run is written atomically to ``<out>/runs/<run_id>.json`` as it finishes
 (parameters, seed, metrics, package version, status and error text); the consolidated table is
