@@ -18,7 +18,7 @@ from pathlib import Path
 
 from .boat_params import BoatParams, Foil, Sail
 from .hull import HullShape
-from .names import unknown_message
+from .names import nearest, unknown_message
 from .tomlfile import read_toml
 
 
@@ -142,7 +142,7 @@ KEYS: dict[str, tuple[Key, ...]] = {
 SECTION_MEANING = {
     "boat": "the boat as a whole: mass, inertia, added mass, damping, fluids",
     "hull": "the canoe body (sailmujoco.hull): parabolic planform, half-elliptic sections",
-    "keel": "the keel, a fixed symmetric foil (part of the hull)",
+    "keel": "the keel, a fixed symmetric foil, part of the hull",
     "rudder": "the rudder, a balanced foil turning about a vertical stock through its CP",
     "sail": "the mainsail: a flat triangle on a boom turning about the mast",
 }
@@ -221,13 +221,15 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
 
 
 def _section(table: dict, keys: tuple, where: str) -> tuple[dict, list]:
-    """(the values of one section by key, the problems found)."""
+    """(the values of one section by key, the problems found); ``where`` is ``file: [section]``."""
     by_name = {k.name: k for k in keys}
-    problems = [unknown_message("key", name, by_name, where) for name in table if name not in by_name]
+    unknown = [name for name in table if name not in by_name]
+    problems = [unknown_message("key", name, by_name, where.replace(":", "", 1)) for name in unknown]
+    misspelt = {nearest(name, by_name) for name in unknown}  # said once, as the unknown key
     values = {}
     for key in keys:
         if key.name not in table:
-            if key.required:
+            if key.required and key.name not in misspelt:
                 problems.append(f"{where} missing key {key.name!r} ({key.meaning}, {_unit(key)})")
             continue
         value, problem = _value(key, table[key.name])

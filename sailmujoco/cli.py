@@ -7,6 +7,7 @@
 ``study NAME``        :func:`sailmujoco.study_runner.run_studies`
 ``video BOAT TASK``   :func:`sailmujoco.video.run_cli` (its parser: :func:`sailmujoco.video.add_parser`)
 ``view BOAT TASK``    :func:`sailmujoco.view.run_cli` (its parser: :func:`sailmujoco.view.add_parser`)
+``boat ACTION``       :func:`sailmujoco.boat_cli.run_cli` (its parser: :func:`sailmujoco.boat_cli.add_parser`)
 ====================  =============================================================
 
 Bad input (a ``ValueError`` from any command) is one line on stderr and exit status 2; Ctrl-C is
@@ -18,7 +19,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from . import health, polar, study_runner, sweep_cli, video, view
+from . import boat_cli, health, polar, study_runner, sweep_cli, video, view
 from .arguments import INTERRUPTED, POSITIVE_SECONDS, SEED, WORKERS, floats, number, out_folder
 from .options import World, choices
 
@@ -65,6 +66,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     video.add_parser(sub)
     view.add_parser(sub)
+    boat_cli.add_parser(sub)
     return parser
 
 
