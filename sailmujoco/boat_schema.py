@@ -201,6 +201,9 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
     -------
     BoatParams
     """
+    if not any(isinstance(data.get(section), dict) for section in KEYS):
+        raise ValueError(f"{where} is not a boat file: it has none of the sections "
+                         f"{', '.join(f'[{s}]' for s in KEYS)} (`sailmujoco boat export` writes one)")
     problems = [unknown_message("section", name, [*KEYS, SOURCES], f"boat file {where}")
                 for name in data if name not in KEYS and name != SOURCES]
     values = {}
