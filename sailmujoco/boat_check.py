@@ -7,8 +7,9 @@ or a :class:`~sailmujoco.boat_params.BoatParams`:
 * draft (canoe body and the deepest appendage tip, as the MJCF model draws them);
 * LCB and LCG, the transverse and longitudinal metacentric heights GM_t and GM_L of the hull
   (:mod:`sailmujoco.hull`'s closed forms);
-* the righting-arm curve GZ against heel from 0 to 180 deg (:func:`sailmujoco.stability.
-  righting_arm`), its maximum and its angle of vanishing stability, as a figure ``gz.png``;
+* the righting-arm curve GZ against heel from 0 to 180 deg
+  (:func:`sailmujoco.stability.righting_arm`), its maximum and its angle of vanishing
+  stability, as a figure ``gz.png``;
 * the natural periods of roll, heave and pitch;
 * the steady speed at a few true wind angles in one wind: short 6-DOF runs with the saoud sail
   law and heading rudder, on the polar's sweep (:func:`sailmujoco.polar.compute`).

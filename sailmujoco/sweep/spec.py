@@ -105,7 +105,6 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
     for key in ("boat", "task", "world", "controller"):
         if key not in spec:
             listed = choices.get(key, ["a registered name, 'module:factory' or 'file.py:factory'"])
-            listed = listed + ["a boat file ending in .toml"] if key == "boat" else listed
             raise SweepError(f"missing key {key!r} (one of: {', '.join(listed)})")
         if not isinstance(spec[key], str):
             raise SweepError(f"{key} must be a string, got {spec[key]!r}")
