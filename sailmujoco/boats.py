@@ -9,10 +9,12 @@ Positions are in the body frame of :mod:`sailmujoco.frames`; the types are in
 from __future__ import annotations
 
 import math
+from pathlib import Path
 
 from . import constants as c
 from . import hull as hull_geometry
 from .boat_params import BoatParams, Foil, Sail
+from .boat_schema import is_boat_file, read_boat
 from .hull import HullShape
 from .names import unknown_message
 
@@ -405,27 +407,46 @@ def register_boat(name: str, factory) -> None:
     BOATS[name] = factory
 
 
-def get_boat(name: str, **options) -> BoatParams:
-    """The parameters of a registered boat.
+def get_boat(name_or_path, **options) -> BoatParams:
+    """The parameters of a registered boat, or of the boat in a boat file.
 
     Parameters
     ----------
-    name : str
-        A registered boat: a key of :data:`BOATS` (``wille_yacht``, ``saoud_robot``, ``viel_boat``,
-        or one added by :func:`register_boat`).
+    name_or_path : str or os.PathLike
+        A registered boat: a key of :data:`BOATS` (``wille_yacht``, ``saoud_robot``,
+        ``viel_boat``, or one added by :func:`register_boat`); or a boat file, a path object or
+        a string ending in ``.toml`` (:func:`sailmujoco.boat_file.read_boat`).
     **options
         Keyword arguments of the boat's factory (e.g. ``l_phi`` for :func:`saoud_robot`); an
-        option the factory does not take raises a ValueError.
+        option the factory does not take raises a ValueError. A boat file takes none.
 
     Returns
     -------
     BoatParams
     """
+    if is_boat_file(name_or_path):
+        if options:
+            raise ValueError(f"boat file {str(name_or_path)!r} takes no boat options, got "
+                             f"{', '.join(sorted(options))} (edit the file instead)")
+        return read_boat(name_or_path)
     try:
-        factory = BOATS[name]
-    except KeyError:
-        raise ValueError(unknown_message("boat", name, BOATS, "get_boat")) from None
+        factory = BOATS[name_or_path]
+    except (KeyError, TypeError):
+        raise ValueError(unknown_message("boat", name_or_path, BOATS, "get_boat")
+                         + " or a boat file ending in .toml") from None
     try:
         return factory(**options)
     except TypeError as err:
-        raise ValueError(f"bad option for boat {name!r}: {err}") from None
+        raise ValueError(f"bad option for boat {name_or_path!r}: {err}") from None
+
+
+def boat_label(boat) -> str:
+    """A boat argument as a short name for folders and titles: a registered name as it is, a
+    boat file by its file name without ``.toml``.
+
+    Parameters
+    ----------
+    boat : str or os.PathLike
+        A registered boat or a boat file.
+    """
+    return Path(boat).stem if is_boat_file(boat) else str(boat)

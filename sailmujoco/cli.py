@@ -8,6 +8,7 @@
 ``study NAME``        :func:`sailmujoco.study_runner.run_studies`
 ``video BOAT TASK``   :func:`sailmujoco.video.run_cli` (its parser: :func:`sailmujoco.video.add_parser`)
 ``view BOAT TASK``    :func:`sailmujoco.view.run_cli` (its parser: :func:`sailmujoco.view.add_parser`)
+``boat ACTION``       :func:`sailmujoco.boat_cli.run_cli` (its parser: :func:`sailmujoco.boat_cli.add_parser`)
 ====================  =============================================================
 
 Bad input (a ``ValueError`` from any command) is one line on stderr and exit status 2; Ctrl-C is
@@ -20,7 +21,7 @@ import argparse
 import sys
 from importlib import metadata
 
-from . import health, listing, polar, study_runner, sweep_cli, video, view
+from . import boat_cli, health, listing, polar, study_runner, sweep_cli, video, view
 from .arguments import (
     INTERRUPTED,
     POSITIVE_SECONDS,
@@ -89,6 +90,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_study(sub)
     video.add_parser(sub)
     view.add_parser(sub)
+    boat_cli.add_parser(sub)
     return parser
 
 

@@ -42,6 +42,7 @@ def run_cli(args) -> int:
     int
         0 when every run sailed to its end, 1 otherwise.
     """
+    from .boats import boat_label
     from .params import BOATS, get_boat
 
     boats = args.boat or sorted(BOATS)
@@ -61,7 +62,7 @@ def run_cli(args) -> int:
         print(righting_line(params))
     if plots:
         for boat in boats:
-            path = plots / f"righting_curve_{boat}.png"
+            path = plots / f"righting_curve_{boat_label(boat)}.png"
             plot_righting_curve(get_boat(boat), path)
             print(f"wrote {path}")
     print("health: OK" if failures == 0 else f"health: {failures} run(s) stopped early")

@@ -98,8 +98,9 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
 
         Parameters
         ----------
-        boat : str
-            A registered boat (:data:`sailmujoco.boats.BOATS`), used when ``params`` is None.
+        boat : str or os.PathLike
+            A registered boat (:data:`sailmujoco.boats.BOATS`) or a boat file
+            (:mod:`sailmujoco.boat_file`), used when ``params`` is None.
         params : BoatParams, optional
             The boat's parameters, instead of a registered name (then no ``boat_options``).
         sail_mode : {"actuated", "sheeted"}

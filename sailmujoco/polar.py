@@ -18,6 +18,7 @@ import numpy as np
 
 from . import sweep
 from .arguments import out_folder
+from .boats import boat_label
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
@@ -33,7 +34,7 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
     Parameters
     ----------
     boat, controller : str
-        The boat and the registered controller.
+        The boat (a registered name or a boat file) and the registered controller.
     tws, twa : iterable of float
         True wind speeds (m/s) and true wind angles (deg, off the starboard bow); every pair is
         one run.
@@ -59,7 +60,8 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
             tws_axis.append(float(s))
             twa_axis.append(float(a))
     spec = {
-        "name": f"polar-{boat}-{sweep.controller_label(controller)}", "boat": boat, "task": "heading_hold",
+        "name": f"polar-{boat_label(boat)}-{sweep.controller_label(controller)}", "boat": str(boat),
+        "task": "heading_hold",
         "world": world, "controller": controller, "duration": float(duration), "seeds": [0],
         "metrics": ["steady_speed", "steady_heel"],
         "options": {"task.gusts": False, "task.wander": False, "task.desired_heading_deg": 0.0,
@@ -362,7 +364,7 @@ def run_cli(args) -> int:
 
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
     label = sweep.controller_label(args.controller)
-    out = out_folder(args.out or Path("results") / "polar" / f"{args.boat}-{label}")
+    out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
     frames = {}
     for name in names:
@@ -375,7 +377,7 @@ def run_cli(args) -> int:
         frames[name].to_csv(out / f"polar_{sweep.controller_label(name)}.csv", index=False)
     main_frame = frames[args.controller]
     png = out / f"polar_{sweep.controller_label(args.controller)}.png"
-    plot_polar(main_frame, png, f"{args.boat}, {args.controller} ({args.world})")
+    plot_polar(main_frame, png, f"{boat_label(args.boat)}, {args.controller} ({args.world})")
     for tws, best in best_vmg(main_frame).items():
         (au, vu), (ad, vd) = best["upwind"], best["downwind"]
         print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "

@@ -77,6 +77,31 @@ def righting_moment(p: BoatParams, heel: float, columns: np.ndarray | None = Non
     return -p.rho_water * GRAVITY * vol * lever[1] * np.sign(np.cos(heel))
 
 
+def righting_arm(p: BoatParams, heel: float, columns: np.ndarray | None = None) -> float:
+    """Righting arm GZ (m) at any heel in [0, pi], trim level, floating at its weight.
+
+    GZ is the horizontal distance from the CG to the line of action of the buoyancy, positive
+    where the moment turns the boat back upright, so that past 90 deg a negative GZ pushes it
+    on toward inverted (its angle of vanishing stability is where GZ falls through zero).
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    heel : float
+        Heel (rad).
+    columns : ndarray
+        The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column;
+        default 48 x 48 columns.
+    """
+    if columns is None:
+        columns = _columns(p, 48, 48)
+    rot = matrix_from_euler(heel, 0.0, 0.0)
+    vol, qx, qy, qz = submerged_volume(equilibrium_heave(p, heel, columns), rot, columns)
+    lever = rot @ (np.array([qx, qy, qz]) / vol - np.array([p.cg_x, 0.0, p.cg_z]))  # world, CG to B
+    return float(-lever[1])
+
+
 def righting_curve(p: BoatParams, heels) -> dict[str, np.ndarray]:
     """Righting moments (N m) over ``heels`` (rad): geometric, Wille eq. 20, Saoud eq. 4.
 

@@ -88,9 +88,10 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
 
     Parameters
     ----------
-    boat : str or BoatParams
-        A registered boat (``BOATS``), or a boat's parameters as an object (a changed copy,
-        for a modelling switch; ``boat_options`` must then be empty).
+    boat : str, os.PathLike or BoatParams
+        A registered boat (``BOATS``), a boat file (``"my_boat.toml"``,
+        :mod:`sailmujoco.boat_file`), or a boat's parameters as an object (a changed copy, for
+        a modelling switch). ``boat_options`` must be empty for a file or an object.
     task : str
         A registered task (``TASKS``).
     world : {"mujoco", "paper"}

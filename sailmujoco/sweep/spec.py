@@ -18,6 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
+from ..boat_schema import is_boat_file
 from ..names import check_known
 from ..options import PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
@@ -76,6 +77,9 @@ def env_choices() -> dict:
 def load_spec(path) -> dict:
     """Read and validate a sweep TOML file.
 
+    A ``boat`` given as a boat file (``boat = "my_boat.toml"``) is read relative to the sweep
+    file and stored as an absolute path, so that every worker finds it.
+
     Parameters
     ----------
     path : str or Path
@@ -84,6 +88,8 @@ def load_spec(path) -> dict:
     path = Path(path)
     spec = read_toml(path, "sweep file", SweepError)
     spec.setdefault("name", path.stem)
+    if is_boat_file(spec.get("boat")):  # relative to the sweep file; absolute for the workers
+        spec["boat"] = str((path.parent / spec["boat"]).resolve())
     return validate(spec, source=f"sweep file {str(path)!r}")
 
 
@@ -97,8 +103,9 @@ def _allowed_options(spec: dict) -> dict:
     from ..params import BOATS
     from ..suite import task_options
 
+    boat = spec["boat"]
     allowed = {"env": set(env_options()), "task": set(task_options(spec["task"])),
-               "boat": _parameters(BOATS[spec["boat"]])}
+               "boat": set() if is_boat_file(boat) else _parameters(BOATS[boat])}
     accepted = factory_options(controller_factory(spec["controller"]))
     allowed["controller"] = set(accepted) if accepted is not None else None
     return allowed
@@ -129,8 +136,17 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
         if not isinstance(spec[key], str):
             raise SweepError(f"{key} must be a string, got {spec[key]!r}")
     for key, allowed in choices.items():
-        if spec[key] not in allowed:
-            raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}")
+        if spec[key] not in allowed and not (key == "boat" and is_boat_file(spec[key])):
+            boat_file = ", or a boat file ending in .toml" if key == "boat" else ""
+            raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}{boat_file}")
+    if is_boat_file(spec["boat"]):  # a missing or bad boat file: its own lines, before any run
+        from ..params import get_boat
+
+        spec["boat"] = str(Path(spec["boat"]).resolve())  # the workers may run elsewhere
+        try:
+            get_boat(spec["boat"])
+        except ValueError as err:
+            raise SweepError(str(err)) from None
     controller_factory(spec["controller"])  # an unknown name or a bad import path: one line
     out = dict(spec, controller=portable_name(spec["controller"]))
     _check_scalars(out)
