@@ -11,7 +11,6 @@ a bad file is one line per bad key on stderr and exit status 2.
 
 from __future__ import annotations
 
-import argparse
 import sys
 from pathlib import Path
 
