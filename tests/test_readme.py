@@ -67,3 +67,34 @@ def test_own_controller_file_loads_by_its_path_and_holds_its_heading(tmp_path, m
 def test_readme_is_a_short_page():
     """At most 1,500 words, counted as whitespace-separated tokens of the whole file."""
     assert len(README.read_text(encoding="utf-8").split()) <= 1500
+
+
+NUMBER = re.compile(r"(?<![\w.])[-−+]?\d+(?:\.\d+)?(?:e[-+]?\d+)?")
+
+
+def _prose_numbers(text: str) -> set[float]:
+    """The numbers of a Markdown page's prose and tables: code, inline code and link targets
+    left out (they are names, paths and arguments, not findings)."""
+    text = re.sub(r"```.*?```", "", text, flags=re.S)
+    text = re.sub(r"`[^`]*`", "", text)
+    text = re.sub(r"\]\([^)]*\)", "]", text)
+    return {abs(float(match.replace("−", "-"))) for match in NUMBER.findall(text)}
+
+
+def test_every_number_of_the_readme_is_in_the_results_or_the_benchmarks():
+    """The README cites, it does not measure: each number in its prose and tables appears in
+    docs/results.md (taken from the studies' reports), docs/performance.md (the benchmarks'
+    output) or docs/papers.md; the Python version of the quick start aside."""
+    docs = README.parent / "docs"
+    cited = set().union(*(_prose_numbers((docs / page).read_text(encoding="utf-8"))
+                          for page in ("results.md", "performance.md", "papers.md")))
+    readme = README.read_text(encoding="utf-8").replace("Python 3.11", "Python")
+    assert _prose_numbers(readme) - cited == set()
+
+
+def test_every_relative_link_of_the_readme_and_the_docs_resolves():
+    pages = [README, *sorted((README.parent / "docs").glob("*.md"))]
+    broken = [(page.name, target) for page in pages
+              for target in re.findall(r"\]\(([^)#]+)\)", page.read_text(encoding="utf-8"))
+              if not target.startswith(("http://", "https://")) and not (page.parent / target).exists()]
+    assert broken == []
