@@ -16,13 +16,14 @@ Sites: ``sail_ce``, ``keel_cp``, ``rudder_cp``, ``masthead``, ``mast_step``, and
 sheeted sail ``sheet_block`` (hull) and ``boom_end`` (boom).
 
 Sail modes:
-``actuated``  a position servo with first-order lag T_lambda on the command (MuJoCo's
-              ``timeconst``), saturated at lambda_sat (Wille §2.1, Saoud Assumption 5).
-``sheeted``   the boom hinge is free: the sail turns under its own aerodynamic moment about
-              the mast, and a sheet (spatial tendon from ``sheet_block`` to ``boom_end``)
-              limits its swing. The command is the sheet length; the sheet only pulls
-              (force range [-F, 0]), with the same lag T_lambda (Wille 2016b §2.1, eqs. 61-62;
-              Viel eq. 12).
+
+- ``actuated``: a position servo with first-order lag T_lambda on the command (MuJoCo's
+  ``timeconst``), saturated at lambda_sat (Wille §2.1, Saoud Assumption 5).
+- ``sheeted``: the boom hinge is free: the sail turns under its own aerodynamic moment about
+  the mast, and a sheet (spatial tendon from ``sheet_block`` to ``boom_end``)
+  limits its swing. The command is the sheet length; the sheet only pulls
+  (force range [-F, 0]), with the same lag T_lambda (Wille 2016b §2.1, eqs. 61-62;
+  Viel eq. 12).
 """
 
 from __future__ import annotations

@@ -1,12 +1,13 @@
 """The task suite: ``load(boat, task, world)`` returns a ``dm_env.Environment``.
 
-Worlds
-    ``"mujoco"``  the 6-DOF MuJoCo boat (:class:`sailmujoco.physics.BoatPhysics`);
-    ``"paper"``   the paper's reduced model: Wille's 4-DOF equations with the boat's
-                  parameters (:class:`sailmujoco.reference.wille.Wille4DOF`), or, for
-                  ``position_keeping``, Viel's 3-DOF model with its own Table 1 boat
-                  (:class:`sailmujoco.reference.viel.VielWorld`; the ``boat`` argument then only
-                  names the run).
+Worlds:
+
+- ``"mujoco"``: the 6-DOF MuJoCo boat (:class:`sailmujoco.physics.BoatPhysics`);
+- ``"paper"``: the paper's reduced model: Wille's 4-DOF equations with the boat's
+  parameters (:class:`sailmujoco.reference.wille.Wille4DOF`), or, for
+  ``position_keeping``, Viel's 3-DOF model with its own Table 1 boat
+  (:class:`sailmujoco.reference.viel.VielWorld`; the ``boat`` argument then only
+  names the run).
 
 Example::
 

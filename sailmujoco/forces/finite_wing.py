@@ -217,8 +217,10 @@ def downwash_factor(distance: float, keel_span: float) -> float:
     lie s = (pi/4)(b_e/2) either side of it (same lift rho V Gamma0 (pi b_e / 4) as the elliptic
     sheet). Biot-Savart for two semi-infinite trailing vortices starting at the keel (Anderson,
     Fundamentals of Aerodynamics, §5.2, induced velocity of a semi-infinite filament) gives the
-    downwash behind the centre, as a share of the far wake's 2 C_L / (pi A):
+    downwash behind the centre, as a share of the far wake's 2 C_L / (pi A)::
+
         k = 1 + x / sqrt(x^2 + s^2),
+
     1 at the keel (Prandtl's downwash at the lifting line) and 2 far behind. The bound vortex's
     share (it is the keel's own, and singular on its line) and the rudder's depth below the
     vortices' plane are left out; the latter makes k an upper bound.
