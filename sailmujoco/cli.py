@@ -31,6 +31,7 @@ from .arguments import (
     floats,
     number,
     out_folder,
+    setting,
 )
 from .options import World, choices
 
@@ -173,11 +174,14 @@ def _add_polar(sub) -> None:
                             epilog="examples:\n"
                                    "  sailmujoco polar saoud_robot --controller saoud --compare best,briere\n"
                                    "  sailmujoco polar wille_yacht --controller my_law.py:make "
-                                   "--tws 3,6 --twa 40:180:20 --workers 2")
+                                   "--option gain=0.5 --tws 3,6 --twa 40:180:20 --workers 2")
     parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
     parser.add_argument("--controller", default="saoud",
                         help="sail law + heading rudder by name (saoud, briere, pid, best, ...), "
                              "module:factory or file.py:factory")
+    parser.add_argument("--option", type=setting, action="append", default=[], metavar="KEY=VALUE",
+                        help="a keyword of --controller's factory, e.g. kp=2.0 (repeatable); the "
+                             "controllers of --compare run with their defaults")
     parser.add_argument("--compare", help="other controllers to compare, comma separated "
                                           "('best' = brute-force fixed-sail vel_max)")
     parser.add_argument("--world", default="mujoco", choices=choices(World),

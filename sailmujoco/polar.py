@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from . import sweep
-from .arguments import out_folder
+from .arguments import controller_options, out_folder
 from .boats import boat_label
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
@@ -352,7 +352,8 @@ def run_cli(args) -> int:
     Parameters
     ----------
     args : argparse.Namespace
-        ``boat``, ``controller``, ``compare`` (comma separated, or None), ``world``, ``tws``,
+        ``boat``, ``controller``, ``option`` (``(key, value)`` pairs of the controller's
+        options), ``compare`` (comma separated, or None), ``world``, ``tws``,
         ``twa``, ``duration``, ``out``, ``scheduler``, ``workers``, ``no_progress``.
 
     Returns
@@ -363,6 +364,9 @@ def run_cli(args) -> int:
     from .params import get_boat
 
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    if args.option and args.controller == "best":
+        raise ValueError("--option: 'best' is every fixed sail angle and takes no options")
+    own = {} if args.controller == "best" else controller_options(args)  # checked before any run
     label = sweep.controller_label(args.controller)
     out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
@@ -373,7 +377,9 @@ def run_cli(args) -> int:
         frames[name] = compute(args.boat, name, out, tws=args.tws, twa=args.twa,
                                world=args.world, duration=args.duration,
                                scheduler=args.scheduler, workers=args.workers,
-                               progress=not args.no_progress)
+                               progress=not args.no_progress,
+                               options={f"controller.{key}": value for key, value in own.items()}
+                               if name == args.controller else None)
         frames[name].to_csv(out / f"polar_{sweep.controller_label(name)}.csv", index=False)
     main_frame = frames[args.controller]
     png = out / f"polar_{sweep.controller_label(args.controller)}.png"

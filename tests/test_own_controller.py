@@ -240,11 +240,11 @@ def test_a_file_controller_runs_in_the_viewer(constant_file, tmp_path, xvfb):  #
 
 def test_a_file_controller_draws_a_polar_from_the_command_line(constant_file, tmp_path, capsys):
     out = tmp_path / "polar"
-    assert main(["polar", "saoud_robot", "--controller", "constant.py:make", "--tws", "4",
-                 "--twa", "90", "--duration", "3", "--scheduler", "serial", "--out", str(out),
-                 "--no-progress"]) == 0
+    assert main(["polar", "saoud_robot", "--controller", "constant.py:make", "--option",
+                 "rudder_deg=12", "--tws", "4", "--twa", "90", "--duration", "3", "--scheduler",
+                 "serial", "--out", str(out), "--no-progress"]) == 0
     assert (out / "polar_make.csv").is_file() and (out / "polar_make.png").is_file()
-    _check_calls(tmp_path / "calls.txt", 3.0, 0.0)
+    _check_calls(tmp_path / "calls.txt", 3.0, 12.0)
 
 
 def test_a_file_controller_runs_in_a_sweep_file_on_two_workers(constant_file, tmp_path, capsys):
