@@ -421,7 +421,7 @@ class SceneRenderer:
         return panel.text_lines(snap, snap.references, self.target)
 
     # ---- a frame
-    def render(self, snap: Snapshot, note: str | None = None) -> np.ndarray:
+    def render(self, snap: Snapshot, note: str | None = None, camera=None) -> np.ndarray:
         """One RGB frame (height, width, 3) uint8 of ``snap``: the scene, and the panel beside it.
 
         Parameters
@@ -430,11 +430,18 @@ class SceneRenderer:
             The state drawn.
         note : str, optional
             A red note: in the panel, or across the top of a frame without one.
+        camera : tuple, optional
+            (look-at point (3,), distance, azimuth deg, elevation deg) of a free camera to draw
+            with instead of this renderer's own.
         """
         if self._renderer is None:
             raise RuntimeError("this SceneRenderer was made with offscreen=False: no GL context to draw")
         self.pose(snap)
-        self._place_camera(snap)
+        if camera is None:
+            self._place_camera(snap)
+        else:
+            self._camera.type = self._mujoco.mjtCamera.mjCAMERA_FREE
+            self._set_free(*camera)
         renderer = self._renderer
         renderer.update_scene(self.data, self._camera, self._option)
         self.decorate(renderer.scene, snap)
