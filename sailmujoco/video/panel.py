@@ -7,8 +7,8 @@ The map (:func:`draw_map`), north up: the track so far (yellow), the boat (a whi
 its heading, with a white heading line), the desired heading or course (dashed green) or, for
 position keeping, the target buoy, its target and pre-arrival circles and a dashed line to it;
 and under the map a north arrow, a scale bar and the true wind (a cyan arrow where it blows
-to, its speed beside it, m/s). The map fits the track, the
-boat and the target, at least :data:`MAP_HULLS` hull lengths across each way from its centre.
+to, its speed beside it, m/s). The map is centred on the boat and reaches the whole track,
+the start and the target, at least :data:`MAP_HULLS` hull lengths each way.
 
 The text (:func:`text_lines`) under the map: the labels, time, heading with its reference,
 speed, heel, true and apparent wind, rudder and sail; then the colour key; then, for a run that
@@ -211,24 +211,25 @@ def nice_length(length: float) -> float:
 
 
 def map_frame(view: MapView) -> tuple[np.ndarray, float]:
-    """(centre (2,), half-width) of the map, m: the track, the boat and the target, fitted.
+    """(centre (2,), half-width) of the map, m: centred on the boat (its heading line always
+    shows), wide enough for the track, the start and the target's outer circle.
 
     Parameters
     ----------
     view : MapView
         What the map shows.
     """
-    points = [np.asarray(view.track, float).reshape(-1, 2), np.asarray(view.position, float)[None, :2]]
+    centre = np.asarray(view.position, float)[:2]
+    points = [np.asarray(view.track, float).reshape(-1, 2)]
+    reach = 0.0
     if view.target is not None:
-        r = max(view.target["radii"])
-        centre = np.asarray(view.target["position"], float)
-        points.append(np.array([centre - r, centre + r]))
+        goal = np.asarray(view.target["position"], float)
+        reach = max(view.target["radii"])
+        points.append(goal[None])
         if view.target.get("start") is not None:
             points.append(np.asarray(view.target["start"], float)[None])
-    points = np.concatenate(points)
-    low, high = points.min(axis=0), points.max(axis=0)
-    half = max(0.62 * float(np.max(high - low)) + 0.5 * view.hull_length, MAP_HULLS * view.hull_length)
-    return 0.5 * (low + high), half
+    far = np.abs(np.concatenate(points) - centre).max() + reach
+    return centre, max(1.15 * far + 0.5 * view.hull_length, MAP_HULLS * view.hull_length)
 
 
 def _map_target(draw, target: dict, to_px, scale: float, position, line: int) -> None:
