@@ -1,112 +1,96 @@
-"""A window's picture as it is on the X screen (``sailmujoco view --screenshot``), found through Xlib."""
+"""``sailmujoco view --screenshot``: the picture of the state at the time it names.
+
+The viewer draws on a thread of its own, at its own pace; a grab of the screen shows whatever
+frame it drew last, which under load can be a state from a second or more before. The
+screenshot is therefore drawn here, offscreen, from the state itself (:func:`render_state`):
+the viewer's camera as it is at that moment, the scene of the videos
+(:class:`sailmujoco.video.SceneRenderer`) at the window's size, with the panel (map, track,
+numbers) beside it. The PNG carries the state's time and the camera in its text chunks
+(:data:`TIME_KEY`, :data:`CAMERA_KEY`), so that a reader can check which state it shows.
+"""
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
-import os
+import json
 from pathlib import Path
 
+import numpy as np
 
-def window_rect(title_prefix: str) -> tuple[int, int, int, int] | None:
-    """(x, y, width, height) on the X screen of the first window whose name starts with
-    ``title_prefix``, found through Xlib; None where Xlib or the window cannot be found.
+TIME_KEY = "sailmujoco:time"  # PNG text: the simulated time of the state drawn, s (repr of a float)
+CAMERA_KEY = "sailmujoco:camera"  # PNG text: JSON [lookat x, y, z, distance, azimuth, elevation]
+
+
+def render_state(scene, snap, camera, width: int, height: int) -> np.ndarray:
+    """The frame of ``snap`` (height, width, 3) uint8, drawn offscreen like the videos.
 
     Parameters
     ----------
-    title_prefix : str
-        The start of the window's name.
+    scene : SceneRenderer
+        The window's scene (without an offscreen context): its boat, options, track so far and
+        force scale are drawn.
+    snap : Snapshot
+        The state drawn.
+    camera : tuple
+        (lookat (3,), distance, azimuth deg, elevation deg) of MuJoCo's free camera.
+    width, height : int
+        Frame size, pixels.
     """
-    name = ctypes.util.find_library("X11")
-    if not name:
-        return None
-    x = ctypes.CDLL(name)
-    x.XOpenDisplay.restype = ctypes.c_void_p
-    x.XOpenDisplay.argtypes = [ctypes.c_char_p]
-    x.XDefaultRootWindow.restype = ctypes.c_ulong
-    x.XDefaultRootWindow.argtypes = [ctypes.c_void_p]
-    window_p = ctypes.POINTER(ctypes.c_ulong)
-    x.XQueryTree.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p, window_p,
-                             ctypes.POINTER(window_p), ctypes.POINTER(ctypes.c_uint)]
-    x.XFetchName.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.POINTER(ctypes.c_char_p)]
-    x.XGetGeometry.argtypes = [ctypes.c_void_p, ctypes.c_ulong, window_p] + \
-        [ctypes.POINTER(ctypes.c_int)] * 2 + [ctypes.POINTER(ctypes.c_uint)] * 4
-    x.XTranslateCoordinates.argtypes = [ctypes.c_void_p, ctypes.c_ulong, ctypes.c_ulong,
-                                        ctypes.c_int, ctypes.c_int, ctypes.POINTER(ctypes.c_int),
-                                        ctypes.POINTER(ctypes.c_int), window_p]
-    x.XFree.argtypes = [ctypes.c_void_p]
-    x.XCloseDisplay.argtypes = [ctypes.c_void_p]
-    display = x.XOpenDisplay(None)
-    if not display:
-        return None
-    root = x.XDefaultRootWindow(display)
+    from .video import SceneRenderer
 
-    def find(window: int, depth: int = 0):
-        title = ctypes.c_char_p()
-        if x.XFetchName(display, window, ctypes.byref(title)) and title.value is not None:
-            found = title.value.decode(errors="replace").startswith(title_prefix)
-            x.XFree(title)
-            if found:
-                return window
-        if depth > 3:
-            return None
-        root_r, parent, children, count = ctypes.c_ulong(), ctypes.c_ulong(), window_p(), ctypes.c_uint()
-        if not x.XQueryTree(display, window, ctypes.byref(root_r), ctypes.byref(parent),
-                            ctypes.byref(children), ctypes.byref(count)):
-            return None
-        try:
-            for i in range(count.value):
-                hit = find(children[i], depth + 1)
-                if hit is not None:
-                    return hit
-        finally:
-            if children:
-                x.XFree(children)
-        return None
-
+    offscreen = SceneRenderer(scene.params, width, height, "follow", forces=scene.show_forces,
+                              overlay=scene.show_overlay, target=scene.target, labels=scene.labels)
     try:
-        window = find(root)
-        if window is None:
-            return None
-        ints = [ctypes.c_int() for _ in range(2)]
-        uints = [ctypes.c_uint() for _ in range(4)]
-        root_r = ctypes.c_ulong()
-        x.XGetGeometry(display, window, ctypes.byref(root_r), *(ctypes.byref(v) for v in ints),
-                       *(ctypes.byref(v) for v in uints))
-        left, top, child = ctypes.c_int(), ctypes.c_int(), ctypes.c_ulong()
-        x.XTranslateCoordinates(display, window, root, 0, 0, ctypes.byref(left), ctypes.byref(top),
-                                ctypes.byref(child))
-        return left.value, top.value, uints[0].value, uints[1].value
+        offscreen.track = list(scene.track)
+        offscreen.force_scale = scene.force_scale
+        return offscreen.render(snap, camera=camera)
     finally:
-        x.XCloseDisplay(display)
+        offscreen.close()
 
 
-def screenshot(path, title_prefix: str = "MuJoCo") -> str:
-    """Save a window as it is on the X screen (``DISPLAY``) to ``path`` (PNG).
+def save_frame(path, frame: np.ndarray, time: float, camera) -> str:
+    """Write ``frame`` as a PNG with the state's time and the camera in its text chunks.
 
     Parameters
     ----------
     path : str or path
         The PNG; missing folders are made.
-    title_prefix : str
-        The start of the window's name (MuJoCo's viewer: "MuJoCo").
+    frame : ndarray
+        (height, width, 3) uint8 RGB.
+    time : float
+        Simulated time of the state drawn, s.
+    camera : tuple
+        (lookat (3,), distance, azimuth deg, elevation deg).
 
     Returns
     -------
     str
-        What was saved: the window, or the whole screen where the window cannot be found.
+        What was saved, for the command's last line.
     """
-    from PIL import ImageGrab
+    from PIL import Image
+    from PIL.PngImagePlugin import PngInfo
 
-    image = ImageGrab.grab(xdisplay=os.environ.get("DISPLAY"))
-    rect = window_rect(title_prefix)
-    what = "the whole screen"
-    if rect is not None:
-        left, top, width, height = rect
-        box = (max(left, 0), max(top, 0), min(left + width, image.width), min(top + height, image.height))
-        if box[2] > box[0] and box[3] > box[1]:
-            image = image.crop(box)
-            what = f"the window ({box[2] - box[0]} x {box[3] - box[1]} px)"
+    info = PngInfo()
+    info.add_text(TIME_KEY, repr(float(time)))
+    lookat, distance, azimuth, elevation = camera
+    info.add_text(CAMERA_KEY, json.dumps([*map(float, lookat), float(distance), float(azimuth),
+                                          float(elevation)]))
     Path(path).parent.mkdir(parents=True, exist_ok=True)
-    image.convert("RGB").save(path)
-    return what
+    Image.fromarray(frame).save(path, pnginfo=info)
+    return (f"the state at t = {time:.2f} s from the window's camera, {frame.shape[1]} x "
+            f"{frame.shape[0]} px")
+
+
+def read_stamp(path) -> tuple[float, tuple]:
+    """(time, camera) written by :func:`save_frame` into a PNG.
+
+    Parameters
+    ----------
+    path : str or path
+        The PNG.
+    """
+    from PIL import Image
+
+    with Image.open(path) as image:
+        text = image.text
+    values = json.loads(text[CAMERA_KEY])
+    return float(text[TIME_KEY]), (np.array(values[:3]), *values[3:])

@@ -39,7 +39,6 @@ from .arguments import (
     setting,
 )
 from .options import World, choices
-from .screenshot import screenshot
 from .video import (
     SceneRenderer,
     Snapshot,
@@ -166,7 +165,8 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     paused : bool
         Start paused (space runs).
     screenshot_path : path, optional
-        Save the window as a PNG at the end.
+        At the end, save the last state as a PNG, drawn offscreen from the viewer's camera at
+        the window's size with the videos' panel (:mod:`sailmujoco.screenshot`).
     controller_options : dict, optional
         Keywords of the controller's factory.
     **options
@@ -198,7 +198,8 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
                           labels=f"{boat} · {task} · {controller} ({world})", offscreen=False)
     timestep = env.reset()
-    snap = snapshot_physics(env.physics) if mujoco_world else snapshot_observation(timestep.observation)
+    snap = (snapshot_physics(env.physics, env.task.references(env.physics)) if mujoco_world
+            else snapshot_observation(timestep.observation))
     start = snap.position.copy()
     scene.pose(snap)
 
@@ -232,7 +233,7 @@ def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clo
         return frame["next"]
 
     def emit() -> None:
-        now = snapshot_physics(physics)
+        now = snapshot_physics(physics, env.task.references(physics))
         frame["next"] = (math.floor(now.time * fps + 0.5) + 1) / fps
         window.show(now)
         clock.wait(now.time)
@@ -249,7 +250,7 @@ def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clo
                     time.sleep(1.0 / fps)
                     continue
                 timestep = env.step(policy(timestep))
-                snap = snapshot_physics(physics) if mujoco_world else \
+                snap = snapshot_physics(physics, env.task.references(physics)) if mujoco_world else \
                     snapshot_observation(timestep.observation)
                 if not mujoco_world:  # sample and hold at the control steps
                     window.show(snap)
@@ -269,8 +270,7 @@ def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, inte
                     ("finished: close the window" if seconds is None else None))
     what = None
     if screenshot_path is not None and running:
-        time.sleep(1.0)  # let the viewer draw the last frame and its text
-        what = screenshot(screenshot_path)
+        what = window.save(screenshot_path, snap)  # the last state, whatever the viewer drew last
     if seconds is None and running:
         try:
             while viewer.is_running():  # hold the last state until the window is closed
@@ -324,7 +324,8 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--no-overlay", action="store_true", help="no text")
     parser.add_argument("--seed", type=SEED, default=0, help="seeds the task and the controller")
     parser.add_argument("--screenshot", metavar="PATH",
-                        help="at the end, save the window as this PNG (X11 displays)")
+                        help="at the end, save the last state as this PNG, drawn from the window's "
+                             "camera with the videos' map and numbers")
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper (repeatable)")
     parser.set_defaults(func=run_cli)

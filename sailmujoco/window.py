@@ -7,13 +7,13 @@ Without a display (no ``DISPLAY``, or GLFW cannot open a window with an OpenGL c
 
 from __future__ import annotations
 
-import math
 import os
 import threading
 
 import numpy as np
 
-from .video import SceneRenderer, Snapshot, yaw_of
+from .screenshot import render_state, save_frame
+from .video import SceneRenderer, Snapshot
 
 ASCII = {"°": " deg", "·": "-", "→": "->"}  # MuJoCo's overlay font is ASCII only
 
@@ -140,10 +140,8 @@ class Window:
         with viewer.lock():  # the videos' follow camera; it moves with the boat, the mouse turns it
             cam = viewer.cam
             cam.type = mujoco.mjtCamera.mjCAMERA_FREE
-            cam.lookat[:] = snap.position + np.array([0.0, 0.0, 0.45 * scene.h])
-            cam.distance = scene.follow_distance
-            cam.azimuth = math.degrees(yaw_of(snap.rotation) + scene.follow_bearing + math.pi)
-            cam.elevation = scene.follow_elevation
+            lookat, cam.distance, cam.azimuth, cam.elevation = scene.camera_pose(snap)
+            cam.lookat[:] = lookat
             viewer.opt.sitegroup[:] = 0
         self.texts = LatestTexts(viewer)
         self._followed = snap.position.copy()
@@ -169,7 +167,7 @@ class Window:
             user.ngeom = 0
             scene.decorate(user, snap)
         if self.overlay:
-            lines = scene.text_lines(snap)
+            lines = ([scene.labels] if scene.labels else []) + scene.text_lines(snap)
             if note:
                 lines.append(note)
             self.texts.put([(mujoco.mjtFontScale.mjFONTSCALE_150, mujoco.mjtGridPos.mjGRID_TOPLEFT,
@@ -177,6 +175,29 @@ class Window:
                             (mujoco.mjtFontScale.mjFONTSCALE_100, mujoco.mjtGridPos.mjGRID_BOTTOMLEFT,
                              self.legend, "")])
         viewer.sync()
+
+    def camera(self) -> tuple[np.ndarray, float, float, float]:
+        """(look-at point, distance, azimuth deg, elevation deg) of the viewer's camera now."""
+        with self.viewer.lock():
+            cam = self.viewer.cam
+            return np.array(cam.lookat), float(cam.distance), float(cam.azimuth), float(cam.elevation)
+
+    def save(self, path, snap: Snapshot) -> str:
+        """Save the picture of ``snap`` from the viewer's camera, at the window's size, as a PNG
+        stamped with its time (:mod:`sailmujoco.screenshot`); returns what was saved.
+
+        Parameters
+        ----------
+        path : str or path
+            The PNG.
+        snap : Snapshot
+            The state drawn: the one the window shows last.
+        """
+        viewport = self.viewer.viewport
+        width, height = (viewport.width, viewport.height) if viewport is not None else (1280, 720)
+        width, height = max(16, width - width % 2), max(16, height - height % 2)
+        camera = self.camera()
+        return save_frame(path, render_state(self.scene, snap, camera, width, height), snap.time, camera)
 
     def close(self) -> None:
         """Stop the text thread and close the window (gone before Python and GLFW shut down)."""

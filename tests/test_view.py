@@ -65,7 +65,7 @@ def test_view_sails_the_boat_at_real_time_and_saves_the_window(xvfb, tmp_path):
     assert 1.0 < float(found["distance"]) < 2.0 * 6.0
     # paced by the wall clock: never faster than real time (slower only where a step costs more)
     assert float(found["rtf"]) < 1.1
-    assert f"wrote {shot}: the window" in out.stdout
+    assert f"wrote {shot}: the state at t = 2.00 s from the window's camera" in out.stdout
 
     from PIL import Image
 
@@ -73,9 +73,60 @@ def test_view_sails_the_boat_at_real_time_and_saves_the_window(xvfb, tmp_path):
     assert image.shape[0] >= 240 and image.shape[1] >= 320  # the window, not a 16 px probe
     r, g, b = image[..., 0], image[..., 1], image[..., 2]
     assert image.mean(axis=2).std() > 10.0  # not blank
-    assert ((b > r + 40) & (b > g)).mean() > 0.3  # mostly the sea (blue checker)
+    assert ((b > r + 40) & (b > g)).mean() > 0.3  # mostly the sea (blue)
     assert ((g > 200) & (b > 200) & (r < 170)).sum() > 50  # the cyan wind arrow
     assert ((r > 180) & (g < 90) & (b < 90)).sum() > 50  # the red sail-force arrow
+
+
+def _scene_at(times, width, height, camera):
+    """Offscreen renders (the scene part) of heading_hold under pid, seed 0, at ``times`` (s),
+    simulated here without a window, drawn with ``camera``."""
+    from sailmujoco import suite, sweep, video
+
+    env = suite.load("wille_yacht", "heading_hold", seed=0, time_limit=max(times))
+    policy = sweep.make_controller("pid", env)
+    policy.reset(0)
+    timestep = env.reset()
+    snaps, first_wind = {}, float(np.hypot(*env.physics.true_wind()[:2]))
+    while not timestep.last():
+        timestep = env.step(policy(timestep))
+        for t in times:
+            if abs(env.physics.time() - t) < 1e-9:
+                snaps[t] = video.snapshot_physics(env.physics, env.task.references(env.physics))
+    frames = {}
+    with video.SceneRenderer(env.physics.params, width, height, overlay=True) as renderer:
+        renderer.scale_forces(first_wind)  # as the window: scaled to the wind of its first state
+        for t, snap in snaps.items():
+            frames[t] = renderer.render(snap, camera=camera)[:, :width - renderer.panel].astype(float)
+    return frames, width - renderer.panel
+
+
+def test_view_screenshot_is_the_state_it_names_under_load(xvfb, tmp_path):
+    """Two busy processes load the cores while the viewer runs: the screenshot still shows the
+    state at the end (t = 2 s), as a render of that state, simulated here without a window,
+    from the camera the PNG names; a state 0.6 s earlier looks different."""
+    from PIL import Image
+
+    from sailmujoco.screenshot import read_stamp
+
+    shot = tmp_path / "loaded.png"
+    load = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(2)]
+    try:
+        out = subprocess.run(VIEW + ["--seconds", "2", "--screenshot", str(shot)], env=_env(DISPLAY=xvfb),
+                             cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    finally:
+        for process in load:
+            process.kill()
+            process.wait()
+    assert out.returncode == 0, out.stderr[-2000:]
+    time, camera = read_stamp(shot)
+    assert time == pytest.approx(2.0, abs=1e-9)
+    image = np.asarray(Image.open(shot).convert("RGB")).astype(float)
+    frames, scene_width = _scene_at((1.4, 2.0), image.shape[1], image.shape[0], camera)
+    now = np.abs(image[:, :scene_width] - frames[2.0]).mean()
+    earlier = np.abs(image[:, :scene_width] - frames[1.4]).mean()
+    assert now < 1.0, (now, earlier)  # the same state, the same camera: the same pixels
+    assert earlier > 5.0 * max(now, 0.2), (now, earlier)
 
 
 @pytest.mark.parametrize("display", [None, ":987"], ids=["no DISPLAY", "display not served"])

@@ -9,23 +9,30 @@ or ``sailmujoco video wille_yacht beam_reach_roll --controller wille_roll --seco
 --out beam_reach.mp4`` (``python -m sailmujoco.video ...`` takes the same arguments).
 
 What a frame shows
-    The boat as MuJoCo draws it (hull, keel, mast, boom and sail on the ``sail`` joint, rudder
-    blade on the ``rudder`` joint), heeling and pitching with the hull, on the sea plane whose
-    checker grid (squares of 1/8 hull length) shows the speed. Added to MuJoCo's scene: the
+    On the left, the 3-D scene: the boat as MuJoCo draws it (hull, keel, mast, boom and sail on
+    the ``sail`` joint, rudder blade on the ``rudder`` joint), heeling and pitching with the hull,
+    on a see-through sea with a wave texture that moves under the camera, deep blue water under
+    it and a sky gradient above (:mod:`~sailmujoco.video.water`). Added to MuJoCo's scene: the
     true-wind arrow centred just above the masthead (cyan, pointing where the wind blows to,
-    6 % of the masthead height per m/s); with ``forces``, the sail, keel and rudder force
-    vectors at ``sail_ce``, ``keel_cp`` and ``rudder_cp`` (red, green, orange; 1.5 masthead
-    heights for 0.5 rho_air A_sail (10 m/s)^2, clipped at 2); for position keeping, the target
-    buoy and the target and pre-arrival circles. With ``overlay``, a text box (time, speed over
-    ground, heel, apparent wind angle and speed at the masthead, rudder and sail angles,
-    distance to the target) and a colour legend are drawn with PIL. The sea is drawn
-    see-through so that the keel, the rudder blade and their forces show.
+    0.12 masthead heights per m/s); with ``forces``, the sail, keel and rudder force vectors at
+    ``sail_ce``, ``keel_cp`` and ``rudder_cp`` (red, green, orange; 1.3 masthead heights for
+    0.5 rho_air A_sail U^2, U the true wind speed of the first frame, clipped at 2.2 masthead
+    heights); for position keeping, the target buoy and
+    the target and pre-arrival circles. With ``overlay``, a panel of its own on the right
+    (:mod:`~sailmujoco.video.panel`; the scene is rendered beside it, so nothing is drawn over
+    the boat or its arrows): a map seen from above, north up, with the track so far, the
+    heading, the desired heading or course or the target, the true wind, a north arrow and a
+    scale bar; under it the time, heading and its reference, speed, heel, true and apparent
+    wind, rudder and sail angles, and the colour key.
 
 Cameras (``camera``)
-    ``"follow"``: chases the boat from ``follow_distance`` m (default 2.3 masthead heights) at
-    ``follow_bearing_deg`` from the bow (counter-clockwise, default 150: the port quarter) and
-    ``follow_elevation_deg`` above the horizon; its azimuth follows the heading through a
-    first-order lag of ``follow_lag`` s, so a turn shows as the hull turning on the grid.
+    ``"follow"``: rides with the boat from ``follow_distance`` m (default 2.7 masthead heights),
+    looking down ``follow_elevation_deg`` (default -24). Its bearing from the bow puts it on
+    the side away from the boom, part of the way from dead astern to the sail's normal, so
+    that the sail shows its face on every point of sail; it swings round through a
+    first-order lag of ``follow_lag`` s when the boom crosses over, and its azimuth follows the
+    heading through the same lag (:mod:`~sailmujoco.video.camera`). ``follow_bearing_deg``
+    (counter-clockwise from the bow) fixes the bearing instead.
     ``"top"``: looks straight down, north up. For tasks with a target (position keeping) it is
     fixed over the target area, start and circles; otherwise it rides above the boat. Give
     ``top_center=(x, y)`` (m) and ``top_extent`` (m, half-height of the view on the water) for
@@ -53,33 +60,37 @@ The mp4 is encoded by the ffmpeg binary that the ``imageio-ffmpeg`` package ship
 
 Modules
     ``scene``: :class:`Snapshot`, :func:`display_model`, :class:`SceneRenderer`;
-    ``overlays``: the arrows, target circles and text box; ``recording``: :func:`record`,
+    ``camera``: the follow camera and the top view; ``water``: the sea of the display model;
+    ``overlays``: the arrows and target circles; ``panel``: the map and the numbers beside the
+    scene; ``recording``: :func:`record`,
     :class:`Recording`, :func:`record_study_scenario`; ``gl``: the OpenGL platform and
     :class:`RenderingUnavailable`; ``command``: the ``sailmujoco video`` command.
 """
 
 from ..arguments import check_settings
+from .camera import FollowCamera, boom_angle, yaw_of
 from .command import add_parser, main, run_cli
 from .gl import FIX, RenderingUnavailable, check_rendering
-from .overlays import COLOURS, FORCES, KNOT, MAX_ARROW, WIND_ARROW_PER_MPS
+from .overlays import COLOURS, FORCES, MAX_ARROW, WIND_ARROW_PER_MPS
+from .panel import KNOT, MapView
 from .recording import Recording, frames_between_substeps, record, record_study_scenario, scene_of
 from .scene import (
     CAMERAS,
     FORCE_ARROW,
     FORCE_SITES,
     REFERENCE_WIND,
-    SEA_ALPHA,
     SceneRenderer,
     Snapshot,
     close_outward,
     display_model,
     snapshot_observation,
     snapshot_physics,
-    yaw_of,
 )
+from .water import SEA_ALPHA
 
 __all__ = ["CAMERAS", "COLOURS", "FIX", "FORCES", "FORCE_ARROW", "FORCE_SITES", "KNOT", "MAX_ARROW",
-           "REFERENCE_WIND", "SEA_ALPHA", "WIND_ARROW_PER_MPS", "Recording", "RenderingUnavailable",
+           "REFERENCE_WIND", "SEA_ALPHA", "WIND_ARROW_PER_MPS", "FollowCamera", "MapView", "Recording",
+           "RenderingUnavailable", "boom_angle",
            "SceneRenderer", "Snapshot", "add_parser", "check_rendering", "check_settings",
            "close_outward", "display_model", "frames_between_substeps", "main", "record",
            "record_study_scenario", "run_cli", "scene_of", "snapshot_observation", "snapshot_physics",

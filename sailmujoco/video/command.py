@@ -60,10 +60,12 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--camera", default="follow", choices=CAMERAS,
                         help="follow: behind the boat; top: from above; side: abeam")
     parser.add_argument("--distance", type=float, help="follow camera distance, m")
-    parser.add_argument("--bearing", type=float, default=150.0,
-                        help="follow camera bearing from the bow, deg counter-clockwise")
+    parser.add_argument("--bearing", type=float,
+                        help="follow camera bearing from the bow, deg counter-clockwise (default: "
+                             "astern on the side away from the boom, turned to see the sail's "
+                             "face)")
     parser.add_argument("--no-forces", action="store_true", help="no force arrows")
-    parser.add_argument("--no-overlay", action="store_true", help="no text box")
+    parser.add_argument("--no-overlay", action="store_true", help="no panel (map, numbers)")
     parser.add_argument("--seed", type=SEED, default=0, help="seeds the task and the controller")
     parser.add_argument("--still", help="also write the last frame as this PNG")
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",

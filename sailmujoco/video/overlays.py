@@ -6,25 +6,23 @@ sail, keel and rudder force vectors at their sites (red, green, orange); for pos
 the target buoy and the target and pre-arrival circles. Arrows longer than :data:`MAX_ARROW`
 masthead heights are clipped (the text keeps the numbers).
 
-Text (:func:`text_lines`, :func:`draw_text`): a box in the upper left with the labels, time,
-speed over ground, heel, apparent wind, rudder and sail angles and the distance to the target,
-then a colour legend; a red note across the middle for a run that stopped early. PIL draws it.
+The colour key of the side panel (:func:`legend`; the panel itself is
+:mod:`sailmujoco.video.panel`), and the note of a run that stopped early on a frame without a
+panel (:func:`draw_note`).
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 
 FORCES = ("sail", "keel", "rudder")
-COLOURS = {"sail": (0.95, 0.15, 0.1, 1.0), "keel": (0.1, 0.85, 0.25, 1.0),
+COLOURS = {"sail": (0.95, 0.15, 0.1, 1.0), "keel": (0.45, 1.0, 0.1, 1.0),
            "rudder": (1.0, 0.55, 0.0, 1.0), "wind": (0.3, 0.95, 1.0, 1.0),
            "target": (1.0, 0.45, 0.0, 1.0), "target_area": (0.2, 1.0, 0.4, 0.3),
            "prearrival_area": (1.0, 0.9, 0.2, 0.2)}
-KNOT = 1852.0 / 3600.0  # m/s per knot
-WIND_ARROW_PER_MPS = 0.06  # masthead heights of arrow per m/s of wind
-MAX_ARROW = 2.0  # masthead heights: longer arrows are clipped (the text keeps the numbers)
+WIND_ARROW_PER_MPS = 0.12  # masthead heights of arrow per m/s of wind
+MAX_ARROW = 2.2  # masthead heights: longer arrows are clipped (the text keeps the numbers)
+ARROW_WIDTH = 0.03  # masthead heights: shaft width of every arrow
 
 
 # ----------------------------------------------------------------------------- MuJoCo scene
@@ -52,6 +50,7 @@ def add_geom(scene, kind, size, pos, mat, rgba):
     mujoco.mjv_initGeom(geom, kind, np.asarray(size, float), np.asarray(pos, float),
                         np.asarray(mat, float).ravel(), np.asarray(rgba, np.float32))
     geom.emission = 0.35  # vivid whatever the light
+    geom.specular = 0.0  # no white glare: the colour stays the key's
     scene.ngeom += 1
     return geom
 
@@ -167,104 +166,58 @@ def decorate(scene, snap, *, masthead, sites: dict, h: float, force_scale: float
     if speed > 1e-6:  # a wind vane: centred just above the masthead
         centre = masthead + np.array([0.0, 0.0, 0.1 * h])
         vector = WIND_ARROW_PER_MPS * h * wind
-        add_arrow(scene, centre - 0.5 * vector, vector, 0.025 * h, COLOURS["wind"], MAX_ARROW * h)
+        add_arrow(scene, centre - 0.5 * vector, vector, ARROW_WIDTH * h, COLOURS["wind"], MAX_ARROW * h)
     if forces:
         for name in FORCES:
             force = snap.rotation @ snap.forces[name] * force_scale
-            add_arrow(scene, sites[name], force, 0.02 * h, COLOURS[name], MAX_ARROW * h)
+            add_arrow(scene, sites[name], force, ARROW_WIDTH * h, COLOURS[name], MAX_ARROW * h)
     if target is not None:
         add_target(scene, target, h)
 
 
-# ----------------------------------------------------------------------------- text
-def text_lines(snap, labels: str = "", target: dict | None = None) -> list[str]:
-    """The text box's lines: labels, time, speed, heel, apparent wind, rudder, sail, distance.
-
-    Parameters
-    ----------
-    snap : Snapshot
-        The state described.
-    labels : str
-        First line (boat, task, controller); none where empty.
-    target : dict, optional
-        ``{"position": (x, y), ...}`` (m): adds the distance to it.
-    """
-    lines = [labels] if labels else []
-    lines += [f"t {snap.time:.1f} s    speed {snap.speed:.2f} m/s ({snap.speed / KNOT:.1f} kn)",
-              f"heel {math.degrees(snap.heel):+.1f}°    AWA {math.degrees(snap.awa):+.0f}°    "
-              f"AWS {snap.aws:.1f} m/s",
-              f"rudder {math.degrees(snap.rudder):+.1f}°    sail {math.degrees(snap.sail):+.1f}°"]
-    if target is not None:
-        distance = float(np.linalg.norm(snap.position[:2] - np.asarray(target["position"])))
-        lines.append(f"distance to target {distance:5.1f} m")
-    return lines
-
-
-def legend(forces: bool) -> list[tuple[str, tuple]]:
-    """(name, colour) of the legend's entries: the forces drawn (with ``forces``), then the wind.
+# ----------------------------------------------------------------------------- key and note
+def legend(forces: bool) -> list[tuple[str, tuple, str]]:
+    """The colour key of the panel: the arrows drawn (the sail, keel and rudder forces with
+    ``forces``, the true wind), and the map's track, heading and desired heading or course.
 
     Parameters
     ----------
     forces : bool
         Whether the force arrows are drawn.
+
+    Returns
+    -------
+    list of (str, tuple, str)
+        Name, RGB (0-255) and how it is drawn: ``"box"`` (an arrow's colour), ``"line"`` or
+        ``"dash"`` (a line on the map).
     """
-    entries = [(name, COLOURS[name]) for name in FORCES] if forces else []
-    entries.append(("wind", COLOURS["wind"]))
+    def rgb(rgba):
+        return tuple(int(255 * c) for c in rgba[:3])
+
+    entries = [(name, rgb(COLOURS[name]), "box") for name in FORCES] if forces else []
+    entries.append(("wind", rgb(COLOURS["wind"]), "box"))
+    entries += [("track", (255, 214, 90), "line"), ("heading", (255, 255, 255), "line"),
+                ("desired", (120, 255, 140), "dash")]
     return entries
 
 
-def font(height: int):
-    """PIL's default font at a size fit for frames ``height`` pixels high.
-
-    Parameters
-    ----------
-    height : int
-        Frame height, pixels.
-    """
-    from PIL import ImageFont
-
-    return ImageFont.load_default(size=max(9, round(height / 32)))
-
-
-def draw_text(frame: np.ndarray, typeface, lines: list[str] | None, entries: list,
-              note: str | None = None) -> np.ndarray:
-    """``frame`` with the text box (``lines`` and the legend ``entries``) and the ``note``.
+def draw_note(frame: np.ndarray, note: str) -> np.ndarray:
+    """``frame`` with ``note`` in red on a dark band across its top (a frame without a panel).
 
     Parameters
     ----------
     frame : ndarray
         (height, width, 3) uint8 RGB.
-    typeface : PIL font
-        From :func:`font`.
-    lines : list of str, optional
-        The text box's lines; no box without them.
-    entries : list of (str, tuple)
-        The legend under the lines (:func:`legend`).
-    note : str, optional
-        A red line across the middle of the frame.
+    note : str
+        The note (why the run stopped).
     """
-    from PIL import Image, ImageDraw
+    from PIL import Image, ImageDraw, ImageFont
 
     height, width = frame.shape[:2]
     image = Image.fromarray(frame)
     draw = ImageDraw.Draw(image, "RGBA")
-    size = typeface.size
-    pad, step = size // 2, round(1.3 * size)
-    if lines is not None:  # a box in the upper left: the lines, then the colour legend
-        widths = [size + draw.textlength(name, font=typeface) + size for name, _ in entries]
-        box = max(max(draw.textlength(line, font=typeface) for line in lines), sum(widths))
-        top = 0
-        draw.rectangle((0, 0, box + 2 * pad, (len(lines) + 1) * step + pad), fill=(0, 0, 0, 110))
-        for i, line in enumerate(lines):
-            draw.text((pad, top + pad + i * step), line, font=typeface, fill=(255, 255, 255, 255))
-        x, y = pad, top + pad + len(lines) * step
-        for (name, rgba), entry in zip(entries, widths, strict=True):
-            colour = tuple(int(255 * c) for c in rgba[:3]) + (255,)
-            draw.rectangle((x, y + size // 4, x + size // 2 + 2, y + 3 * size // 4 + 2), fill=colour)
-            draw.text((x + size, y), name, font=typeface, fill=(255, 255, 255, 255))
-            x += entry
-    if note:
-        y = height // 2 - size
-        draw.rectangle((0, y - pad, width, y + step + pad), fill=(0, 0, 0, 140))
-        draw.text((width // 2, y + step // 2), note, font=typeface, fill=(255, 80, 60, 255), anchor="mm")
+    typeface = ImageFont.load_default(size=max(8, round(height / 32)))
+    step = round(1.6 * typeface.size)
+    draw.rectangle((0, 0, width, step), fill=(0, 0, 0, 160))
+    draw.text((width // 2, step // 2), note, font=typeface, fill=(255, 80, 60, 255), anchor="mm")
     return np.asarray(image)

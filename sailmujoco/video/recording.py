@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..progress import Progress
+from .camera import ELEVATION_DEG
 from .gl import import_gl
 from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snapshot_physics
 
@@ -143,7 +144,8 @@ def _even(name: str, value: int) -> int:
 
 
 def check_arguments(*, camera: str, fps, seconds, width, height, follow_distance,
-                    follow_bearing_deg: float, quality: float, options: dict) -> tuple[float, int, int]:
+                    follow_bearing_deg: float | None, quality: float,
+                    options: dict) -> tuple[float, int, int]:
     """Refuse bad arguments of :func:`record` before anything is loaded (one-line ``ValueError``).
 
     Parameters
@@ -169,7 +171,7 @@ def check_arguments(*, camera: str, fps, seconds, width, height, follow_distance
     width, height = _even("width", width), _even("height", height)
     if follow_distance is not None and not (math.isfinite(follow_distance) and follow_distance > 0):
         raise ValueError(f"follow_distance (--distance) must be a number > 0 m, got {follow_distance!r}")
-    if not math.isfinite(follow_bearing_deg):
+    if follow_bearing_deg is not None and not math.isfinite(follow_bearing_deg):
         raise ValueError(f"follow_bearing_deg (--bearing) must be a finite angle in degrees, "
                          f"got {follow_bearing_deg!r}")
     for key, option in (("time_limit", "seconds (--seconds)"), ("seed", "seed (--seed)")):
@@ -266,8 +268,12 @@ def _sail(env, policy, frames: _Frames, mujoco_world: bool) -> float:
     physics = env.physics
     timestep = env.reset()
     start_loop = time.perf_counter()
-    frames.emit(snapshot_physics(physics) if mujoco_world else snapshot_observation(timestep.observation))
-    hook = (frames_between_substeps(physics, lambda: frames.emit(snapshot_physics(physics)), frames.due)
+
+    def now() -> Snapshot:
+        return snapshot_physics(physics, env.task.references(physics))
+
+    frames.emit(now() if mujoco_world else snapshot_observation(timestep.observation))
+    hook = (frames_between_substeps(physics, lambda: frames.emit(now()), frames.due)
             if mujoco_world else nullcontext())
     with hook:
         while not timestep.last():
@@ -300,7 +306,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
            camera: str = "follow", overlay: bool = True, forces: bool = True, seed: int = 0, *,
            controller_options: dict | None = None, still=None, quality: float = 6.0,
            progress: bool = False, follow_distance: float | None = None,
-           follow_bearing_deg: float = 150.0, follow_elevation_deg: float = -14.0,
+           follow_bearing_deg: float | None = None, follow_elevation_deg: float = ELEVATION_DEG,
            follow_lag: float = 3.0, top_center=None, top_extent: float | None = None,
            **options) -> Recording:
     """Run ``task`` on ``boat`` under ``controller`` and write the video to ``out_path`` (mp4).
@@ -323,7 +329,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     camera : {"follow", "top", "side"}
         See :mod:`sailmujoco.video`.
     overlay, forces : bool
-        Text box; sail/keel/rudder force arrows.
+        The panel beside the scene (map and numbers); sail/keel/rudder force arrows.
     seed : int
         Seeds the task (initial state, wind) and the controller.
     controller_options : dict, optional

@@ -1,5 +1,7 @@
 """The scene of a frame: the state drawn (:class:`Snapshot`), the display copy of the boat
-(:func:`display_model`) and :class:`SceneRenderer`, which poses it, places the camera and draws.
+(:func:`display_model`) and :class:`SceneRenderer`, which poses it, places the camera
+(:mod:`sailmujoco.video.camera`), draws the scene and, beside it, the panel
+(:mod:`sailmujoco.video.panel`).
 
 What is drawn is a display copy of the boat, compiled from the same parameters and given the
 simulated pose each frame; the simulation's own model is never touched. The display copy
@@ -9,20 +11,21 @@ deck and wound inward, which OpenGL's back-face culling shows as a sliver).
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import overlays
+from . import overlays, panel, water
+from .camera import DISTANCE_MASTHEADS, ELEVATION_DEG, FollowCamera, boom_angle, top_pose, yaw_of
 from .gl import import_gl, offscreen_renderer
 from .overlays import FORCES
 
 CAMERAS = ("follow", "top", "side")
 FORCE_SITES = {"sail": "sail_ce", "keel": "keel_cp", "rudder": "rudder_cp"}
-REFERENCE_WIND = 10.0  # m/s: a force of 0.5 rho_air A_sail (10 m/s)^2 ...
-FORCE_ARROW = 1.5  # ... is drawn this many masthead heights long
-SEA_ALPHA = 0.45  # opacity of the display sea (the scene's 0.85 hides the keel and rudder)
+FORCE_ARROW = 1.3  # masthead heights of arrow for a force of 0.5 rho_air A_sail U^2, U the run's
+REFERENCE_WIND = 3.0  # true wind speed at its first frame, but at least this, m/s
+SAIL_ALPHA = 0.6  # opacity of the display sail: its force arrow, to leeward, shows through it
+REFERENCES = ("desired_heading", "desired_course", "target_position")  # what the map shows
 
 
 # ----------------------------------------------------------------------------- state to draw
@@ -52,6 +55,9 @@ class Snapshot:
         True wind velocity in the world frame, m/s.
     forces : dict
         Force model name -> its force in the body frame, shape (3,), N.
+    references : dict
+        The task's references (``desired_heading``, ``desired_course`` in rad, compass;
+        ``target_position`` in m), as its observation gives them.
     """
 
     time: float
@@ -65,15 +71,18 @@ class Snapshot:
     aws: float
     wind: np.ndarray
     forces: dict = field(default_factory=dict)
+    references: dict = field(default_factory=dict)
 
 
-def snapshot_physics(physics) -> Snapshot:
+def snapshot_physics(physics, references: dict | None = None) -> Snapshot:
     """The state of a :class:`~sailmujoco.physics.BoatPhysics` now (also between control steps).
 
     Parameters
     ----------
     physics : BoatPhysics
         The simulation.
+    references : dict, optional
+        The task's references (``task.references(physics)``).
     """
     terms = physics.force_terms()  # brings kinematics and forces up to the current state
     return Snapshot(time=float(physics.data.time), position=physics.position(),
@@ -81,7 +90,8 @@ def snapshot_physics(physics) -> Snapshot:
                     sail=physics.sail_angle(), speed=physics.speed_over_ground(),
                     heel=physics.heel(), awa=physics.apparent_wind_angle(),
                     aws=physics.apparent_wind_speed(), wind=np.asarray(physics.true_wind(), float),
-                    forces={name: np.asarray(terms[name][:3], float) for name in FORCES})
+                    forces={name: np.asarray(terms[name][:3], float) for name in FORCES},
+                    references=dict(references or {}))
 
 
 def snapshot_observation(observation) -> Snapshot:
@@ -108,22 +118,8 @@ def snapshot_observation(observation) -> Snapshot:
                     awa=float(observation["apparent_wind_angle"]),
                     aws=float(observation["apparent_wind_speed"]), wind=wind,
                     forces={name: np.asarray(ts.get(f"{name}_wrench", np.zeros(6)), float)[:3]
-                            for name in FORCES})
-
-
-def yaw_of(rotation: np.ndarray) -> float:
-    """Yaw (rad, ENU, counter-clockwise from east) of a body -> world rotation matrix.
-
-    Parameters
-    ----------
-    rotation : ndarray
-        (3, 3) body -> world.
-    """
-    return math.atan2(rotation[1, 0], rotation[0, 0])
-
-
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
+                            for name in FORCES},
+                    references={key: observation[key] for key in REFERENCES if key in observation})
 
 
 # ----------------------------------------------------------------------------- display model
@@ -167,8 +163,9 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
     """The boat and scene compiled for drawing only (raw ``mujoco.MjModel``, 6 DOF).
 
     Display changes (none touches a simulation): the hull mesh closed and wound outward, the
-    sea's checker squares 1/8 of the hull length and opacity :data:`SEA_ALPHA`, shadows off,
-    an offscreen buffer of at least ``width`` x ``height``.
+    sea's wave texture and opacity and the deep water under it (:mod:`sailmujoco.video.water`),
+    the sail see-through (:data:`SAIL_ALPHA`: the follow camera sits to windward, and the
+    sail's force points to leeward), shadows off, an offscreen buffer of at least ``width`` x ``height``.
 
     Parameters
     ----------
@@ -183,15 +180,16 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
 
     from .. import mjcf
 
-    spec = mjcf.boat_spec(params, sail_mode, dofs=6)
-    hull = spec.mesh("hull_mesh")
+    boat = mjcf.boat_spec(params, sail_mode, dofs=6)
+    hull = boat.mesh("hull_mesh")
     hull.uservert, hull.userface = (a.tolist() for a in close_outward(hull.uservert, hull.userface))
-    model = mujoco.MjModel.from_xml_string(
-        mjcf.scene_for(params), assets={f"{params.name}.xml": spec.to_xml().encode()})
-    sea = model.material("sea")
-    square = params.hull.length / 8.0  # m, one checker square
-    model.mat_texrepeat[sea.id] = 1.0 / (2.0 * square)  # texuniform: repeats per metre
-    model.mat_rgba[sea.id, 3] = SEA_ALPHA
+    spec = mujoco.MjSpec.from_string(mjcf.scene_for(params),
+                                     include={f"{params.name}.xml": boat.to_xml().encode()})
+    deepest = params.hull.canoe_draft + max(params.keel.span, params.rudder.span)  # m, the foils' tips
+    water.add_deep_water(spec, deepest + 0.25 * params.hull.length)
+    model = spec.compile()
+    water.paint_sea(model, params.hull.length)
+    model.mat_rgba[model.material("sailcloth").id, 3] = SAIL_ALPHA
     model.vis.quality.shadowsize = 0
     model.vis.global_.offwidth = max(int(model.vis.global_.offwidth), int(width))
     model.vis.global_.offheight = max(int(model.vis.global_.offheight), int(height))
@@ -200,6 +198,10 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
 
 class SceneRenderer:
     """Draws snapshots (:class:`Snapshot`) of one boat with one camera into RGB frames.
+
+    With ``overlay``, the frame is the scene on the left and the panel (map and numbers,
+    :mod:`sailmujoco.video.panel`) in a band of its own on the right: nothing is drawn over the
+    scene. Each frame drawn adds the boat's position to the track that the map shows.
 
     Parameters
     ----------
@@ -210,27 +212,28 @@ class SceneRenderer:
     camera : {"follow", "top", "side"}
         See :mod:`sailmujoco.video`.
     forces, overlay : bool
-        Force arrows; text box.
+        Force arrows; panel.
     sail_mode : str
         As the simulated boat (the sheeted rig has the same joints).
     target : dict, optional
         ``{"position": (x, y), "radii": (d_T, d_M), "start": (x, y)}`` (m) to draw the target
         buoy and circles, and to frame the top view.
     labels : str
-        First line of the text box (boat, task, controller).
+        The panel's first lines (boat, task, controller).
     follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
-        Camera settings (:mod:`sailmujoco.video`); distances in m, lag in s.
+        Camera settings (:mod:`sailmujoco.video.camera`); distances in m, lag in s;
+        ``follow_bearing_deg=None`` takes the bearing that shows the sail's face.
     offscreen : bool
         Make the offscreen GL context that :meth:`render` draws with. Without it the display
-        model, :meth:`pose`, :meth:`decorate` and :meth:`text_lines` serve a window that has its
-        own context (``sailmujoco view``).
+        model, :meth:`pose`, :meth:`decorate` and :meth:`camera_pose` serve a window that has
+        its own context (``sailmujoco view``).
     """
 
     def __init__(self, params, width: int = 640, height: int = 480, camera: str = "follow",
                  forces: bool = True, overlay: bool = True, sail_mode: str = "actuated",
                  target: dict | None = None, labels: str = "",
-                 follow_distance: float | None = None, follow_bearing_deg: float = 150.0,
-                 follow_elevation_deg: float = -14.0, follow_lag: float = 3.0,
+                 follow_distance: float | None = None, follow_bearing_deg: float | None = None,
+                 follow_elevation_deg: float = ELEVATION_DEG, follow_lag: float = 3.0,
                  top_center=None, top_extent: float | None = None, offscreen: bool = True):
         if camera not in CAMERAS:
             raise ValueError(f"unknown camera {camera!r}; choose one of {CAMERAS}")
@@ -241,27 +244,25 @@ class SceneRenderer:
         self._mujoco = mujoco
         self.params = params
         self.width, self.height = int(width), int(height)
+        self.panel = panel.panel_width(self.width) if overlay else 0
         self.camera_name = camera
         self.show_forces, self.show_overlay = forces, overlay
-        self.target = target
-        self.labels = labels
+        self.target, self.labels = target, labels
         m = self.model = display_model(params, sail_mode, width, height)
         self.data = mujoco.MjData(m)
         self._rudder = m.jnt_qposadr[m.joint("rudder").id]
         self._sail = m.jnt_qposadr[m.joint("sail").id]
         self._sites = {name: m.site(site).id for name, site in FORCE_SITES.items()}
         self._masthead = m.site("masthead").id
+        self._boom = (m.site("mast_step").id, m.site("boom_end").id)
         self.h = float(m.site_pos[self._masthead][2])  # m, masthead height: the scale of drawings
-        reference = 0.5 * params.rho_air * params.sail.area * REFERENCE_WIND**2  # N
-        self.force_scale = FORCE_ARROW * self.h / reference  # m per N
-        self.follow_distance = follow_distance or 2.3 * self.h
-        self.follow_bearing = math.radians(follow_bearing_deg)
-        self.follow_elevation = follow_elevation_deg
-        self.follow_lag = follow_lag
-        self._yaw_smooth = None
-        self._last_time = None
+        self.force_scale = None  # m per N, set by the first state drawn (:meth:`scale_forces`)
+        self.follow = FollowCamera(follow_distance or DISTANCE_MASTHEADS * self.h, 0.4 * self.h,
+                                   follow_elevation_deg, follow_bearing_deg, follow_lag)
         self._fovy = float(m.vis.global_.fovy)
         self.top_pose = self._top_pose(top_center, top_extent)
+        self.track: list[tuple[float, float]] = []
+        self._track_time = -np.inf
         self._camera = mujoco.MjvCamera()
         if camera == "side":
             self._camera.type = mujoco.mjtCamera.mjCAMERA_FIXED
@@ -270,10 +271,9 @@ class SceneRenderer:
             self._camera.type = mujoco.mjtCamera.mjCAMERA_FREE
         self._option = mujoco.MjvOption()
         self._option.sitegroup[:] = 0  # the force points are drawn as arrows, not as sites
-        self._font = None
         self._renderer = None
-        if offscreen:
-            self._renderer = offscreen_renderer(m, self.width, self.height)  # GL context
+        if offscreen:  # the scene's part of the frame; the panel is drawn beside it
+            self._renderer = offscreen_renderer(m, self.width - self.panel, self.height)  # GL context
             flags = self._renderer.scene.flags
             flags[mujoco.mjtRndFlag.mjRND_SHADOW] = 0
             flags[mujoco.mjtRndFlag.mjRND_REFLECTION] = 0
@@ -292,7 +292,7 @@ class SceneRenderer:
     # ---- cameras
     def _top_pose(self, center, extent):
         """(lookat, distance) of a fixed top view, or None for a top view riding the boat."""
-        aspect = self.width / self.height
+        aspect = (self.width - self.panel) / self.height
         if center is None and self.target is not None:
             points = [np.asarray(self.target["position"], float)]
             if self.target.get("start") is not None:
@@ -305,32 +305,29 @@ class SceneRenderer:
                 extent = 1.15 * max(0.5 * (high[1] - low[1]), 0.5 * (high[0] - low[0]) / aspect)
         if center is None:
             return None
-        extent = extent or 3.0 * self.params.hull.length
-        distance = extent / math.tan(math.radians(self._fovy) / 2.0)
-        return np.array([center[0], center[1], 0.0]), distance
+        return top_pose(center, extent or 3.0 * self.params.hull.length, self._fovy)
+
+    def camera_pose(self, snap: Snapshot) -> tuple[np.ndarray, float, float, float]:
+        """(look-at point, distance, azimuth deg, elevation deg) of the follow camera for ``snap``,
+        the display model posed as ``snap`` (:meth:`pose`); it advances the camera's lags.
+
+        Parameters
+        ----------
+        snap : Snapshot
+            The state drawn.
+        """
+        xpos = self.data.site_xpos
+        boom = boom_angle(snap.rotation, xpos[self._boom[0]], xpos[self._boom[1]])
+        return self.follow.pose(snap.time, snap.position, snap.rotation, boom)
 
     def _place_camera(self, snap: Snapshot) -> None:
         if self.camera_name == "side":
             return
         if self.camera_name == "top":
-            if self.top_pose is None:
-                lookat = np.array([snap.position[0], snap.position[1], 0.0])
-                distance = 3.0 * self.params.hull.length / math.tan(math.radians(self._fovy) / 2.0)
-            else:
-                lookat, distance = self.top_pose
-            self._set_free(lookat, distance, 90.0, -90.0)  # north up
+            pose = self.top_pose or top_pose(snap.position[:2], 3.0 * self.params.hull.length, self._fovy)
+            self._set_free(pose[0], pose[1], 90.0, -90.0)  # north up
             return
-        yaw = yaw_of(snap.rotation)
-        if self._yaw_smooth is None or self.follow_lag <= 0.0:
-            self._yaw_smooth = yaw
-        else:
-            dt = max(snap.time - self._last_time, 0.0)
-            self._yaw_smooth += _wrap(yaw - self._yaw_smooth) * (1.0 - math.exp(-dt / self.follow_lag))
-        self._last_time = snap.time
-        # the camera sits at bearing b from the bow, so it looks along yaw + b + pi
-        azimuth = math.degrees(self._yaw_smooth + self.follow_bearing + math.pi)
-        lookat = snap.position + np.array([0.0, 0.0, 0.45 * self.h])
-        self._set_free(lookat, self.follow_distance, azimuth, self.follow_elevation)
+        self._set_free(*self.camera_pose(snap))
 
     def _set_free(self, lookat, distance: float, azimuth_deg: float, elevation_deg: float) -> None:
         """MuJoCo free camera: looks at ``lookat`` along azimuth (ENU, deg) and elevation (deg)."""
@@ -342,7 +339,7 @@ class SceneRenderer:
 
     # ---- the scene
     def pose(self, snap: Snapshot) -> None:
-        """Pose the display model (``self.data``) as ``snap``.
+        """Pose the display model (``self.data``) as ``snap`` and add its position to the track.
 
         Parameters
         ----------
@@ -360,6 +357,11 @@ class SceneRenderer:
         mujoco.mj_kinematics(m, d)
         mujoco.mj_comPos(m, d)
         mujoco.mj_camlight(m, d)
+        if snap.time < self._track_time:  # a new run
+            self.track.clear()
+        if snap.time > self._track_time:
+            self.track.append((float(snap.position[0]), float(snap.position[1])))
+            self._track_time = snap.time
 
     def decorate(self, scene, snap: Snapshot) -> None:
         """Add the wind arrow, force arrows, target and circles to MuJoCo's scene.
@@ -371,44 +373,81 @@ class SceneRenderer:
         snap : Snapshot
             The state drawn.
         """
+        if self.force_scale is None:
+            self.scale_forces(float(np.hypot(snap.wind[0], snap.wind[1])))
         xpos = self.data.site_xpos
         overlays.decorate(scene, snap, masthead=xpos[self._masthead],
                           sites={name: xpos[site] for name, site in self._sites.items()},
                           h=self.h, force_scale=self.force_scale, forces=self.show_forces,
                           target=self.target)
 
+    def scale_forces(self, wind_speed: float) -> None:
+        """Scale the force arrows: :data:`FORCE_ARROW` masthead heights for the force
+        0.5 rho_air A_sail U^2 of a wind U = ``wind_speed`` (at least :data:`REFERENCE_WIND`).
+
+        Parameters
+        ----------
+        wind_speed : float
+            True wind speed, m/s (the first state drawn gives it when this is not called).
+        """
+        speed = max(float(wind_speed), REFERENCE_WIND)
+        reference = 0.5 * self.params.rho_air * self.params.sail.area * speed**2  # N
+        self.force_scale = FORCE_ARROW * self.h / reference
+
+    def map_view(self, snap: Snapshot) -> panel.MapView:
+        """What the panel's map shows for ``snap``: the track so far, heading, wind, references.
+
+        Parameters
+        ----------
+        snap : Snapshot
+            The state drawn.
+        """
+        from ..frames import heading_from_yaw
+
+        return panel.MapView(track=np.array(self.track or [tuple(snap.position[:2])]),
+                             position=np.asarray(snap.position[:2], float),
+                             heading=float(heading_from_yaw(yaw_of(snap.rotation))),
+                             wind=np.asarray(snap.wind[:2], float), hull_length=self.params.hull.length,
+                             references=snap.references, target=self.target)
+
     def text_lines(self, snap: Snapshot) -> list[str]:
-        """The text box's lines: labels, time, speed, heel, apparent wind, rudder, sail.
+        """The panel's numbers for ``snap`` (:func:`sailmujoco.video.panel.text_lines`).
 
         Parameters
         ----------
         snap : Snapshot
             The state described.
         """
-        return overlays.text_lines(snap, self.labels, self.target)
+        return panel.text_lines(snap, snap.references, self.target)
 
     # ---- a frame
-    def render(self, snap: Snapshot, note: str | None = None) -> np.ndarray:
-        """One RGB frame (height, width, 3) uint8 of ``snap``.
+    def render(self, snap: Snapshot, note: str | None = None, camera=None) -> np.ndarray:
+        """One RGB frame (height, width, 3) uint8 of ``snap``: the scene, and the panel beside it.
 
         Parameters
         ----------
         snap : Snapshot
             The state drawn.
         note : str, optional
-            A red line across the frame.
+            A red note: in the panel, or across the top of a frame without one.
+        camera : tuple, optional
+            (look-at point (3,), distance, azimuth deg, elevation deg) of a free camera to draw
+            with instead of this renderer's own.
         """
         if self._renderer is None:
             raise RuntimeError("this SceneRenderer was made with offscreen=False: no GL context to draw")
         self.pose(snap)
-        self._place_camera(snap)
+        if camera is None:
+            self._place_camera(snap)
+        else:
+            self._camera.type = self._mujoco.mjtCamera.mjCAMERA_FREE
+            self._set_free(*camera)
         renderer = self._renderer
         renderer.update_scene(self.data, self._camera, self._option)
         self.decorate(renderer.scene, snap)
-        frame = renderer.render()
-        if self.show_overlay or note:
-            if self._font is None:
-                self._font = overlays.font(self.height)
-            lines = self.text_lines(snap) if self.show_overlay else None
-            frame = overlays.draw_text(frame, self._font, lines, overlays.legend(self.show_forces), note)
-        return np.ascontiguousarray(frame)
+        scene = renderer.render()
+        if not self.show_overlay:
+            return np.ascontiguousarray(overlays.draw_note(scene, note) if note else scene)
+        frame = np.empty((self.height, self.width, 3), np.uint8)
+        return panel.draw_panel(frame, scene, self.labels, self.text_lines(snap),
+                                overlays.legend(self.show_forces), self.map_view(snap), note)
