@@ -38,6 +38,7 @@ from .arguments import (
     number,
     setting,
 )
+from .boats import boat_label
 from .options import World, choices
 from .video import (
     SceneRenderer,
@@ -63,7 +64,8 @@ def _video_hint(args) -> str:
     world = f" --world {args.world}" if args.world != "mujoco" else ""
     options = "".join(f" --option {key}={value!r}" for key, value in args.option)
     return (f"record a video instead: sailmujoco video {args.boat} {args.task} "
-            f"--controller {args.controller}{options}{world} --out results/{args.boat}_{args.task}.mp4")
+            f"--controller {args.controller}{options}{world} "
+            f"--out results/{boat_label(args.boat)}_{args.task}.mp4")
 
 
 class Keys:
@@ -196,7 +198,7 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
         policy.reset(seed)
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
-                          labels=f"{boat} · {task} · {controller} ({world})", offscreen=False)
+                          labels=f"{boat_label(boat)} · {task} · {controller} ({world})", offscreen=False)
     timestep = env.reset()
     snap = (snapshot_physics(env.physics, env.task.references(env.physics)) if mujoco_world
             else snapshot_observation(timestep.observation))

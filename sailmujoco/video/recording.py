@@ -20,6 +20,7 @@ from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 
+from ..boats import boat_label
 from ..progress import Progress
 from .camera import ELEVATION_DEG
 from .gl import import_gl
@@ -367,7 +368,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     duration = float(seconds) if seconds is not None else float(env.task.duration)
     renderer = SceneRenderer(params, width, height, camera, forces=forces, overlay=overlay,
                              sail_mode=sail_mode, target=target,
-                             labels=f"{boat} · {task} · {name} ({world})",
+                             labels=f"{boat_label(boat)} · {task} · {name} ({world})",
                              follow_distance=follow_distance, follow_bearing_deg=follow_bearing_deg,
                              follow_elevation_deg=follow_elevation_deg, follow_lag=follow_lag,
                              top_center=top_center, top_extent=top_extent)
@@ -411,5 +412,5 @@ def record_study_scenario(out, boat: str, task: str, controller, *, seconds: flo
         Passed to :func:`record` (``world``, ``camera``, task options...).
     """
     label = controller if isinstance(controller, str) else getattr(controller, "__name__", "controller")
-    path = Path(out) / f"{name or f'{boat}_{task}_{label}'}.mp4"
+    path = Path(out) / f"{name or f'{boat_label(boat)}_{task}_{label}'}.mp4"
     return record(boat, task, controller, path, seconds=seconds, **kwargs)
