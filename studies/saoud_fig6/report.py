@@ -184,7 +184,7 @@ given Saoud's V = R_z(ψ)^T (v − v_w) (§IV), the boat's ground velocity less 
 sail, in the level heading frame: no roll rate and no boom swing in it (§IV builds v_as "by
 neglecting the angular velocity of the rotating sail"); the registered controllers' default.
 The measured flow at the sail CE includes the boom's own swing (Wille eq. 26, the λ̇ term), and
-the masthead sensor adds the roll rate times the 2.3 m mast; both were tried (checks). (4) Heading
+the masthead sensor adds the roll rate times the 2.3 m mast; the checks run both. (4) Heading
 jitter 0 (the paper starts on heading 0), seed 0, steady wind, the registered PID rudder for
 both laws. A segment counts as sailed on heading 0 when the mean |ψ| over its last
 {window:g} s is at most {held:g}°.

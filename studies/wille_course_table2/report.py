@@ -185,7 +185,7 @@ def _causes(a: Analysis) -> str:
    {100 * (1 - c_s['north'] / h['north']):.0f} % (paper {100 * (1 - pc2['north'] / ph2['north']):.0f} %), and the boat ends to windward of the track as
    the paper's does (it blames the neglected drag in eq. 56 for a correction "slightly bigger than it
    should be"). The paper reports a smooth course with R_y' in F_U; its text does not say how this
-   loop was kept quiet.
+   loop is kept quiet.
 3. **Our flat AR 5 sail in place of Marchaj's coefficients.** We do not have Marchaj's table;
    the switch multiplies our sail's force by {SAIL_FACTOR:g} (the factor at which our beam-reach
    sim 1 reaches the paper's surge speed, see wille_roll_table1), in the physics and in the λ
