@@ -37,8 +37,8 @@ def report(analysis: Analysis, smoke: bool) -> str:
     text.summary(
         f"Saoud's optimal sail S against Briere's trimming Bm, {TRUE_WIND:g} m/s of true wind at "
         f"∠v_w^B = {', '.join(f'{a:g}°' for a in ANGLES_DEG)}, in the paper's 4-DOF world and the "
-        "6-DOF robot. The paper gives curves only; its sentence about them is the 'paper' column. "
-        "'ours' is S/Bm of the segment means. " + summary(numbers, l_phis))
+        "6-DOF robot. Paper vs ours: the paper gives curves only; its sentence about them is the "
+        "'paper' column. 'ours' is S/Bm of the segment means. " + summary(numbers, l_phis))
     text.comparison([{"quantity": f"S/Bm speed, ∠v_w^B = {a:g}°, l_φ = {l_phi:g} m",
                       "world": world, "paper": PAPER_TEXT[a],
                       "ours": numbers[f"ratio_{world}_lphi{l_phi:g}_{a:g}"],

@@ -71,7 +71,7 @@ def _summary(analysis: Analysis) -> str:
                          f"{numbers[f'mean_Bm_over_vel_max_{key}']:.3g}, S ≥ Bm at "
                          f"{100 * numbers[f'share_S_at_least_Bm_{key}']:.0f} % of angles")
     return (f"Steady speed of S, Bm and the best fixed sail (vel_max) per wind angle, {TRUE_WIND:g} m/s at "
-            "the sail. The paper gives curves only. Its sentence 'trimming the sail with δ_s* gives "
+            "the sail. Paper vs ours: the paper gives curves only. Its sentence 'trimming the sail with δ_s* gives "
             "better results than with [3] and ... it is close to the maximum theoretical value' is the "
             "'paper' column; ours are over the sailable angles: " + "; ".join(parts) + ".")
 
