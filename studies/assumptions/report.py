@@ -51,8 +51,9 @@ def _summary(table: list[dict]) -> str:
     return (
         f"The papers' simplifications, and each difference of our boats as built from the papers' "
         f"boats, measured in 6-DOF on the Saoud robot and the Wille yacht: of the {len(table)} "
-        f"assumptions below, {len(holds)} hold and {breaks} break (somewhere in their scenarios)"
-        + (f", {other} without a verdict" if other else "") + ". Those that hold: "
-        + "; ".join(holds) + ". Each row gives the metric's range over its scenarios, the "
-        "threshold it is judged against, and the effect on the controller's own figure of merit "
-        "when the assumption is made false in the simulation.")
+        f"assumptions below, {len(holds)} hold at every point of their scenarios and {breaks} break "
+        "somewhere" + (f", {other} without a verdict" if other else "") + "; the verdict column says "
+        "at how many points. " + (f"Those that hold everywhere: {'; '.join(holds)}. " if holds else "")
+        + "Each row gives the metric's range over its scenarios, the threshold it is judged against, "
+        "and the effect on the controller's own figure of merit when the assumption is made false "
+        "in the simulation.")
