@@ -2,7 +2,7 @@
 and what it costs the controller.
 
 The study, in the order it runs: :mod:`.scenario` (the boats, the switches, the runs as data;
-its ``ABOUT`` opens the report), :mod:`.episodes` (the single scenarios and the time constants),
+its ``ABOUT`` lists the scenarios in the report), :mod:`.episodes` (the single scenarios and the time constants),
 :mod:`.analysis` (the wind plane, each switch's effect, the headline numbers), :mod:`.figures`
 (figures and CSV data), :mod:`.table` (one row per assumption) and :mod:`.report` (report.md).
 """

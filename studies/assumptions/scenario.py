@@ -15,20 +15,16 @@ from ..kit.wille import TABLE1_DURATION, TABLE1_SMOKE_DURATION, TABLE1_WIND
 NAME = "assumptions"
 TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
 
-ABOUT = """Scenarios
-    * the wind plane: true wind 2-14 m/s x true wind angle 30-180 deg, steady wind, heading held
-      (``heading_hold``), the Saoud robot with Saoud's optimal sail and the Wille yacht with
-      Wille's heading controller and lambda100 sail; each point run four times: as built
-      (6-DOF, C_T on, actuated sail), with C_T switched off, with heave and pitch held, with a
-      sheeted sail;
-    * the reproduction scenarios: Wille's close-hauled course hold (course controller, 6-DOF),
-      Viel's position keeping (case 2, 3-DOF and 6-DOF robot), free decay and rudder steps;
-    * Saoud's static optimum at a few wind angles and speeds against the heel the boat reaches.
-
-Each row of the table gives the metric's range over its scenarios, the threshold it is judged
-against, the verdict, and the effect on the controller's own figure of merit when the
-assumption is made false in the simulation.
-"""  # what the study runs and reports (the report's opening)
+ABOUT = """\
+* the wind plane: true wind 2-14 m/s x true wind angle 30-180 deg, steady wind, heading held
+  (``heading_hold``), the Saoud robot with Saoud's optimal sail and the Wille yacht with
+  Wille's heading controller and lambda100 sail; each point run four times: as built
+  (6-DOF, C_T on, actuated sail), with C_T switched off, with heave and pitch held, with a
+  sheeted sail;
+* the reproduction scenarios: Wille's close-hauled course hold (course controller, 6-DOF),
+  Viel's position keeping (case 2, 3-DOF and 6-DOF robot), free decay and rudder steps;
+* Saoud's static optimum at a few wind angles and speeds against the heel the boat reaches.
+"""  # what the study runs (the report's "Scenarios" section)
 
 BOATS = {"saoud_robot": "saoud", "wille_yacht": "wille_heading"}
 # the scenario `sailmujoco study assumptions --video` films: the robot on a blustery reach

@@ -54,6 +54,10 @@ def run_episode(boat: str, task: str, world: str, controller, *, seed: int = 0,
 class Report:
     """A Markdown report: paragraphs, tables of paper vs ours, figures.
 
+    Every study's report reads the same way: the title, a :meth:`summary` (its numbers filled
+    from the analysis), the study's main table, then the explanations, each under a
+    :meth:`section` heading.
+
     Parameters
     ----------
     title : str
@@ -64,6 +68,32 @@ class Report:
 
     title: str
     parts: list = field(default_factory=list)
+
+    def summary(self, text: str) -> None:
+        """Open the report with its "Summary" section: at most :data:`SUMMARY_WORDS` words of
+        prose, the main table to follow it (add that table next).
+
+        Parameters
+        ----------
+        text : str
+            The summary's Markdown, its numbers filled from the analysis.
+        """
+        self.parts.append("## Summary\n")
+        self.paragraph(text)
+
+    def section(self, heading: str, text: str = "") -> None:
+        """Start a section (a level-2 heading), with its first paragraph if given.
+
+        Parameters
+        ----------
+        heading : str
+            The section's heading, without the ``##``.
+        text : str
+            Its first paragraph (none if empty).
+        """
+        self.parts.append(f"## {heading}\n")
+        if text:
+            self.paragraph(text)
 
     def paragraph(self, text: str) -> None:
         """Add a paragraph.
@@ -127,6 +157,9 @@ class Report:
     def text(self) -> str:
         """The report as Markdown: the title, then the parts in order."""
         return f"# {self.title}\n\n" + "\n".join(self.parts)
+
+
+SUMMARY_WORDS = 200  # the most words of prose in a report's "Summary" section
 
 
 def _cell(value) -> str:

@@ -34,29 +34,32 @@ def report(analysis: Analysis, smoke: bool) -> str:
     """
     numbers, l_phis = analysis.numbers, analysis.l_phis
     text = Report(TITLE)
-    text.paragraph(scenario.__doc__.split("\n\n", 1)[1])
-    text.paragraph(summary(numbers, l_phis))
-    text.paragraph(CHOICES.format(wind_10=wind_speed_10(), true_wind=TRUE_WIND, held=HELD_DEG,
-                                  window=WINDOW, phi_max=PHI_MAX_DEG, h_s=PAPER_H_S))
-    text.paragraph(f"## Mean over the last {WINDOW:g} s of each segment\n\n"
-                   "S/Bm > 1: the optimal sail is faster. φ: mean roll (negative: port side down, "
-                   "to leeward); ψ: mean heading (0 is the order).")
-    text.table(_segment_rows(analysis))
-    text.paragraph("## Paper vs ours\n\nThe paper gives curves only; its sentence about them is "
-                   "the 'paper' column. 'ours' is S/Bm of the segment means.")
+    text.summary(
+        f"Saoud's optimal sail S against Briere's trimming Bm, {TRUE_WIND:g} m/s of true wind at "
+        f"∠v_w^B = {', '.join(f'{a:g}°' for a in ANGLES_DEG)}, in the paper's 4-DOF world and the "
+        "6-DOF robot. Paper vs ours: the paper gives curves only; its sentence about them is the "
+        "'paper' column. 'ours' is S/Bm of the segment means. " + summary(numbers, l_phis))
     text.comparison([{"quantity": f"S/Bm speed, ∠v_w^B = {a:g}°, l_φ = {l_phi:g} m",
                       "world": world, "paper": PAPER_TEXT[a],
                       "ours": numbers[f"ratio_{world}_lphi{l_phi:g}_{a:g}"],
                       "cause": _cause(world, l_phi, a, numbers)}
                      for l_phi in l_phis for world in WORLDS for a in ANGLES_DEG])
-    text.paragraph(f"## Checks: the choices and the modelling differences, switched (l_φ = 0.1 m)\n\n"
-                   f"Rows 1-4 are the runs of the tables above; each further row changes only the "
-                   f"named switch(es) from the as-run case of its world and law. "
-                   f"Cells: mean speed over the last {WINDOW:g} s of each segment [m/s], mean "
-                   f"|rudder| [deg] in brackets; '(ψ)' marks a segment where the boat did not "
-                   f"hold heading 0 (mean |ψ| > {HELD_DEG:g}°), '—' one it did not finish (capsize).")
+    text.section("Scenario", scenario.__doc__.split("\n\n", 1)[1])
+    text.section("Choices", CHOICES.format(wind_10=wind_speed_10(), true_wind=TRUE_WIND, held=HELD_DEG,
+                                           window=WINDOW, phi_max=PHI_MAX_DEG, h_s=PAPER_H_S))
+    text.section(f"Mean over the last {WINDOW:g} s of each segment",
+                 "S/Bm > 1: the optimal sail is faster. φ: mean roll (negative: port side down, "
+                 "to leeward); ψ: mean heading (0 is the order).")
+    text.table(_segment_rows(analysis))
+    text.section("Checks: the choices and the modelling differences, switched (l_φ = 0.1 m)",
+                 f"Rows 1-4 are the runs of the tables above; each further row changes only the "
+                 f"named switch(es) from the as-run case of its world and law. "
+                 f"Cells: mean speed over the last {WINDOW:g} s of each segment [m/s], mean "
+                 f"|rudder| [deg] in brackets; '(ψ)' marks a segment where the boat did not "
+                 f"hold heading 0 (mean |ψ| > {HELD_DEG:g}°), '—' one it did not finish (capsize).")
     text.table(_check_rows(analysis))
     text.paragraph(findings(analysis.stats))
+    text.section("Figures and data")
     for l_phi in l_phis:
         text.figure(f"fig6_lphi{l_phi:g}.png",
                     f"Fig. 6 reproduced, l_φ = {l_phi:g} m: (a) boat speed |v|, (b) roll φ; dotted: "
@@ -126,15 +129,15 @@ def summary(headline: dict, l_phis) -> str:
             held = all(headline[f"held_{key}_{a:g}"] for a in ANGLES_DEG)
             ratios = ", ".join(f"{headline[f'ratio_{key}_{a:g}']:.2f}" for a in ANGLES_DEG)
             if not held:
-                parts.append(f"{WORLD_NAMES[world]}, l_φ = {l_phi:g} m: the boat does not hold heading 0 "
-                             "with either law, so the comparison is void (cause in the checks)")
+                parts.append(f"{WORLD_NAMES[world]}, l_φ = {l_phi:g} m: neither law holds heading 0, so "
+                             "there is no comparison (cause in the checks)")
                 continue
             ok = all(headline[f"ratio_{key}_{a:g}"] >= 1.0 for a in (45.0, 80.0))
             parts.append(f"{WORLD_NAMES[world]}, l_φ = {l_phi:g} m: S/Bm = {ratios} at "
                          f"{'/'.join(f'{a:g}°' for a in ANGLES_DEG)}, "
-                         f"S {'at least as fast as' if ok else 'NOT at least as fast as'} Bm beam reach "
-                         "and upwind")
-    return "**Result.** " + "; ".join(parts) + "."
+                         f"S {'≥' if ok else 'NOT ≥'} Bm beam reach and upwind")
+    text = "; ".join(parts)
+    return text[:1].upper() + text[1:] + "."
 
 
 def _cell(s: dict, a: float) -> str:
@@ -169,7 +172,7 @@ def _cause(world: str, l_phi: float, a: float, headline: dict) -> str:
 
 
 CHOICES = """\
-**Choices.** (1) *Wind speed*: Saoud's wind is uniform (Assumption 2); ours has Wille's log
+(1) *Wind speed*: Saoud's wind is uniform (Assumption 2); ours has Wille's log
 profile (eq. 40), so the task's 10 m wind is {wind_10:.2f} m/s, which blows {true_wind:g} m/s at
 the sail's centre of effort (0.86 m above the waterline; {true_wind:g} m/s at 10 m would leave 2.75 m/s at
 the sail). (2) *l_φ*: the paper does not say which metacentric height Figs. 6-7 use, so both
@@ -181,7 +184,7 @@ given Saoud's V = R_z(ψ)^T (v − v_w) (§IV), the boat's ground velocity less 
 sail, in the level heading frame: no roll rate and no boom swing in it (§IV builds v_as "by
 neglecting the angular velocity of the rotating sail"); the registered controllers' default.
 The measured flow at the sail CE includes the boom's own swing (Wille eq. 26, the λ̇ term), and
-the masthead sensor adds the roll rate times the 2.3 m mast; both were tried (checks). (4) Heading
+the masthead sensor adds the roll rate times the 2.3 m mast; the checks run both. (4) Heading
 jitter 0 (the paper starts on heading 0), seed 0, steady wind, the registered PID rudder for
 both laws. A segment counts as sailed on heading 0 when the mean |ψ| over its last
 {window:g} s is at most {held:g}°.
@@ -222,8 +225,6 @@ def findings(stats: dict) -> str:
     faster = [a for a in ANGLES_DEG if eq4("S", "speed", a) >= eq4("Bm", "speed", a)]
     slower = [a for a in ANGLES_DEG if a not in faster]
     return f"""\
-**What the checks show.**
-
 *Sensor.* With {TRUE_WIND:g} m/s at the sail the three readings of the apparent wind agree to
 {100 * spread:.0f} % (rows 5-8). They do not in general. With {TRUE_WIND:g} m/s at 10 m (2.75 m/s at the sail)
 the sail-CE reading, which contains the boom's own swing (Wille eq. 26, the λ̇ term), makes

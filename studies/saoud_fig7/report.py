@@ -35,21 +35,19 @@ def report(analysis: Analysis, smoke: bool) -> str:
     """
     table, run = analysis.table, analysis.settings
     text = Report(TITLE)
-    text.paragraph(scenario.__doc__.split("\n\n", 1)[1])
-    text.paragraph(_runs_paragraph(analysis))
-    text.paragraph("## S/vel_max and Bm/vel_max per angle")
-    text.table(_angle_rows(table))
-    text.paragraph("## Paper vs ours\n\nThe paper gives curves only. Its sentence 'trimming the "
-                   "sail with δ_s* gives better results than with [3] and ... it is close to the "
-                   "maximum theoretical value' is the 'paper' column; ours are over the sailable "
-                   "angles.")
+    text.summary(_summary(analysis))
     text.comparison(_comparison_rows(analysis))
-    text.paragraph("## Checks: the switches, l_φ = 0.1 m\n\nSteady speed [m/s] of S with one thing "
-                   "changed, against the runs above. '—': capsized.")
+    text.section("Scenario", scenario.__doc__.split("\n\n", 1)[1])
+    text.section("Runs", _runs_paragraph(analysis))
+    text.section("S/vel_max and Bm/vel_max per angle")
+    text.table(_angle_rows(table))
+    text.section("Checks: the switches, l_φ = 0.1 m",
+                 "Steady speed [m/s] of S with one thing changed, against the runs above. '—': capsized.")
     for world, names in CHECKS.items():
         text.table(_check_rows(table, world, names))
-    text.paragraph(findings(table, run.l_phis, smoke))
+    text.section("What the runs show", findings(table, run.l_phis, smoke))
     text.paragraph(NOTES.format(phi_max=PHI_MAX_DEG))
+    text.section("Figure and data")
     text.figure("fig7.png", "Fig. 7 reproduced: steady speed of S, Bm and the best fixed "
                 "sail (vel_max) against ∠v_w^B; grey: no-go zone")
     text.paragraph(f"Data: `fig7.csv` (per angle, every law and check), `vel_max_grid.csv` (every "
@@ -59,10 +57,29 @@ def report(analysis: Analysis, smoke: bool) -> str:
     return text.text()
 
 
+SUMMARY_WORLDS = {"paper": "paper world", "mujoco": "6-DOF robot"}
+
+
+def _summary(analysis: Analysis) -> str:
+    """What the comparison table says, world by world, with this run's numbers."""
+    numbers, parts = analysis.numbers, []
+    for l_phi in analysis.settings.l_phis:
+        for world in WORLDS:
+            key = f"{world}_lphi{l_phi:g}"
+            parts.append(f"{SUMMARY_WORLDS[world]}, l_φ = {l_phi:g} m: S/vel_max ≥ "
+                         f"{numbers[f'min_S_over_vel_max_{key}']:.3g}, mean Bm/vel_max "
+                         f"{numbers[f'mean_Bm_over_vel_max_{key}']:.3g}, S ≥ Bm at "
+                         f"{100 * numbers[f'share_S_at_least_Bm_{key}']:.0f} % of angles")
+    return (f"Steady speed of S, Bm and the best fixed sail (vel_max) per wind angle, {TRUE_WIND:g} m/s at "
+            "the sail. Paper vs ours: the paper gives curves only. Its sentence 'trimming the sail with δ_s* gives "
+            "better results than with [3] and ... it is close to the maximum theoretical value' is the "
+            "'paper' column; ours are over the sailable angles: " + "; ".join(parts) + ".")
+
+
 def _runs_paragraph(analysis: Analysis) -> str:
     angles, sails, refine, duration, l_phis = analysis.settings
     return (
-        f"**Runs.** Angles ∠v_w^B = {', '.join(f'{a:g}' for a in angles)}°. vel_max: the sweep engine "
+        f"Angles ∠v_w^B = {', '.join(f'{a:g}' for a in angles)}°. vel_max: the sweep engine "
         f"sails every fixed sail angle {sails[0]:g}-{sails[-1]:g}° by {sails[1] - sails[0]:g}° "
         f"(set to leeward) at every angle, then the best one ± {refine:g}°, so the best sail is "
         f"found to {refine:g}°. {duration:g} s per run from 1 m/s on heading 0 (the speed settles in "
@@ -182,7 +199,7 @@ def findings(table: pd.DataFrame, l_phis, smoke: bool) -> str:
     smoke : bool
         The short pass (its runs have no checks).
     """
-    lines = ["**What the runs show.**", ""]  # paragraphs separated by blank lines
+    lines = []  # paragraphs separated by blank lines
     for l_phi in l_phis:
         g = _sailable(table, "paper", l_phi)
         if not g.empty:
@@ -219,9 +236,11 @@ def _paper_world(g: pd.DataFrame, l_phi: float) -> str:
         f"{g['S_over_vel_max'].max():.3f}), as the paper says. Up to 150° Bm falls to "
         f"{worst_b['Bm_over_vel_max']:.2f} of vel_max, at {worst_b['angle']:g}°, where its Fig. 5 "
         f"ramp sets the sail at {worst_b['sail_Bm']:.0f}° against {worst_b['sail_S']:.0f}° for S and "
-        f"{worst_b['sail_vel_max']:.0f}° for the best fixed sail. Downwind (0-30°) S and Bm differ "
-        f"by at most {100 * down:.0f} %, as in Fig. 6's first segment. The largest steady heel of S "
-        f"is {abs(np.degrees(g['heel_S'])).max():.0f}°.")
+        f"{worst_b['sail_vel_max']:.0f}° for the best fixed sail."
+        + (f" Downwind (0-30°) S and Bm differ by at most {100 * down:.0f} %, as in Fig. 6's first "
+           "segment." if math.isfinite(down) else
+           " Downwind (0-30°) this run sails no angle to set beside Fig. 6's first segment.")
+        + f" The largest steady heel of S is {abs(np.degrees(g['heel_S'])).max():.0f}°.")
     close = g[g["angle"] > 150.0]
     if len(close):
         text += (f" At {', '.join(f'{a:g}' for a in close['angle'])}° the boat still makes "

@@ -1,8 +1,9 @@
 """Viel et al. (2019) Fig. 3, the report: the prose of report.md, filled from the analysis.
 
-Sections: the paper's bound in the paper world and in viel_boat (the like-for-like 6-DOF
-column), the measure (from the stop), the table per case and world, the paper world's switches
-and grid, why the 6-DOF boats miss, the choices, the durations. The paper's values come from
+The summary (the paper's bound in the paper world and in viel_boat, the like-for-like 6-DOF
+column) and the table per case and world; then the scenario, viel_boat case by case, the measure
+(from the stop), the trajectories, the paper world's switches and grid, why the 6-DOF boats miss,
+the choices, the durations. The paper's values come from
 the ``PAPER_*`` constants of :mod:`.scenario`.
 """
 
@@ -47,12 +48,14 @@ def report(analysis: Analysis, smoke: bool) -> str:
         The study's short pass (said in the title).
     """
     r = Report(TITLE + (" (smoke)" if smoke else ""))
-    r.paragraph(ABOUT)
     numbers = headline(analysis)
-    _bound(r, analysis, numbers)
-    _viel_boat(r, analysis)
-    _measure(r)
+    r.summary(_bound(analysis, numbers) + "\n\n" + _viel_boat(analysis) + "\n\n"
+              + f"Per case and world (task start (-30, 40) m, seed 0, dt {PAPER_DT:g} s):")
     _per_case(r, analysis)
+    r.section("Scenario", ABOUT)
+    _viel_boat_cases(r, analysis)
+    _measure(r)
+    _figures(r)
     _paper_world(r, analysis, numbers)
     _six_dof(r, analysis)
     _choices(r)
@@ -60,14 +63,14 @@ def report(analysis: Analysis, smoke: bool) -> str:
     return r.text()
 
 
-def _bound(r: Report, analysis: Analysis, h: dict) -> None:
+def _bound(analysis: Analysis, h: dict) -> str:
     grid = analysis.grid
     paper = analysis.main[analysis.main["world"] == "paper"]
     largest, after_stop = h["paper_max_after_entry_m"], h["paper_max_after_stop_m"]
     # the boat enters at d_T: when it never comes back out, the largest distance is the crossing itself
     at_entry = " (the entry crossing itself: the boat never heads back out)" if (
         largest > PAPER_D_T - 0.05 and after_stop < largest - 0.5) else ""
-    r.paragraph(
+    return (
         f"**Reproduction criterion (paper world, task start, seed 0): distance after entering the target area < "
         f"{PAPER_D_T:g} m in all six cases: {'met' if h['paper_all_below_7m'] else 'NOT met'}** (largest "
         f"{largest:.4f} m{at_entry}; at most {after_stop:.2f} m once stopped, below the paper's "
@@ -75,17 +78,17 @@ def _bound(r: Report, analysis: Analysis, h: dict) -> None:
         f"paper-world runs ({grid['start'].nunique()} starts × {grid['seed'].nunique()} headings × "
         f"{grid['case'].nunique()} cases) the distance stays below {PAPER_D_T:g} m in "
         f"{100 * h['grid_fraction_below_7m']:.0f} % and below {PAPER_MAX_M:g} m after the stop in "
-        f"{100 * h['grid_fraction_below_6_4m']:.0f} %. The paper's controller parameters were not changed.")
+        f"{100 * h['grid_fraction_below_6_4m']:.0f} %. The paper's controller parameters are used unchanged.")
 
 
-def _viel_boat(r: Report, analysis: Analysis) -> None:
-    main, variants = analysis.main, analysis.variants
+def _viel_boat(analysis: Analysis) -> str:
+    main = analysis.main
     vb = main[main["world"] == "viel_boat"]
     if vb.empty:
-        return
+        return ""
     entered = vb[vb["entered_at"].notna()]
     held = int((entered["max_after_stop"] < PAPER_MAX_M).sum())
-    r.paragraph(
+    return (
         "**Like for like in 6-DOF (viel_boat, Viel's Table 1 boat, task start, seed 0): "
         f"enters the target area in {len(entered)} of {len(vb)} cases**"
         + (f", and stays below the paper's {PAPER_MAX_M:g} m after the stop in {held} of them"
@@ -94,14 +97,22 @@ def _viel_boat(r: Report, analysis: Analysis) -> None:
                                                                   entered["max_distance_after_entry"],
                                                                   strict=True)) + ")"
            if len(entered) else "")
-        + ". Per case, what the boat did: "
-        + "; ".join(f"case {int(x['case'])}: {viel_boat_cause(x, variants)}" for _, x in vb.iterrows())
-        + ".")
+        + ". The other 6-DOF boats: see '6-DOF boats: why they miss'.")
+
+
+def _viel_boat_cases(r: Report, analysis: Analysis) -> None:
+    main, variants = analysis.main, analysis.variants
+    vb = main[main["world"] == "viel_boat"]
+    if vb.empty:
+        return
+    r.section("Like for like in 6-DOF: what viel_boat does, case by case",
+              "; ".join(f"Case {int(x['case'])}: {viel_boat_cause(x, variants)}" for _, x in vb.iterrows())
+              + ".")
 
 
 def _measure(r: Report) -> None:
-    r.paragraph(f"## The measure: {PAPER_MAX_M:g} m is about what happens after the boat has stopped")
-    r.paragraph(
+    r.section(
+        f"The measure: {PAPER_MAX_M:g} m is about what happens after the boat has stopped",
         f"The boat enters the target area at d = d_T = {PAPER_D_T:g} m, so the task's "
         "`max_distance_after_entry` starts from the entry crossing and is never below ~6.9 m, whatever "
         f"the boat does next. The paper's {PAPER_MAX_M:g} m can only be read as the excursions once the "
@@ -112,7 +123,6 @@ def _measure(r: Report) -> None:
 
 def _per_case(r: Report, analysis: Analysis) -> None:
     main, variants, capability = analysis.main, analysis.variants, analysis.capability
-    r.paragraph(f"## Per case and world (task start (-30, 40) m, seed 0, dt {PAPER_DT:g} s)")
     rows = []
     for key in WORLDS:
         for _, x in main[main["world"] == key].iterrows():
@@ -128,6 +138,10 @@ def _per_case(r: Report, analysis: Analysis) -> None:
                          "difference": diff.text(),
                          "cause": cause})
     r.table(rows)
+
+
+def _figures(r: Report) -> None:
+    r.section("Trajectories")
     r.figure(FIGURES["paper"], "Paper world: trajectories (target area green, pre-arrival area between "
                                "the red circles, wind red) and the distance to the target")
     r.figure(FIGURES["viel_boat"], "viel_boat (6-DOF): Viel's Table 1 boat, like for like")
@@ -138,8 +152,8 @@ def _per_case(r: Report, analysis: Analysis) -> None:
 
 
 def _paper_world(r: Report, analysis: Analysis, h: dict) -> None:
-    r.paragraph("## Paper world: the reading of eqs. 7-8, and what moves the boat out")
-    r.paragraph(
+    r.section(
+        "Paper world: the reading of eqs. 7-8, and what moves the boat out",
         "Eqs. 7-8 print the rudder forces as p5 v² sin δr and p5 u|u| cos δr, but Table 1 gives p5 = "
         f"{PAPER_P5:g} in kg/s, which is a force only when multiplied by a speed: Jaulin's rudder law p5 v "
         "sin δr, the model Table 1's p1-p11 come from. We read the squares as the misprint (both eqs.; "
@@ -210,7 +224,7 @@ def _grid(r: Report, analysis: Analysis, h: dict) -> None:
 
 def _six_dof(r: Report, analysis: Analysis) -> None:
     variants, capability = analysis.variants, analysis.capability
-    r.paragraph("## 6-DOF boats: why they miss")
+    r.section("6-DOF boats: why they miss")
     if not capability.empty:
         r.paragraph(
             "What the boats can sail, independent of Viel's laws: a PID heading rudder with the leeward "
@@ -271,8 +285,8 @@ def _six_dof_reading(variants: pd.DataFrame, capability: pd.DataFrame) -> str:
 
 
 def _choices(r: Report) -> None:
-    r.paragraph("## Choices")
-    r.paragraph(
+    r.section(
+        "Choices",
         "* Start: the task's default (-30, 40) m at 0.5 m/s on a heading drawn from seed 0 (Viel does not "
         "print the starts of Fig. 3); the paper world also runs from the other starts and seed 1.\n"
         f"* Control period dt = {PAPER_DT:g} s (§5.1: eq. 14's dt), the same in all three worlds; the "
@@ -292,8 +306,8 @@ def _durations(r: Report, analysis: Analysis) -> None:
     per_world = {key: float(main[main["world"] == key]["wall_time"].mean()) for key in WORLDS}
     dt_runs = variants[variants["variant"] == "dt_0.1"]["wall_time"]
     bad = int((pd.concat([grid, main[main["world"] != "paper"]])["status"] != "ok").sum())
-    r.paragraph("## Durations")
-    r.paragraph(
+    r.section(
+        "Durations",
         f"Simulations {'(smoke) ' if analysis.smoke else ''}{analysis.seconds:.0f} s wall (sweeps and "
         f"switches together on one worker pool). "
         f"{len(grid) + 2 * len(paper)} sweep runs, {len(variants) - len(main) + len(capability)} switch runs. "

@@ -35,22 +35,42 @@ def report(analysis: Analysis, smoke: bool) -> str:
     """
     a = analysis
     text = Report(TITLE)
-    text.paragraph(SCENARIO.split("\n\n", 1)[1])
+    text.summary(_summary(a, smoke))
+    text.comparison(_table2_rows(a, smoke))
+    text.section("Scenario", SCENARIO.split("\n\n", 1)[1])
     text.paragraph(
         f"Runs: {len(a.results)} simulations of {a.duration:g} s{' (smoke mode)' if smoke else ''}, "
         f"seed 0, wall time {a.seconds:.0f} s. Distances are the displacement from the start "
         "over the whole run (the boat starts at 2 m/s on a random heading within ±5°).")
-    text.paragraph("## Table 2: drift")
-    text.comparison(_table2_rows(a, smoke))
     if not smoke:
-        text.paragraph("## Switches: what moves the numbers")
+        text.section("Switches: what moves the numbers")
         text.table(_switch_rows(a.summaries),
                    ["switch", "world", "controller", "north [m]", "east [m]", "error [deg]",
                     "mean surge [m/s]", "rudder rms [deg]", "mean β_b [deg]"])
         text.paragraph(_causes(a))
+    text.section("Figures")
     text.figure(FIG4, "Fig. 4: position (x north against y east), heading and course controller")
     text.figure(FIG5, "Fig. 5: course over ground, heading and course controller")
     return text.text()
+
+
+def _summary(a: Analysis, smoke: bool) -> str:
+    """Table 2's claim, world by world: the course controller's cut of the heading error."""
+    worlds = "; ".join(
+        f"{label}: {a.main(world, 'heading')['error_deg']:.2f}° → {a.main(world, 'course')['error_deg']:.2f}°, "
+        f"a reduction of {100 * a.reduction[world]:.0f} %" for world, label in WORLDS.items())
+    text = (f"Table 2: Wille's heading controller (eqs. 46-51) against the course controller "
+            f"(eqs. 52-59) close-hauled, the error |atan(x/y)| after {a.duration:g} s. The paper's "
+            f"course controller cuts the error by {100 * PAPER_REDUCTION:.0f} %; ours, heading → "
+            f"course controller: {worlds}.")
+    if smoke:
+        return text + " The smoke run compares the errors only (a short run's distances are not the paper's)."
+    north = {law: a.main("paper", law)["north"] for law in ("heading", "course")}
+    return text + (f" The distances sailed north in the paper world, {north['heading']:.0f} m and "
+                   f"{north['course']:.0f} m against the paper's {PAPER_TABLE2['heading']['north']:g} m and "
+                   f"{PAPER_TABLE2['course']['north']:g} m, are set by our sail, the course correction's "
+                   "feedback of the rudder's own side force and, in 6-DOF, the heading loop's limit "
+                   "cycle: each cause is checked by a switch below.")
 
 
 def _table2_rows(a: Analysis, smoke: bool) -> list[dict]:
@@ -165,7 +185,7 @@ def _causes(a: Analysis) -> str:
    {100 * (1 - c_s['north'] / h['north']):.0f} % (paper {100 * (1 - pc2['north'] / ph2['north']):.0f} %), and the boat ends to windward of the track as
    the paper's does (it blames the neglected drag in eq. 56 for a correction "slightly bigger than it
    should be"). The paper reports a smooth course with R_y' in F_U; its text does not say how this
-   loop was kept quiet.
+   loop is kept quiet.
 3. **Our flat AR 5 sail in place of Marchaj's coefficients.** We do not have Marchaj's table;
    the switch multiplies our sail's force by {SAIL_FACTOR:g} (the factor at which our beam-reach
    sim 1 reaches the paper's surge speed, see wille_roll_table1), in the physics and in the λ
@@ -181,11 +201,11 @@ def _causes(a: Analysis) -> str:
    {pc['error_deg']:.2f}° (heading / course controller; as built {hm['error_deg']:.2f}° /
    {cm['error_deg']:.2f}°), reduction {100 * (1 - pc['error_deg'] / ph['error_deg']):.0f} %, rudder rms
    {ph['rudder_rms_deg']:.0f}° / {pc['rudder_rms_deg']:.0f}°, surge {ph['mean_surge']:.2f} /
-   {pc['mean_surge']:.2f} m/s. In exploratory runs with the other hydrodynamic forms of the physics
-   options (added-mass coupling, vertical damping, restoring axes; not repeated here) it also limit-cycled at
-   100 Hz, with heave and pitch held (dofs = 4), with the paper's hydrostatics, and with
-   K_d = 3e5, while the paper world with the rigid-hull yaw kinematics (``paper_model="rigid"``)
-   at 50 Hz was quiet (rudder rms < 1°). Among what is left, the likeliest is the MuJoCo rudder, a
+   {pc['mean_surge']:.2f} m/s. Exploratory runs (not repeated here) limit-cycle as well with the
+   other hydrodynamic forms of the physics options (added-mass coupling, vertical damping,
+   restoring axes), at 100 Hz, with heave and pitch held (dofs = 4), with the paper's
+   hydrostatics, and with K_d = 3e5, while the paper world with the rigid-hull yaw kinematics
+   (``paper_model="rigid"``) at 50 Hz is quiet (rudder rms < 1°). Among what is left, the likeliest is the MuJoCo rudder, a
    servo-driven body behind the 0.2 s lag (an extra ~0.07 s of overdamped servo lag), in a loop
    with almost no phase margin; we did not isolate it further. The course controller in 6-DOF:
    {cm['north']:.0f} m, error {cm['error_deg']:.2f}°; with F_U = -S_y': {cms['north']:.0f} m,

@@ -70,7 +70,7 @@ def causes(a: Analysis) -> str:
     str
         Markdown: a heading and seven numbered causes.
     """
-    return ("### Causes, each checked by switching it\n" + _cause_heel(a.runs) + _cause_wind(a)
+    return ("## Causes, each checked by switching it\n" + _cause_heel(a.runs) + _cause_wind(a)
             + _causes_gain_band_rigid(a.runs) + _cause_lag(a.runs) + _cause_six_dof(a))
 
 
