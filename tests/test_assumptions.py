@@ -5,6 +5,7 @@ import math
 import numpy as np
 import pytest
 from conftest import CALM, load
+from test_reports import layout_problems
 
 from sailmujoco.tasks.sailing import diagnostic_summary
 
@@ -163,4 +164,5 @@ def test_study_smoke(tmp_path):
     # |eq20 - geo| / geo <= 1 / 0.8 - 1 there
     assert 0.0 < headline["wille_yacht_restoring_error"] < 0.25
     report = (tmp_path / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     assert report.count("\n| ") >= 10 and (tmp_path / "wind_plane.png").stat().st_size > 30_000

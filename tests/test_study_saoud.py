@@ -8,6 +8,7 @@ import pytest
 from sailmujoco.studies import saoud_fig6, saoud_fig7
 from sailmujoco.studies.kit import saoud
 from sailmujoco.studies.saoud_fig7 import scenario as fig7_scenario
+from test_reports import layout_problems
 
 from sailmujoco import sweep
 from sailmujoco.study import run_study
@@ -58,6 +59,7 @@ def test_fig6_smoke(tmp_path):
     # ... and the heel -> yaw coupling switched into the paper world makes it round up
     assert not out["check_held_paper_paper_model=rigid_S_45"]
     report = (tmp_path / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     # Saoud eq. 4 in the 6-DOF world: the report says what its run did
     held = all(out[f"check_held_mujoco_hydrostatics=paper_{law}_{a}"] for law in ("S", "Bm")
                for a in (10, 45, 80))

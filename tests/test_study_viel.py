@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from sailmujoco.studies import viel_fig3
 from sailmujoco.studies.viel_fig3 import measures, scenario, switches
+from test_reports import layout_problems
 
 from sailmujoco import study, sweep
 from sailmujoco.reference.viel import VielWorld
@@ -23,6 +24,7 @@ def smoke(tmp_path_factory):
 def test_smoke_writes_report_figures_and_data(smoke):
     out, headline = smoke
     report = (out / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     assert "Reproduction criterion" in report and "max after stop" in report
     for name in ("fig3_paper.png", "fig3_viel_boat.png", "fig3_wille_yacht.png", "fig3_saoud_robot.png",
                  "max_distance.png", "six_dof_switches.png"):
@@ -66,6 +68,7 @@ def test_smoke_six_dof_findings(smoke):
 def test_smoke_viel_boat_column_reports_a_measured_cause(smoke):
     out, h = smoke
     report = (out / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     assert "Like for like in 6-DOF (viel_boat" in report
     for case in (1, 2):
         cause = h[f"viel_boat_case{case}_cause"]

@@ -12,6 +12,7 @@ import pandas as pd
 import pytest
 from sailmujoco.studies import wille_course_table2, wille_roll_table1
 from sailmujoco.studies.kit.wille import table1_numbers, table1_simulate
+from test_reports import layout_problems
 
 from sailmujoco import sweep
 from sailmujoco.study import run_study
@@ -35,6 +36,7 @@ def roll(tmp_path_factory):
 def test_course_study_writes_report_and_figures(course):
     out, _ = course
     report = (out / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     assert "Table 2" in report
     assert "| quantity | world | paper | ours | difference | cause |" in report
     for name in ("fig4_position.png", "fig5_course.png"):
@@ -74,6 +76,7 @@ def test_course_study_paper_world_is_quiet_at_50_hz(course):
 def test_roll_study_writes_report_and_figures(roll):
     out, _ = roll
     report = (out / "report.md").read_text()
+    assert layout_problems(report) == []  # title, summary, main table
     for heading in ("Table 1", "Fig. 3", "Fig. 8"):
         assert heading in report
     pngs = sorted(p.name for p in out.glob("*.png"))
