@@ -121,7 +121,7 @@ class SailEnvironment(control.Environment):
         except (ValueError, FloatingPointError, SimulationStopped):
             fresh = None
         if fresh is not None and finite(fresh):
-            observation = fresh
+            observation = self._task.last_observation = fresh
         observation = self._task.observation_of(observation)
         if self._flat_observation:
             observation = control.flatten_observation(observation)
