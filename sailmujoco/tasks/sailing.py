@@ -175,8 +175,8 @@ class CourseHold(SailTask):
 
     Reference: ``desired_course`` (rad, compass). Reward terms: ``course`` = -(e/pi)^2 with e
     the course-over-ground error (in [-1, 0]). Metrics: ``drift_error`` = ``|atan(x/y)|`` (rad,
-    x north, y east: Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute), ``mean_surge`` (m/s),
-    ``north``, ``east`` (m).
+    x north, y east: Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute),
+    ``mean_surge`` (m/s), ``north``, ``east`` (m).
 
     Parameters
     ----------
