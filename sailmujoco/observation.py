@@ -8,6 +8,9 @@ the dict here, from one rotation matrix and the arrays they hold, with the same 
 the same numbers as the accessors (the same numpy and MuJoCo functions where a library
 computes a value, since numpy's SIMD transcendental functions need not agree with ``math``'s
 to the last bit), so the observation is identical bit for bit (``tests/test_measurement.py``).
+
+A task hands its ``true_state`` out as a :class:`TrueState`: read by name like a dict, and one
+float64 array to numpy and to dm_control (``dm_control.rl.control.flatten_observation``).
 """
 
 from __future__ import annotations
@@ -24,6 +27,49 @@ WRENCH_NAMES = ("sail", "keel", "rudder", "damping", "added_mass", "restoring")
 
 PI = math.pi
 TWO_PI = 2.0 * math.pi
+
+
+class TrueState(dict):
+    """The full state of a task's observation: a dict of named float64 arrays that is also one
+    flat float64 array, its entries' numbers in its key order.
+
+    Full-state controllers read it by name (``true_state["u"]``); numpy (``np.asarray``) and
+    dm_control (``flatten_observation``, ``flat_observation=True``) see the flat array, so an
+    observation holding it flattens like any dm_control observation. :meth:`layout` says which
+    slice of the flat array holds which entry.
+
+    Parameters
+    ----------
+    entries : mapping
+        Name -> array (or number), in the order the flat array takes them.
+    """
+
+    def ravel(self) -> np.ndarray:
+        """The numbers of every entry, in key order, as one float64 array (a copy)."""
+        return np.concatenate([np.ravel(np.asarray(value, dtype=np.float64)) for value in self.values()])
+
+    def __array__(self, dtype=None, copy=None):
+        flat = self.ravel()
+        return flat if dtype is None else flat.astype(dtype, copy=False)
+
+    @property
+    def shape(self) -> tuple[int]:
+        """The flat array's shape, ``(n,)``."""
+        return (sum(int(np.size(value)) for value in self.values()),)
+
+    @property
+    def dtype(self) -> np.dtype:
+        """float64, the flat array's dtype."""
+        return np.dtype(np.float64)
+
+    def layout(self) -> dict[str, slice]:
+        """Name -> the slice of the flat array that holds it."""
+        out, start = {}, 0
+        for key, value in self.items():
+            size = int(np.size(value))
+            out[key] = slice(start, start + size)
+            start += size
+        return out
 
 
 def wrench_rows(terms: tuple[str, ...]) -> tuple[tuple[str, ...], np.ndarray]:

@@ -84,7 +84,8 @@ def keyword_options(task: str) -> tuple:
 
 def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int | None = None,
          time_limit: float | None = None, control_timestep: float = 0.1,
-         physics: PhysicsOptions | dict | None = None, **options) -> SailEnvironment:
+         physics: PhysicsOptions | dict | None = None, flat_observation: bool = False,
+         **options) -> SailEnvironment:
     """Build an environment.
 
     Parameters
@@ -107,6 +108,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
         The physics options (:class:`sailmujoco.options.PhysicsOptions`, whose docstring
         tables them: force models and their forms, ``sail_mode``, ``dofs``, ``paper_model``,
         ``boat_options``), as an object or a dict of its fields; default: the boat as built.
+    flat_observation : bool
+        dm_control's option: every observation one float64 array under ``"observations"``.
     **options
         The task's options (e.g. ``case=3`` for position_keeping, ``wind_speed=4.0``;
         :func:`task_options` lists them), and any physics option given by its field name
@@ -122,6 +125,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     dt_ok = isinstance(control_timestep, (int, float)) and not isinstance(control_timestep, bool)
     if not (dt_ok and math.isfinite(control_timestep) and control_timestep > 0):
         raise ValueError(f"control_timestep must be a positive time in s, got {control_timestep!r}")
+    if not isinstance(flat_observation, bool):
+        raise ValueError(f"flat_observation must be True or False, got {flat_observation!r}")
     if time_limit is not None:
         time_limit = check_number("time_limit", time_limit, 0.0, low_open=True, unit="s")
     settings, own_options, params = _split(task, physics, options)
@@ -145,7 +150,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
         world_physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
                                                model=settings.paper_model))
     return SailEnvironment(world_physics, the_task, time_limit=time_limit or the_task.duration,
-                           control_timestep=control_timestep, legacy_step=False)
+                           control_timestep=control_timestep, flat_observation=flat_observation,
+                           legacy_step=False)
 
 
 def _split(task: str, physics, options: dict) -> tuple[PhysicsOptions, dict, BoatParams | None]:

@@ -1,10 +1,12 @@
-"""The Gymnasium adapter: registered ids for every boat and task, Gymnasium's episode contract
-(reset before step, and again after the end), observations inside their declared bounds, and
-the normalised action space mapped linearly onto the actuators' range."""
+"""The Gymnasium adapter: registered ids for every boat and task, Gymnasium's checker silent on
+every one, Gymnasium's episode contract (reset before step, and again after the end),
+observations inside their declared finite bounds, and the normalised action space mapped
+linearly onto the actuators' range."""
 
 import math
 import subprocess
 import sys
+import warnings
 
 import gymnasium
 import numpy as np
@@ -28,7 +30,13 @@ def test_every_boat_and_task_has_a_registered_id():
             camel = "".join(w[0].upper() + w[1:] for w in boat.split("_")), \
                 "".join(w[0].upper() + w[1:] for w in task.split("_"))
             env_id = f"sailmujoco/{camel[0]}-{camel[1]}-v0"
-            assert gymnasium.spec(env_id).kwargs == {"boat": boat, "task": task}
+            spec = gymnasium.spec(env_id)
+            assert spec.kwargs == {"boat": boat, "task": task}
+            # the task's duration at 0.1 s a step: 60 s -> 600, 200 s -> 2000, 300 s -> 3000
+            assert spec.max_episode_steps == {"heading_hold": 600, "speed_trial": 600,
+                                              "course_hold": 2000, "position_keeping": 2000,
+                                              "beam_reach_roll": 3000}[task]
+            assert spec.vector_entry_point == "sailmujoco.gym:SailVectorEnv"
     for env_id, boat, task in (("sailmujoco/WilleYacht-CourseHold-v0", "wille_yacht", "course_hold"),
                                ("sailmujoco/SaoudRobot-BeamReachRoll-v0", "saoud_robot", "beam_reach_roll"),
                                ("sailmujoco/VielBoat-PositionKeeping-v0", "viel_boat", "position_keeping")):
@@ -90,6 +98,21 @@ def test_step_after_termination_raises():
         env.step(np.zeros(2))
 
 
+@pytest.mark.parametrize("env_id", gym_ids())
+def test_gymnasium_checker_is_silent_on_every_id(env_id):
+    """check_env with every warning an error, the rgb_array render check included; the episode
+    length the id registers is the environment's own."""
+    env = gymnasium.make(env_id)
+    assert env.unwrapped.unwrapped_dm_env.max_steps() == env.spec.max_episode_steps
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_env(env.unwrapped)
+    space = env.observation_space
+    for key, box in space.spaces.items():
+        assert box.dtype == np.float32 and np.isfinite(box.low).all() and np.isfinite(box.high).all(), key
+    assert "true_state" not in space.spaces
+
+
 @pytest.mark.parametrize("boat,task,world,options", [
     ("wille_yacht", "heading_hold", "mujoco", {}),
     ("saoud_robot", "beam_reach_roll", "mujoco", {"dofs": 4}),
@@ -97,27 +120,70 @@ def test_step_after_termination_raises():
     ("viel_boat", "position_keeping", "paper", {}),
 ])
 def test_observations_stay_in_the_declared_space(boat, task, world, options):
-    env = SailGymEnv(boat, task, world, time_limit=8.0, normalize_action=True, **options)
+    env = SailGymEnv(boat, task, world, time_limit=8.0, include_true_state=True, **options)
     space = env.observation_space
-    assert (space["heading"].low, space["heading"].high) == (-math.pi, math.pi)
+    assert (space["heading"].low, space["heading"].high) == (np.float32(-math.pi), np.float32(math.pi))
     assert space["apparent_wind_speed"].low == 0.0 and space["true_state"]["time"].low == 0.0
+    # the wind's accepted range, one limit for the tasks and the wind model
     assert space["true_state"]["wind_speed_10"].high == 100.0
-    # heel is an Euler angle in MuJoCo; the paper worlds integrate it unwrapped: no bound there
-    assert np.isinf(space["heel"].high) == (world == "paper")
-    assert np.isinf(space["position"].low).all()
+    assert (space["position"].low == -5000.0).all() and (space["position"].high == 5000.0).all()
+    # the force wrenches have no bound; everything else has
+    assert np.isinf(space["true_state"]["sail_wrench"].high).all()
+    assert np.isfinite(space["true_state"]["yaw_rate"].high)
     env.action_space.seed(7)
     observation, _ = env.reset(seed=3)
     observations = [observation]
     done = False
     while not done:
-        observation, _, terminated, truncated, _ = env.step(env.action_space.sample())
+        observation, _, terminated, truncated, info = env.step(env.action_space.sample())
         observations.append(observation)
         done = terminated or truncated
-    assert len(observations) > 60
+    # Viel's 3-DOF model spins up when random rudder drives it backwards (its yaw damping turns
+    # destabilising at negative surge): that episode leaves the rates' bound and ends there,
+    # its last observation clipped onto the bound
+    stopped = info["metrics"]["stopped"]
+    if (boat, world) == ("viel_boat", "paper"):
+        assert terminated and stopped.startswith("left the observation bounds (yaw_rate")
+        assert abs(float(observations[-1]["yaw_rate"])) == np.float32(25.0)
+    else:
+        assert truncated and stopped is None and len(observations) == 81
+    assert len(observations) > 10
     for observation in observations:
         assert space.contains(observation)
     # the episode did wander: the bounded angles are not all at one value
     assert np.ptp([float(o["apparent_wind_angle"]) for o in observations]) > 0.05
+
+
+def test_the_true_state_is_left_out_unless_asked_for():
+    """By default the observation is what the boat's sensors give (10 numbers and the task's
+    reference); include_true_state adds the 58 numbers of the full state."""
+    plain = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0")
+    full = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", include_true_state=True)
+    assert "true_state" not in plain.observation_space.spaces
+    assert "true_state" in full.observation_space.spaces
+    flat_plain = gymnasium.wrappers.FlattenObservation(plain)
+    flat_full = gymnasium.wrappers.FlattenObservation(full)
+    # position 2, velocity 2, heading, heel, roll and yaw rates, apparent wind angle and speed;
+    # desired_heading
+    assert flat_plain.observation_space.shape == (10 + 1,)
+    # 13 scalars, true wind 2, wind speed and direction, apparent wind 2, current 2, time,
+    # six wrenches of 6
+    assert flat_full.observation_space.shape == (11 + 13 + 2 + 2 + 2 + 2 + 1 + 36,)
+    first_plain, _ = flat_plain.reset(seed=4)
+    first_full, _ = flat_full.reset(seed=4)
+    assert flat_plain.observation_space.contains(first_plain)
+    # the same episode: the sensors' numbers are the same with or without the true state
+    a = plain.unwrapped.unwrapped_dm_env.task.last_observation
+    b = full.unwrapped.unwrapped_dm_env.task.last_observation
+    assert float(a["heading"]) == float(b["heading"])
+
+
+def test_angle_references_are_wrapped_into_their_bounds():
+    """A desired heading of 270 deg is handed out as -90 deg (its bounds are [-pi, pi])."""
+    env = SailGymEnv("saoud_robot", "heading_hold", desired_heading_deg=270.0, time_limit=0.3)
+    observation, _ = env.reset(seed=0)
+    assert float(observation["desired_heading"]) == pytest.approx(-math.pi / 2, abs=1e-6)
+    assert env.observation_space.contains(observation)
 
 
 def test_normalised_action_maps_onto_the_actuator_range():
@@ -137,16 +203,19 @@ def test_normalised_action_maps_onto_the_actuator_range():
     # Viel's paper boat: |delta_r| <= pi/4, |delta_s| <= pi/2 (Viel 2019 §2.1)
     viel = SailGymEnv("viel_boat", "position_keeping", "paper", normalize_action=True)
     viel.reset(seed=0)
-    observation = viel.step(np.array([-1.0, 1.0]))[0]["true_state"]
+    viel.step(np.array([-1.0, 1.0]))
+    observation = viel.unwrapped_dm_env.task.last_observation["true_state"]  # float64
     assert (float(observation["rudder"]), float(observation["sail"])) == pytest.approx(
         (-math.pi / 4, math.pi / 2), abs=1e-15)
 
 
 def test_sheeted_sail_normalised_spans_the_sheet():
     env = SailGymEnv("wille_yacht", "heading_hold", sail_mode="sheeted", normalize_action=True)
-    raw = SailGymEnv("wille_yacht", "heading_hold", sail_mode="sheeted")
-    low, high = raw.action_space.low, raw.action_space.high
+    raw = SailGymEnv("wille_yacht", "heading_hold", sail_mode="sheeted", normalize_action=False)
+    spec = raw.unwrapped_dm_env.action_spec()
+    low, high = spec.minimum, spec.maximum
     assert high[1] > low[1] > 0.0  # a sheet length, m
+    assert raw.action_space.high[1] == np.float32(high[1])
     np.testing.assert_array_equal(env.actuator_command([-1.0, -1.0]), low)
     np.testing.assert_array_equal(env.actuator_command([1.0, 1.0]), high)
 
@@ -156,9 +225,18 @@ def test_normalize_action_must_be_a_bool():
         SailGymEnv(normalize_action="yes")
 
 
-def test_gymnasium_checker_passes_with_normalised_actions():
-    env = SailGymEnv("wille_yacht", "course_hold", normalize_action=True, time_limit=2.0)
-    check_env(env, skip_render_check=True)
+def test_the_default_action_space_is_normalised():
+    env = gymnasium.make("sailmujoco/WilleYacht-CourseHold-v0")
+    assert env.action_space == gymnasium.spaces.Box(-1.0, 1.0, (2,), np.float32)
+    raw = gymnasium.make("sailmujoco/WilleYacht-CourseHold-v0", normalize_action=False)
+    rudder_max = get_boat("wille_yacht").rudder.max_angle
+    assert raw.action_space.high[0] == pytest.approx(rudder_max, rel=1e-6)
+
+
+def test_options_that_shape_the_spaces_are_fixed_at_construction():
+    env = SailGymEnv("saoud_robot", "heading_hold", time_limit=1.0)
+    with pytest.raises(ValueError, match="cannot change time_limit"):
+        env.reset(options={"time_limit": 5.0})
 
 
 def test_physics_options_reach_the_environment_and_a_reset_changes_one():

@@ -129,7 +129,7 @@ def test_load_has_at_most_eight_named_parameters():
     named = [p for p in parameters if p.kind is not p.VAR_KEYWORD]
     assert len(named) <= 8
     assert [p.name for p in named] == ["boat", "task", "world", "seed", "time_limit",
-                                       "control_timestep", "physics"]
+                                       "control_timestep", "physics", "flat_observation"]
 
 
 @pytest.mark.parametrize("task", list(suite.TASKS))

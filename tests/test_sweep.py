@@ -180,7 +180,7 @@ HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontrolle
     (HEAD + '[grid]\n"boat.l_phi" = [0.1, -1.0]\n',
      "boat options {'l_phi': -1.0}: l_phi (metacentric height) must be positive, got -1.0"),
     (HEAD + '[grid]\n"task.wind_speed" = [3.0, 500.0]\n',
-     "task options {'wind_speed': 500.0}: wind_speed must be a finite number >= 0 and <= 60 m/s"),
+     "task options {'wind_speed': 500.0}: wind_speed must be a finite number >= 0 and <= 100 m/s"),
     (HEAD + '[grid]\n"env.hydrostatics" = ["paper", "bogus"]\n',
      "env.hydrostatics = 'bogus' is not one of ('off', 'paper', 'geometric')"),
     (HEAD + '[zip]\n"env.control_timestep" = [0.1, -0.1]\n',

@@ -10,6 +10,21 @@ drive them.
 
 Every task here documents its observation and action (unit, frame), splits its reward into
 named terms (``reward_terms``; the reward is their sum) and keeps metrics over the episode.
+
+Ending early never pays
+    An episode that ends before its time limit (capsize, non-finite state; in the Gymnasium
+    adapter also leaving the sailing area or the observation's bounds) earns, on its last step,
+    the single term ``stopped`` = ``steps * (floor - 1)``: ``steps`` is that step and every
+    step the episode had left, ``floor`` the task's :meth:`SailTask.reward_floor`, the least
+    reward one step can earn while the episode runs. Sailing on would have earned at least
+    ``steps * floor`` over the same steps, so a stop, however late, is worth less than any way
+    of sailing on: an agent cannot learn to capsize its way out of a bad episode.
+
+Observation
+    The world's measurement (:func:`measure`) plus the task's references; its ``true_state``
+    is a :class:`sailmujoco.observation.TrueState` (a dict that flattens as one array, so
+    ``dm_control.rl.control.flatten_observation`` and ``flat_observation=True`` work), or left
+    out with ``include_true_state=False``. The reward reads the whole measurement either way.
 """
 
 from __future__ import annotations
@@ -17,14 +32,13 @@ from __future__ import annotations
 import math
 from collections import OrderedDict
 
-import dm_env
 import numpy as np
 from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..errors import SimulationStopped
-from ..observation import WRENCH_KEYS, WRENCH_NAMES
+from ..observation import WRENCH_KEYS, WRENCH_NAMES, TrueState
+from .environment import SailEnvironment  # noqa: F401  (imported from here too)
 from .world import PaperPhysics, World  # noqa: F401  (PaperPhysics: imported from here too)
 
 
@@ -121,97 +135,6 @@ def check_number(name: str, value, low: float | None = None, high: float | None 
     return value
 
 
-class SailEnvironment(control.Environment):
-    """``control.Environment`` that ends the episode, rather than raising, when the simulation
-    stops (capsize, non-finite state); the reason lands in ``task.metrics()['stopped']``.
-
-    A step is dm_control's, in two halves around the physics so that a batch
-    (:class:`sailmujoco.batch.BatchEnvironment`) can step the physics of many environments in
-    one call between them: :meth:`before_physics` (the action), the physics, :meth:`after_physics`
-    (record, reward, observation, the TimeStep).
-    """
-
-    def step(self, action):
-        """One control step: the action, the physics sub-steps, then the TimeStep.
-
-        Parameters
-        ----------
-        action : array_like, shape (2,)
-            [rudder angle (rad), sail angle (rad) or sheet length (m)].
-
-        Returns
-        -------
-        dm_env.TimeStep
-            The last one (reward 0) if the simulation stopped during the step.
-        """
-        if self._reset_next_step:
-            return self.reset()
-        self.before_physics(action)
-        try:
-            self._physics.step(self._n_sub_steps)
-        except SimulationStopped as stop:
-            return self.stopped_step(stop.reason)
-        return self.after_physics()
-
-    def before_physics(self, action) -> None:
-        """The task's ``before_step``: the action checked and set on the actuators.
-
-        Parameters
-        ----------
-        action : array_like, shape (2,)
-            [rudder angle (rad), sail angle (rad) or sheet length (m)].
-        """
-        self._task.before_step(action, self._physics)
-
-    def after_physics(self):
-        """The rest of dm_control's step once the physics has stepped: the TimeStep."""
-        try:
-            self._task.after_step(self._physics)
-            reward = self._task.get_reward(self._physics)
-            observation = self._task.get_observation(self._physics)
-        except SimulationStopped as stop:
-            return self.stopped_step(stop.reason)
-        if self._flat_observation:
-            observation = control.flatten_observation(observation)
-        self._step_count += 1
-        if self._step_count >= self._step_limit:
-            discount = 1.0
-        else:
-            discount = self._task.get_termination(self._physics)
-        if discount is not None:
-            self._reset_next_step = True
-            return dm_env.TimeStep(dm_env.StepType.LAST, reward, discount, observation)
-        return dm_env.TimeStep(dm_env.StepType.MID, reward, 1.0, observation)
-
-    def stopped_step(self, reason: str):
-        """The last TimeStep of an episode whose simulation stopped for ``reason``.
-
-        Parameters
-        ----------
-        reason : str
-            Why it stopped (capsized, non-finite state); recorded as ``task.metrics()['stopped']``.
-        """
-        self._task.stopped = reason
-        self._reset_next_step = True
-        # the state the run stopped in (a capsize is a valid state); the previous step's
-        # observation only when that state cannot be measured (non-finite)
-        observation = self._task.last_observation
-        try:
-            fresh = self._task.get_observation(self._physics)
-        except (ValueError, FloatingPointError, SimulationStopped):
-            fresh = None
-        if fresh is not None and _finite(fresh):
-            observation = fresh
-        return dm_env.termination(reward=0.0, observation=observation)
-
-
-def _finite(observation) -> bool:
-    """Every number of a (nested) observation is finite."""
-    if isinstance(observation, dict):
-        return all(_finite(value) for value in observation.values())
-    return bool(np.all(np.isfinite(np.asarray(observation, dtype=float))))
-
-
 class SailTask(control.Task):
     """Base task. Subclasses set ``name``, ``duration`` and override the hooks below.
 
@@ -221,16 +144,25 @@ class SailTask(control.Task):
         Seeds the initial-state randomisation (and, through :meth:`wind`, the gusts).
     heading_jitter_deg : float
         Half-width of the uniform random perturbation of the initial heading.
+    include_true_state : bool
+        Hand out the privileged ``true_state`` (force wrenches, the true wind, ...) in the
+        observation. The full-state controllers of the papers read it, so the suite keeps it
+        by default; the Gymnasium adapter leaves it out by default.
     """
 
     name = "task"
     duration = 60.0  # s, default episode length
 
-    def __init__(self, seed: int | None = None, heading_jitter_deg: float = 5.0):
+    def __init__(self, seed: int | None = None, heading_jitter_deg: float = 5.0,
+                 include_true_state: bool = True):
         if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
                                  or seed < 0):
             raise ValueError(f"seed must be None or an integer >= 0, got {seed!r}")
         check_number("heading_jitter_deg", heading_jitter_deg, 0.0, 180.0)
+        if not isinstance(include_true_state, bool):
+            raise ValueError(f"include_true_state must be True or False, got {include_true_state!r}")
+        self.include_true_state = include_true_state
+        self.last_reward_terms: dict = {}
         self.seed = seed
         self.random = np.random.default_rng(seed)
         self.heading_jitter = math.radians(heading_jitter_deg)
@@ -273,6 +205,17 @@ class SailTask(control.Task):
         """
         raise NotImplementedError
 
+    def reward_floor(self, physics) -> float | None:
+        """The least reward one step can earn while the episode runs (the sum of each term's
+        least value), or None if the task does not know it (a stop then earns 0).
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
+        """
+        return None
+
     def summarise(self, records: list[dict]) -> dict:
         """Metrics from the per-step records.
 
@@ -297,7 +240,9 @@ class SailTask(control.Task):
         self.stopped = None
         self._records = []
         self.last_observation = None
+        self.last_reward_terms = {}
         self._measured = None
+        self._floor = self.reward_floor(physics)
 
     def before_step(self, action, physics):
         """Check the action and set it on the world's actuators.
@@ -380,6 +325,22 @@ class SailTask(control.Task):
         obs = self.measurement(physics)[0]
         self._measured = None
         self.last_observation = obs
+        return self.observation_of(obs)
+
+    def observation_of(self, measured: dict) -> dict:
+        """The observation handed out for a measurement: its ``true_state`` as a
+        :class:`~sailmujoco.observation.TrueState`, or without it (``include_true_state=False``).
+
+        Parameters
+        ----------
+        measured : dict
+            A measurement with the task's references (:meth:`measurement`).
+        """
+        obs = type(measured)(measured)
+        if not self.include_true_state:
+            obs.pop("true_state", None)
+        elif "true_state" in obs:
+            obs["true_state"] = TrueState(obs["true_state"])
         return obs
 
     def observation_spec(self, physics):
@@ -404,7 +365,21 @@ class SailTask(control.Task):
         """
         observation = self.measurement(physics)[0]
         self.last_observation = observation
-        return float(sum(self.reward_terms(physics, observation).values()))
+        self.last_reward_terms = self.reward_terms(physics, observation)
+        return float(sum(self.last_reward_terms.values()))
+
+    def stop_reward(self, steps: int) -> float:
+        """The reward of a step that ends the episode early: the term ``stopped`` =
+        ``steps * (floor - 1)``, with ``floor`` the :meth:`reward_floor` (0 without one).
+
+        Parameters
+        ----------
+        steps : int
+            That step and the steps the episode had left.
+        """
+        floor = getattr(self, "_floor", None)
+        self.last_reward_terms = {"stopped": 0.0 if floor is None else steps * (floor - 1.0)}
+        return float(sum(self.last_reward_terms.values()))
 
     def get_termination(self, physics):
         """0.0 (discount) once the world has stopped (capsize, non-finite state), else None.

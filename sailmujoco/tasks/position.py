@@ -5,7 +5,9 @@ radius d_T = 7 m, the pre-arrival area the ring out to d_M = 14 m (§4.1, §5.1)
 
 Observation: the sailing observation (:mod:`sailmujoco.tasks.sailing`) plus
 ``target_position`` (2,) m, world x east, y north. Action: ``[rudder, sail]`` rad (ours).
-Reward terms: ``distance`` = -d / d_T. Metrics: ``entered_at`` (s, first time d < d_T; nan if
+Reward terms: ``distance`` = -min(d, 100 d_T) / d_T (so a step earns at least -100: beyond
+100 target radii the boat is lost anyway, and a bounded floor keeps a stop from paying, see
+:mod:`sailmujoco.tasks.base`). Metrics: ``entered_at`` (s, first time d < d_T; nan if
 never), ``max_distance_after_entry`` and ``mean_distance_after_entry`` (m; the paper: stays
 below 6.4 m), ``final_distance`` (m).
 
@@ -41,6 +43,7 @@ from .registry import register_task
 from .world import VielPhysics  # noqa: F401  (imported from here too)
 
 # case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
+FAR = 100.0  # target radii d_T: the distance term's floor, -FAR
 CASES = {1: (10.0, 0.0, 0.0), 2: (5.0, 0.0, 0.0), 3: (10.0, 5.0, 0.0),
          4: (10.0, 0.0, math.pi / 12), 5: (10.0, 5.0, math.pi / 12), 6: (10.0, 5.0, math.pi / 6)}
 
@@ -99,7 +102,10 @@ class PositionKeeping(SailTask):
 
     def reward_terms(self, physics, observation):
         d = float(np.linalg.norm(observation["position"] - self.target))
-        return {"distance": -d / self.d_target}
+        return {"distance": -min(d, FAR * self.d_target) / self.d_target}
+
+    def reward_floor(self, physics):
+        return -FAR
 
     def summarise(self, records):
         t = np.array([r["t"] for r in records])

@@ -26,11 +26,24 @@ import math
 import numpy as np
 
 from .. import frames
-from ..forces.wind import WindConfig
+from ..forces.wind import MAX_SPEED, WindConfig
 from .base import SailTask, amplitude, check_number, wrap
 from .registry import register_task
 
-MAX_WIND = 60.0  # m/s, U10: above a hurricane's; the force models are not meant for more
+# the least a hinge angle can be: |rudder| <= pi (rad) bounds the rudder term of heading_hold
+_RUDDER_LIMIT = math.pi
+
+
+def check_wind_speed(value) -> float:
+    """A task's ``wind_speed`` (U10, m/s) if it is within the wind's accepted range
+    [0, :data:`sailmujoco.forces.wind.MAX_SPEED`]; otherwise a one-line ValueError.
+
+    Parameters
+    ----------
+    value : float
+        The mean true wind at 10 m, m/s.
+    """
+    return check_number("wind_speed", value, 0.0, MAX_SPEED, unit="m/s")
 
 
 @register_task
@@ -38,7 +51,8 @@ class HeadingHold(SailTask):
     """Hold a compass heading in a steady, gusty wind.
 
     Reference: ``desired_heading`` (rad, compass). Reward terms: ``heading`` = -(e/pi)^2 with e
-    the heading error, ``rudder`` = -0.01 (sigma/0.6)^2. Metrics: ``heading_error_rms`` (rad),
+    the heading error (in [-1, 0]), ``rudder`` = -0.01 (sigma/0.6)^2 with sigma the rudder
+    angle (>= -0.01 (pi/0.6)^2); a step earns at least -1.274. Metrics: ``heading_error_rms`` (rad),
     ``mean_surge`` (m/s), ``heel_amplitude`` (rad), and over the last ``steady_window`` seconds
     ``steady_speed`` (speed over ground, m/s) and ``steady_heel`` (rad): a polar point.
 
@@ -49,7 +63,7 @@ class HeadingHold(SailTask):
     desired_heading_deg : float
         Compass heading to hold, degrees clockwise from north.
     wind_speed : float
-        Mean true wind at 10 m, U10, m/s, in [0, 60].
+        Mean true wind at 10 m, U10, m/s, in [0, 100] (:data:`~sailmujoco.forces.wind.MAX_SPEED`).
     wind_from_deg : float
         Compass bearing the wind comes from, degrees.
     gusts, wander : bool
@@ -71,7 +85,7 @@ class HeadingHold(SailTask):
         super().__init__(seed, **kwargs)
         self.diagnostics = diagnostics
         self.desired_heading = math.radians(check_number("desired_heading_deg", desired_heading_deg))
-        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.wind_speed = check_wind_speed(wind_speed)
         self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
         steady_window = check_number("steady_window", steady_window, 0.0, low_open=True, unit="s")
         self.gusts, self.wander = gusts, wander
@@ -94,6 +108,9 @@ class HeadingHold(SailTask):
         e = wrap(float(observation["heading"]) - self.desired_heading)
         rudder = float(observation["true_state"]["rudder"])
         return {"heading": -(e / math.pi) ** 2, "rudder": -0.01 * (rudder / 0.6) ** 2}
+
+    def reward_floor(self, physics):
+        return -1.0 - 0.01 * (_RUDDER_LIMIT / 0.6) ** 2
 
     def summarise(self, records):
         errors = np.array([wrap(r["heading"] - self.desired_heading) for r in records])
@@ -157,9 +174,9 @@ class CourseHold(SailTask):
     desired course 0 (north), 200 s.
 
     Reference: ``desired_course`` (rad, compass). Reward terms: ``course`` = -(e/pi)^2 with e
-    the course-over-ground error. Metrics: ``drift_error`` = |atan(x/y)| (rad, x north, y east:
-    Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute), ``mean_surge`` (m/s),
-    ``north``, ``east`` (m).
+    the course-over-ground error (in [-1, 0]). Metrics: ``drift_error`` = ``|atan(x/y)|`` (rad,
+    x north, y east: Wille's Table 2 measure), ``course_error_mean`` (rad, mean absolute),
+    ``mean_surge`` (m/s), ``north``, ``east`` (m).
 
     Parameters
     ----------
@@ -168,7 +185,7 @@ class CourseHold(SailTask):
     desired_course_deg : float
         Compass course over ground to hold, degrees clockwise from north.
     wind_speed : float
-        Mean true wind at 10 m, U10, m/s, in [0, 60].
+        Mean true wind at 10 m, U10, m/s, in [0, 100] (:data:`~sailmujoco.forces.wind.MAX_SPEED`).
     beta_w_deg : float
         Wille's beta_w, degrees: the NED bearing the wind blows *towards* (Wille 2016a eq. 42).
     **kwargs
@@ -182,7 +199,7 @@ class CourseHold(SailTask):
                  beta_w_deg: float = 130.0, **kwargs):
         super().__init__(seed, **kwargs)
         self.desired_course = math.radians(check_number("desired_course_deg", desired_course_deg))
-        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.wind_speed = check_wind_speed(wind_speed)
         beta_w_deg = check_number("beta_w_deg", beta_w_deg)
         self.wind_from = float(frames.direction_from_wille_beta_w(math.radians(beta_w_deg)))
 
@@ -204,6 +221,9 @@ class CourseHold(SailTask):
         course = math.atan2(ve, vn)  # compass
         return {"course": -(wrap(course - self.desired_course) / math.pi) ** 2}
 
+    def reward_floor(self, physics):
+        return -1.0
+
     def summarise(self, records):
         east, north = records[-1]["position"] - records[0]["position"]
         along = north * math.cos(self.desired_course) + east * math.sin(self.desired_course)
@@ -221,8 +241,10 @@ class BeamReachRoll(SailTask):
     """Wille (2016b) §5: beam reach, U10 = 10 m/s, 300 s, metrics over the last 50 s.
 
     The boat sails perpendicular to the mean wind (wind from the west, desired heading north:
-    wind from port). Reference: ``desired_heading`` (rad). Reward terms: ``speed`` = u / U10,
-    ``heel`` = -(phi / 10 deg)^2. Metrics: ``roll_amplitude`` (rad, half peak-to-peak),
+    wind from port). Reference: ``desired_heading`` (rad). Reward terms: ``speed`` =
+    max(u, -U10) / U10 (sternway faster than the wind earns no less than -1; 0 without wind),
+    ``heel`` = -(phi / 10 deg)^2 (>= -81 while the boat runs: |phi| > 90 deg is a capsize,
+    which ends the episode); a step earns at least -82. Metrics: ``roll_amplitude`` (rad, half peak-to-peak),
     ``max_roll_rate`` (rad/s), ``mean_surge`` (m/s), ``mean_heel`` (rad).
 
     Parameters
@@ -230,7 +252,7 @@ class BeamReachRoll(SailTask):
     seed : int, optional
         Seeds the initial-heading jitter and the wind's gusts.
     wind_speed : float
-        Mean true wind at 10 m, U10, m/s, in [0, 60].
+        Mean true wind at 10 m, U10, m/s, in [0, 100] (:data:`~sailmujoco.forces.wind.MAX_SPEED`).
     desired_heading_deg : float
         Compass heading to hold, degrees; the wind comes from 90 degrees to port of it.
     **kwargs
@@ -244,7 +266,7 @@ class BeamReachRoll(SailTask):
     def __init__(self, seed=None, wind_speed: float = 10.0, desired_heading_deg: float = 0.0,
                  **kwargs):
         super().__init__(seed, **kwargs)
-        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.wind_speed = check_wind_speed(wind_speed)
         self.desired_heading = math.radians(check_number("desired_heading_deg", desired_heading_deg))
 
     def wind(self):
@@ -262,8 +284,12 @@ class BeamReachRoll(SailTask):
 
     def reward_terms(self, physics, observation):
         heel = float(observation["heel"])
-        return {"speed": float(observation["true_state"]["u"]) / self.wind_speed,
-                "heel": -(heel / math.radians(10.0)) ** 2}
+        u = float(observation["true_state"]["u"])
+        speed = max(u, -self.wind_speed) / self.wind_speed if self.wind_speed > 0.0 else 0.0
+        return {"speed": speed, "heel": -(heel / math.radians(10.0)) ** 2}
+
+    def reward_floor(self, physics):
+        return -1.0 - 81.0
 
     def summarise(self, records):
         end = records[-1]["t"]
@@ -282,15 +308,15 @@ class SpeedTrial(SailTask):
 
     With the boat heading north, a wind blowing towards +a (ccw) comes from compass
     180 - a: 170, 135 and 100 deg. Reference: ``desired_heading`` = 0. Reward terms:
-    ``speed`` = |v| / 4 m/s. Metrics: ``mean_speed_<a>`` (m/s) and ``mean_heel_<a>`` (rad) over the
-    last 10 s of each segment, ``max_heel`` (rad).
+    ``speed`` = ``|v| / U10`` (>= 0; 0 without wind). Metrics: ``mean_speed_<a>`` (m/s) and
+    ``mean_heel_<a>`` (rad) over the last 10 s of each segment, ``max_heel`` (rad).
 
     Parameters
     ----------
     seed : int, optional
         Seeds the initial-heading jitter and the wind's gusts.
     wind_speed : float
-        True wind at 10 m, m/s, in [0, 60].
+        True wind at 10 m, m/s, in [0, 100] (:data:`~sailmujoco.forces.wind.MAX_SPEED`).
     **kwargs
         Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
@@ -301,7 +327,7 @@ class SpeedTrial(SailTask):
 
     def __init__(self, seed=None, wind_speed: float = 4.0, **kwargs):
         super().__init__(seed, **kwargs)
-        self.wind_speed = check_number("wind_speed", wind_speed, 0.0, MAX_WIND, unit="m/s")
+        self.wind_speed = check_wind_speed(wind_speed)
 
     @staticmethod
     def wind_from(angle_deg: float) -> float:
@@ -330,7 +356,11 @@ class SpeedTrial(SailTask):
         return {"desired_heading": 0.0}
 
     def reward_terms(self, physics, observation):
-        return {"speed": float(np.linalg.norm(observation["velocity"])) / self.wind_speed}
+        speed = float(np.linalg.norm(observation["velocity"]))
+        return {"speed": speed / self.wind_speed if self.wind_speed > 0.0 else 0.0}
+
+    def reward_floor(self, physics):
+        return 0.0
 
     def summarise(self, records):
         out = {"max_heel": float(max(abs(r["heel"]) for r in records))}
