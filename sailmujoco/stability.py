@@ -319,7 +319,7 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
     heels = np.radians(np.arange(0.0, 89.01, 1.0))  # at 90 deg the columns lie level
     c = gz_curves(p, heels, np.radians(working_heels_deg))
     deg = np.degrees(heels)
-    fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100)
+    fig, ax = plt.subplots(figsize=(6.0, 3.6), dpi=100, layout="tight")
     ax.plot(deg, c["geometric"], "k", lw=2, label="geometric hull (ours, floating freely)")
     if compare is not None:
         ax.plot(deg, gz_curves(compare, heels, ())["geometric"], "k--", lw=1,
@@ -336,7 +336,6 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
                  fontsize=9)
     ax.grid(alpha=0.3)
     ax.legend(fontsize=7, loc="lower center")
-    fig.tight_layout()
     fig.savefig(path)
     plt.close(fig)
 

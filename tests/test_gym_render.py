@@ -19,14 +19,14 @@ def test_record_video_writes_an_mp4(tmp_path):
     env = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", render_mode="rgb_array",
                          render_width=64, render_height=48, time_limit=0.45)
     assert env.metadata["render_fps"] == pytest.approx(10.0)
-    env = RecordVideo(env, str(tmp_path), episode_trigger=lambda episode: True, disable_logger=True)
+    env = RecordVideo(env, str(tmp_path / "videos"), episode_trigger=lambda episode: True, disable_logger=True)
     env.reset(seed=0)
     done = False
     while not done:
         _, _, terminated, truncated, _ = env.step(np.zeros(2, dtype=np.float32))
         done = terminated or truncated
     env.close()
-    videos = sorted(tmp_path.glob("*.mp4"))
+    videos = sorted((tmp_path / "videos").glob("*.mp4"))
     assert len(videos) == 1
     frames = list(iio.imiter(videos[0]))
     assert len(frames) == 1 + 5
