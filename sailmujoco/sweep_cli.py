@@ -14,7 +14,8 @@ EXAMPLE = '''\
 # A sweep: every combination of [grid], for each row of [zip], for each seed, is one run.
 # Run it with: sailmujoco sweep example.toml --workers 2
 name = "example"              # results go to results/sweeps/example/ (default: the file's stem)
-boat = "saoud_robot"          # sailmujoco list: the boats, tasks, worlds and controllers
+boat = "saoud_robot"          # a registered boat (sailmujoco list), or "my_boat.toml": a boat file,
+                              # relative to this file (sailmujoco boat export --help)
 task = "heading_hold"
 world = "mujoco"              # or "paper": the paper's reduced model (default: mujoco)
 controller = "pid"            # or "my_module:factory", or "path/to/my_law.py:factory"

@@ -19,7 +19,8 @@ def test_record_video_writes_an_mp4(tmp_path):
     env = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", render_mode="rgb_array",
                          render_width=64, render_height=48, time_limit=0.45)
     assert env.metadata["render_fps"] == pytest.approx(10.0)
-    env = RecordVideo(env, str(tmp_path / "videos"), episode_trigger=lambda episode: True, disable_logger=True)
+    env = RecordVideo(env, str(tmp_path / "videos"), episode_trigger=lambda episode: True,
+                      disable_logger=True)
     env.reset(seed=0)
     done = False
     while not done:

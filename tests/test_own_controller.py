@@ -248,12 +248,14 @@ def test_a_file_controller_draws_a_polar_from_the_command_line(constant_file, tm
 
 
 def test_a_file_controller_runs_in_a_sweep_file_on_two_workers(constant_file, tmp_path, capsys):
-    """Named by a path relative to the working folder, with an option; two worker processes."""
+    """Named by a path relative to the sweep file (as a boat file is), with an option; two
+    worker processes, run from another folder."""
     marker = tmp_path / "sweep_calls.txt"
-    (tmp_path / "own.toml").write_text(textwrap.dedent(f"""
+    (tmp_path / "sweeps").mkdir()
+    (tmp_path / "sweeps" / "own.toml").write_text(textwrap.dedent(f"""
         boat = "saoud_robot"
         task = "heading_hold"
-        controller = "constant.py:make"
+        controller = "../constant.py:make"
         duration = 2.0
         seeds = [0, 1]
         [options]
@@ -261,7 +263,7 @@ def test_a_file_controller_runs_in_a_sweep_file_on_two_workers(constant_file, tm
         [grid]
         "controller.rudder_deg" = [-10.0, 10.0]
     """))
-    assert main(["sweep", "own.toml", "--workers", "2", "--out", "out", "--no-progress"]) == 0
+    assert main(["sweep", "sweeps/own.toml", "--workers", "2", "--out", "out", "--no-progress"]) == 0
     assert "status: ok 4, stopped 0, failed 0" in capsys.readouterr().out
     calls = _calls(marker)
     assert len(calls) == 4 * round(2.0 / CONTROL_TIMESTEP)

@@ -27,8 +27,10 @@ Option keys are ``<namespace>.<name>``: ``env.`` goes to :func:`sailmujoco.suite
 (``control_timestep`` and the physics options, :class:`sailmujoco.options.PhysicsOptions`:
 hydrostatics, sail_mode, dofs, paper_model, the force switches), ``task.`` to the task,
 ``boat.`` to the boat's parameter factory, ``controller.`` to the controller factory.
-Controllers are found by name through the ``sailmujoco.controllers`` entry points, so the
-library never imports a controller. A misspelt key refuses in one line naming the table, the
+Controllers are found by name through the ``sailmujoco.controllers`` entry points (so the
+library never imports a controller), or by import path: ``"package.module:factory"``, or
+``"my_law.py:factory"``, a file read relative to the sweep file, as a boat file
+(``boat = "my_boat.toml"``) is. A misspelt key refuses in one line naming the table, the
 key and the nearest accepted name.
 
 Every option value of every run is checked before any run starts (boats, tasks and

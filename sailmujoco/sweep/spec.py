@@ -22,7 +22,7 @@ from ..boat_schema import is_boat_file
 from ..names import check_known
 from ..options import PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
-from .controllers import controller_factory, factory_options, portable_name
+from .controllers import controller_factory, factory_options, is_import_path, portable_name
 from .errors import SweepError
 from .kinds import check_kinds, signature_defaults
 
@@ -77,8 +77,9 @@ def env_choices() -> dict:
 def load_spec(path) -> dict:
     """Read and validate a sweep TOML file.
 
-    A ``boat`` given as a boat file (``boat = "my_boat.toml"``) is read relative to the sweep
-    file and stored as an absolute path, so that every worker finds it.
+    A ``boat`` given as a boat file (``boat = "my_boat.toml"``) and a ``controller`` given as a
+    file (``controller = "my_law.py:make"``) are read relative to the sweep file and stored as
+    absolute paths, so that every worker finds them.
 
     Parameters
     ----------
@@ -90,6 +91,11 @@ def load_spec(path) -> dict:
     spec.setdefault("name", path.stem)
     if is_boat_file(spec.get("boat")):  # relative to the sweep file; absolute for the workers
         spec["boat"] = str((path.parent / spec["boat"]).resolve())
+    controller = spec.get("controller")
+    if isinstance(controller, str) and is_import_path(controller):  # a file: as the boat file
+        target, _, factory = controller.rpartition(":")
+        if target.endswith(".py"):
+            spec["controller"] = f"{(path.parent / Path(target).expanduser()).resolve()}:{factory}"
     return validate(spec, source=f"sweep file {str(path)!r}")
 
 
