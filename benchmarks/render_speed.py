@@ -8,7 +8,7 @@ on a CPU machine), for one state of wille_yacht on a beam reach:
 * ``scene + wind arrow``: :class:`sailmujoco.video.SceneRenderer` (``mujoco.Renderer`` of the
   display model, shadows and reflections off) with only the wind arrow added;
 * ``+ force arrows``: with the sail, keel and rudder force arrows;
-* ``+ force arrows + text``: with the PIL text box and legend too (what ``record`` draws);
+* ``+ force arrows + panel``: with the side panel too (map, numbers, colour key: what ``record`` draws);
 * ``record()``: the whole pipeline (simulation, drawing, H.264 encoding by ffmpeg), in video
   frames per wall-clock second.
 
@@ -75,7 +75,7 @@ def main() -> None:
                                            forces=forces, overlay=overlay)
                  for name, forces, overlay in (("scene + wind arrow", False, False),
                                                ("+ force arrows", True, False),
-                                               ("+ force arrows + text", True, True))}
+                                               ("+ force arrows + panel", True, True))}
     rates = best_rates({name: (lambda r=r: r.render(snap)) for name, r in renderers.items()},
                        args.frames, args.repeats)
     platform = gl_renderer_name()  # the last renderer's context is current
