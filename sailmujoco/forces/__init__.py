@@ -22,6 +22,11 @@ module                  what it computes
 ``wind``                the wind's configuration, NORSOK spectrum, log profile and its
                         seeded field (gust tables, wander series), current
 ``wind_kernels``        the compiled wind velocity at a time and height (eqs. 39-43)
+``waves``               the sea state's configuration and its seeded field: elevation,
+                        orbital velocity, dynamic pressure of deep-water Airy waves
+                        (not yet read by the boat's forces)
+``wave_spectra``        Pierson-Moskowitz and JONSWAP spectra, cos-2s spreading, the
+                        sea a wind raises (fully developed, fetch-limited)
 ``boat``                every force on the boat at one instant (one compiled kernel)
 ``boat_parameters``     the boat's parameters packed into the kernel's flat array
 ======================  ===========================================================
