@@ -17,7 +17,8 @@ frequency omega_i, wavenumber k_i = omega_i^2/g, the world direction beta_i it t
   question: compare z with :func:`elevation`). The total pressure -rho g z + p_d is then zero at
   z = eta exactly; the field is divergence-free to first order in the steepness a k.
 * Components: ``"regular"`` is one component, a = H/2 with H = ``hs`` the crest-to-trough
-  height, omega = 2 pi/``tp``, phase 0 (a crest at the origin at t = 0 before the ramp).
+  height, omega = 2 pi/``tp``, phase 0 (after the ramp a crest passes the origin at every
+  whole period).
   ``"pm"`` and ``"jonswap"`` (:mod:`sailmujoco.forces.wave_spectra`) split the band
   0.5 omega_p .. 5 omega_p (the neglected tail: 0.2 % of m0 for Pierson-Moskowitz, 0.1 % for
   JONSWAP gamma = 3.3) into ``n_components`` equal bins; a_i = sqrt(2 E_i), E_i the spectrum's
