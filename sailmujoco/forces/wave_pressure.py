@@ -80,7 +80,7 @@ def _column_weight(k, zs_lo, zs_hi, lo, hi):
     """(I, zeta): I = integral of exp(k z_s) along the wet axis, d(body z) (m), and the body z
     of its centroid, where the force density exp(k z_s) of one component acts.
 
-    Measured from the end nearer the surface over the world height span d = |zs_hi - zs_lo|
+    Measured from the end nearer the surface over the world height span d = abs(zs_hi - zs_lo)
     with q = k d: I = l exp(k z_s,top) (1 - exp(-q)) / q and the centroid lies the fraction
     1/q - 1/(exp(q) - 1) of the length l from that end (series below q = 1e-4).
     """
