@@ -8,10 +8,11 @@ counter-clockwise, phase phi_j)::
     theta_j      = k_j (x cos(beta_j) + y sin(beta_j)) - omega_j t + phi_j,
     p(x, y, z, t) = -rho g z + p_d,   p_d = rho g sum_j a_j exp(k_j z_s) cos(theta_j).
 
-Linear theory gives p_d with exp(k_j z) (Newman, *Marine Hydrodynamics*, 1977, §6.2;
-Faltinsen, *Sea Loads on Ships and Offshore Structures*, 1990, §2.2 and §3.1). Above the still
-level the exponential grows, so a crest would over-press whatever lies in it. The pressure is
-therefore evaluated at the **vertically stretched** height z_s = z - eta: the exponential's
+Linear theory gives p_d with exp(k_j z) (Newman, *Marine Hydrodynamics*, 1977, ch. 6;
+Faltinsen, *Sea Loads on Ships and Offshore Structures*, 1990, ch. 2, Table 2.1, and ch. 3 for
+the Froude-Kriloff force). Above the still level the exponential grows, so a crest would
+over-press whatever lies in it. The pressure is therefore evaluated at the **vertically
+stretched** height z_s = z - eta: the exponential's
 argument is never positive in the water, and at the surface p = -rho g eta + rho g eta = 0
 exactly, so cutting a column at the local surface leaves no pressure on the cut.
 Wheeler (1970) stretching, z_s = (z - eta) / (1 + eta / d), is the other common choice; in
@@ -45,10 +46,11 @@ hence the exponential, varies exactly with the column's tilt, as
 every amplitude zero the wrench is bit for bit that of ``geometric_buoyancy``.
 
 Left out: diffraction (the hull's disturbance of the wave; at long waves its leading part is
-the added-mass term rho V du/dt, not included here), radiation (the waves the moving hull
-makes), the short-wave regime lambda ~ L where a column's sides see different phases, green
-water on deck beyond the deck's own pressure, and columns far from vertical at large heel
-(their horizontal offset along the axis against the wave phase).
+the added mass times the water's acceleration, not included here), radiation (the waves the
+moving hull makes), waves short against the hull (lambda ~ L or shorter), where diffraction is
+as large as the Froude-Krylov force, green water on deck beyond the deck's own pressure, and
+columns far from vertical at large heel (their horizontal offset along the axis against the
+wave phase).
 """
 
 from __future__ import annotations
