@@ -137,6 +137,20 @@ def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | N
     return mujoco_world, params, sail_mode, target
 
 
+def simulated_sea(physics):
+    """The sea a simulation feels: its ``waves``, or its options' ``waves``; None without one.
+
+    Parameters
+    ----------
+    physics : object
+        ``env.physics`` of any world.
+    """
+    waves = getattr(physics, "waves", None)
+    if waves is None:
+        waves = getattr(getattr(physics, "options", None), "waves", None)
+    return waves
+
+
 def _even(name: str, value: int) -> int:
     value = int(value)
     if value < 16 or value % 2:
@@ -193,9 +207,14 @@ def _encoder():
 
 
 def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, controller_options,
-              options: dict):
-    """(env, policy, controller name) of the run, the policy reset with ``seed``."""
+              options: dict, waves=None):
+    """(env, policy, controller name, duration in s) of the run, the policy reset with ``seed``;
+    ``waves`` is given to the physics where it takes a sea."""
+    from ..options import PHYSICS_FIELDS
     from ..suite import load
+
+    if waves is not None and "waves" in PHYSICS_FIELDS:
+        options = {**options, "waves": waves}
     from ..sweep import make_controller
 
     env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
@@ -207,7 +226,16 @@ def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, 
         policy = controller(env)
     if hasattr(policy, "reset"):
         policy.reset(seed)
-    return env, policy, name
+    return env, policy, name, float(seconds) if seconds is not None else float(env.task.duration)
+
+
+def _scene_renderer(boat: str, task: str, world: str, name: str, env, options: dict, waves, **kwargs):
+    """(whether it is the MuJoCo world, the run's :class:`SceneRenderer`): its boat, target,
+    labels and sea (``waves``, else the simulation's); ``kwargs`` its size and camera."""
+    mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
+    sea = waves if waves is not None else simulated_sea(env.physics)
+    return mujoco_world, SceneRenderer(params, sail_mode=sail_mode, target=target, waves=sea,
+                                       labels=f"{boat_label(boat)} · {task} · {name} ({world})", **kwargs)
 
 
 class _Frames:
@@ -309,7 +337,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
            progress: bool = False, follow_distance: float | None = None,
            follow_bearing_deg: float | None = None, follow_elevation_deg: float = ELEVATION_DEG,
            follow_lag: float = 3.0, top_center=None, top_extent: float | None = None,
-           **options) -> Recording:
+           waves=None, **options) -> Recording:
     """Run ``task`` on ``boat`` under ``controller`` and write the video to ``out_path`` (mp4).
 
     Parameters
@@ -343,6 +371,9 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
         Progress over frames on stderr: a bar on a terminal, a plain line per tenth elsewhere.
     follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
         Camera settings, see :class:`~sailmujoco.video.SceneRenderer`.
+    waves : WaveConfig, optional
+        The sea drawn (:mod:`sailmujoco.video.sea`), given to :func:`sailmujoco.suite.load` too where
+        the physics takes one. None: the simulation's own (:func:`simulated_sea`), or a flat sea.
     **options
         Passed to :func:`sailmujoco.suite.load`: environment options (``hydrostatics``,
         ``dofs``, ``control_timestep``, ``boat_options`` ...) and task options (``case=3``...).
@@ -360,18 +391,15 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     fps, width, height = check_arguments(
         camera=camera, fps=fps, seconds=seconds, width=width, height=height, follow_distance=follow_distance,
         follow_bearing_deg=follow_bearing_deg, quality=quality, options=options)
-    import_gl()
-    _encoder()
+    import_gl(), _encoder()  # fail before loading anything
     start_wall = time.perf_counter()
-    env, policy, name = _load_run(boat, task, world, controller, seed, seconds, controller_options, options)
-    mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
-    duration = float(seconds) if seconds is not None else float(env.task.duration)
-    renderer = SceneRenderer(params, width, height, camera, forces=forces, overlay=overlay,
-                             sail_mode=sail_mode, target=target,
-                             labels=f"{boat_label(boat)} · {task} · {name} ({world})",
-                             follow_distance=follow_distance, follow_bearing_deg=follow_bearing_deg,
-                             follow_elevation_deg=follow_elevation_deg, follow_lag=follow_lag,
-                             top_center=top_center, top_extent=top_extent)
+    env, policy, name, duration = _load_run(boat, task, world, controller, seed, seconds, controller_options,
+                                            options, waves)
+    mujoco_world, renderer = _scene_renderer(
+        boat, task, world, name, env, options, waves, width=width, height=height, camera=camera,
+        forces=forces, overlay=overlay, follow_distance=follow_distance,
+        follow_bearing_deg=follow_bearing_deg, follow_elevation_deg=follow_elevation_deg,
+        follow_lag=follow_lag, top_center=top_center, top_extent=top_extent)
     with _partial_file(Path(out_path)) as partial:
         frames = _Frames(renderer, partial, fps, max(1, round(duration * fps)), quality, progress)
         try:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from . import overlays, panel, water
+from . import overlays, panel, sea, water
 from .camera import DISTANCE_MASTHEADS, ELEVATION_DEG, FollowCamera, boom_angle, top_pose, yaw_of
 from .gl import import_gl, offscreen_renderer
 from .overlays import FORCES
@@ -159,13 +159,15 @@ def close_outward(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, 
     return v.ravel(), f.ravel()
 
 
-def display_model(params, sail_mode: str = "actuated", width: int = 640, height: int = 480):
+def display_model(params, sail_mode: str = "actuated", width: int = 640, height: int = 480,
+                  waves=None):
     """The boat and scene compiled for drawing only (raw ``mujoco.MjModel``, 6 DOF).
 
     Display changes (none touches a simulation): the hull mesh closed and wound outward, the
     sea's wave texture and opacity and the deep water under it (:mod:`sailmujoco.video.water`),
     the sail see-through (:data:`SAIL_ALPHA`: the follow camera sits to windward, and the
-    sail's force points to leeward), shadows off, an offscreen buffer of at least ``width`` x ``height``.
+    sail's force points to leeward), shadows off, an offscreen buffer of at least ``width`` x ``height``;
+    with a sea, the moving surface in place of the flat one (:mod:`sailmujoco.video.sea`).
 
     Parameters
     ----------
@@ -175,6 +177,8 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
         As the simulated boat.
     width, height : int
         Smallest offscreen buffer, pixels.
+    waves : WaveConfig, optional
+        The sea drawn; None or ``hs = 0``: the flat sea.
     """
     import mujoco
 
@@ -187,6 +191,8 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
                                      include={f"{params.name}.xml": boat.to_xml().encode()})
     deepest = params.hull.canoe_draft + max(params.keel.span, params.rudder.span)  # m, the foils' tips
     water.add_deep_water(spec, deepest + 0.25 * params.hull.length)
+    if sea.has_sea(waves):
+        sea.add_sea_surface(spec, sea.SeaLayout(waves, params.hull.length))
     model = spec.compile()
     water.paint_sea(model, params.hull.length)
     model.mat_rgba[model.material("sailcloth").id, 3] = SAIL_ALPHA
@@ -227,6 +233,11 @@ class SceneRenderer:
         Make the offscreen GL context that :meth:`render` draws with. Without it the display
         model, :meth:`pose`, :meth:`decorate` and :meth:`camera_pose` serve a window that has
         its own context (``sailmujoco view``).
+    waves : WaveConfig, optional
+        The sea drawn (:mod:`sailmujoco.video.sea`): a height field around the boat that
+        follows :func:`~sailmujoco.forces.waves.elevation`, set by :meth:`pose` (``self.sea``;
+        a window with its own context uploads it after each pose, ``viewer.update_hfield(
+        self.sea.hfield_id)``). None or ``hs = 0``: the flat sea (``self.sea`` is None).
     """
 
     def __init__(self, params, width: int = 640, height: int = 480, camera: str = "follow",
@@ -234,7 +245,8 @@ class SceneRenderer:
                  target: dict | None = None, labels: str = "",
                  follow_distance: float | None = None, follow_bearing_deg: float | None = None,
                  follow_elevation_deg: float = ELEVATION_DEG, follow_lag: float = 3.0,
-                 top_center=None, top_extent: float | None = None, offscreen: bool = True):
+                 top_center=None, top_extent: float | None = None, offscreen: bool = True,
+                 waves=None):
         if camera not in CAMERAS:
             raise ValueError(f"unknown camera {camera!r}; choose one of {CAMERAS}")
         if offscreen:
@@ -248,7 +260,9 @@ class SceneRenderer:
         self.camera_name = camera
         self.show_forces, self.show_overlay = forces, overlay
         self.target, self.labels = target, labels
-        m = self.model = display_model(params, sail_mode, width, height)
+        m = self.model = display_model(params, sail_mode, width, height, waves)
+        self.sea = sea.SeaSurface(m, waves, sea.SeaLayout(waves, params.hull.length)) \
+            if sea.has_sea(waves) else None
         self.data = mujoco.MjData(m)
         self._rudder = m.jnt_qposadr[m.joint("rudder").id]
         self._sail = m.jnt_qposadr[m.joint("sail").id]
@@ -354,6 +368,8 @@ class SceneRenderer:
         d.qpos[3:7] = quat
         d.qpos[self._rudder] = snap.rudder
         d.qpos[self._sail] = snap.sail
+        if self.sea is not None:
+            self.sea.update(snap.time, snap.position)
         mujoco.mj_kinematics(m, d)
         mujoco.mj_comPos(m, d)
         mujoco.mj_camlight(m, d)
@@ -443,6 +459,8 @@ class SceneRenderer:
             self._camera.type = self._mujoco.mjtCamera.mjCAMERA_FREE
             self._set_free(*camera)
         renderer = self._renderer
+        if self.sea is not None:
+            self.sea.upload(renderer)
         renderer.update_scene(self.data, self._camera, self._option)
         self.decorate(renderer.scene, snap)
         scene = renderer.render()
