@@ -45,6 +45,7 @@ from .video import (
     Snapshot,
     frames_between_substeps,
     scene_of,
+    simulated_sea,
     snapshot_observation,
     snapshot_physics,
 )
@@ -198,7 +199,8 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
         policy.reset(seed)
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
-                          labels=f"{boat_label(boat)} · {task} · {controller} ({world})", offscreen=False)
+                          labels=f"{boat_label(boat)} · {task} · {controller} ({world})", offscreen=False,
+                          waves=simulated_sea(env.physics))
     timestep = env.reset()
     snap = (snapshot_physics(env.physics, env.task.references(env.physics)) if mujoco_world
             else snapshot_observation(timestep.observation))

@@ -161,6 +161,8 @@ class Window:
         viewer, scene = self.viewer, self.scene
         with viewer.lock():
             scene.pose(snap)
+            if scene.sea is not None:  # the moving surface's new heights, to the window's GPU copy
+                viewer.update_hfield(scene.sea.hfield_id)
             viewer.cam.lookat[:2] += snap.position[:2] - self._followed[:2]
             self._followed = snap.position.copy()
             user = viewer.user_scn

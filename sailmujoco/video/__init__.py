@@ -73,7 +73,14 @@ from .command import add_parser, main, run_cli
 from .gl import FIX, RenderingUnavailable, check_rendering
 from .overlays import COLOURS, FORCES, MAX_ARROW, WIND_ARROW_PER_MPS
 from .panel import KNOT, MapView
-from .recording import Recording, frames_between_substeps, record, record_study_scenario, scene_of
+from .recording import (
+    Recording,
+    frames_between_substeps,
+    record,
+    record_study_scenario,
+    scene_of,
+    simulated_sea,
+)
 from .scene import (
     CAMERAS,
     FORCE_ARROW,
@@ -93,5 +100,5 @@ __all__ = ["CAMERAS", "COLOURS", "FIX", "FORCES", "FORCE_ARROW", "FORCE_SITES", 
            "RenderingUnavailable", "boom_angle",
            "SceneRenderer", "Snapshot", "add_parser", "check_rendering", "check_settings",
            "close_outward", "display_model", "frames_between_substeps", "main", "record",
-           "record_study_scenario", "run_cli", "scene_of", "snapshot_observation", "snapshot_physics",
-           "yaw_of"]
+           "record_study_scenario", "run_cli", "scene_of", "simulated_sea", "snapshot_observation",
+           "snapshot_physics", "yaw_of"]
