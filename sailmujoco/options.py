@@ -38,6 +38,9 @@ keel_downwash        True, False             --   the keel's downwash at the rud
 windage              True, False             --   air drag of topsides and mast
 boat_options         a mapping               SI   keyword arguments of the boat's parameter
                                                   factory (e.g. ``{"l_phi": 0.1}``)
+waves                None, a ``WaveConfig``  SI   the sea (:mod:`sailmujoco.forces.waves`);
+                     or a mapping of its          None or ``hs = 0``: calm water. A mapping
+                     fields                       may give ``direction_from_deg`` (deg)
 ==================== ======================= ==== ===========================================
 
 The first choice listed is the default: the boat as built. The other forms are the papers'
@@ -46,13 +49,16 @@ modules' docstrings give the reasons and sources). The MuJoCo world reads every 
 ``paper_model``. Wille's 4-DOF paper world (:mod:`sailmujoco.reference.wille`) reads
 ``paper_model``, the on/off switches of the five force models and ``sail_tangential``, and
 keeps the papers' forms of the rest; Viel's paper world reads none. All are checked in every
-world. ``world`` ("mujoco", "paper") is :func:`sailmujoco.suite.load`'s third argument.
+world. ``world`` ("mujoco", "paper") is :func:`sailmujoco.suite.load`'s third argument. The
+paper worlds are calm water, as in the papers: they ignore ``waves``; in the MuJoCo world the
+6-DOF boat feels the sea (docs/physics.md, "The boat in the sea"), and ``dofs=4`` refuses one.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import functools
+import math
 import typing
 from collections.abc import Mapping
 from dataclasses import dataclass, field
@@ -60,6 +66,7 @@ from typing import Literal
 
 import numpy as np
 
+from .forces.waves import WaveConfig
 from .names import check_known
 
 World = Literal["mujoco", "paper"]
@@ -187,12 +194,15 @@ class PhysicsOptions(ForceSwitches):
         The Wille 4-DOF paper world as printed, or with rigid-hull yaw kinematics.
     boat_options : mapping or None
         Keyword arguments of the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
+    waves : WaveConfig, mapping or None
+        The sea (:func:`wave_config`); None: calm water. Ignored by the paper worlds.
     """
 
     sail_mode: SailMode = "actuated"
     dofs: Dofs = 6
     paper_model: PaperModel = "paper"
     boat_options: Mapping = field(default_factory=dict, hash=False)
+    waves: WaveConfig | None = None
 
     def __post_init__(self):
         _check_fields(self)
@@ -203,6 +213,7 @@ class PhysicsOptions(ForceSwitches):
             raise ValueError(f"boat_options must be a mapping of option names to values, "
                              f"got {self.boat_options!r}")
         object.__setattr__(self, "boat_options", dict(self.boat_options))
+        object.__setattr__(self, "waves", wave_config(self.waves))
 
     @property
     def forces(self) -> ForceSwitches:
@@ -233,3 +244,37 @@ class PhysicsOptions(ForceSwitches):
 
 FORCE_FIELDS = tuple(f.name for f in dataclasses.fields(ForceSwitches))
 PHYSICS_FIELDS = tuple(f.name for f in dataclasses.fields(PhysicsOptions))
+
+
+# the sea's options by name (a sweep's ``waves.`` keys): WaveConfig's fields, the direction in degrees
+WAVE_OPTIONS = tuple(f.name for f in dataclasses.fields(WaveConfig) if f.name != "direction_from") + (
+    "direction_from_deg",)
+
+
+def wave_config(value, where: str = "waves") -> WaveConfig | None:
+    """A sea state from None, a ``WaveConfig`` or a mapping of its fields.
+
+    A mapping may give the direction the waves come from in degrees, ``direction_from_deg``
+    (compass bearing), instead of ``direction_from`` in radians.
+
+    Parameters
+    ----------
+    value : None, WaveConfig or mapping
+        The sea as given.
+    where : str
+        Where it was given, for the message naming an unknown key.
+    """
+    if value is None or isinstance(value, WaveConfig):
+        return value
+    if not isinstance(value, Mapping):
+        raise ValueError(f"waves must be a WaveConfig, a mapping of its fields or None, got {value!r}")
+    check_known(value, (*WAVE_OPTIONS, "direction_from"), where, kind="waves option")
+    value = dict(value)
+    if "direction_from_deg" in value:
+        deg = value.pop("direction_from_deg")
+        if "direction_from" in value:
+            raise ValueError("waves: give direction_from (rad) or direction_from_deg, not both")
+        if isinstance(deg, bool) or not isinstance(deg, (int, float)) or not math.isfinite(deg):
+            raise ValueError(f"waves.direction_from_deg must be a finite number (deg), got {deg!r}")
+        value["direction_from"] = math.radians(deg)
+    return WaveConfig(**value)

@@ -43,6 +43,7 @@ from .accessors import BoatAccessors
 from .errors import SimulationStopped
 from .forces import boat as kernels
 from .forces.foil import naca0015
+from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_array
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .four_dof import FourDofStage, csr_address
 from .hull import column_quadrature, strip_quadrature
@@ -73,8 +74,6 @@ def _rk4_stage(m, d) -> None:
 _REBUILT = ("_kernel", "_args", "_bound", "_bound_wander", "_row", "_bound_4dof")
 
 
-
-
 # the compiled control steps, called past numba's type dispatch (one signature each)
 _RK4_STEPS = entry_point(native.rk4_steps)
 _SPLIT_STEPS = entry_point(native.split_steps)
@@ -93,7 +92,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
     def load(cls, boat: str = "wille_yacht", *, params: BoatParams | None = None,
              sail_mode: str = "actuated", wind: WindConfig | None = None,
              forces: ForceSwitches | None = None, dofs: int = 6,
-             **boat_options) -> BoatPhysics:
+             waves: WaveConfig | None = None, **boat_options) -> BoatPhysics:
         """Compile ``boat`` (or ``params``) and attach wind and force models.
 
         Parameters
@@ -112,6 +111,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         dofs : {6, 4}
             ``dofs=4`` holds heave and pitch (the reduced models' assumption); see
             :func:`sailmujoco.mjcf.boat_spec`.
+        waves : WaveConfig, optional
+            The sea (docs/physics.md, "The boat in the sea"), 6 DOF only; None: calm water.
         **boat_options
             Keyword arguments of the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
 
@@ -124,9 +125,10 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             params = get_boat(boat, **boat_options)
         elif boat_options:
             raise ValueError("give either params or boat options, not both")
+        check_sea(waves, dofs)
         model = compile_model(params, sail_mode, dofs)
         physics = cls.from_model(core.MjModel(model))
-        physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches(), dofs)
+        physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches(), dofs, waves)
         physics.reset()
         return physics
 
@@ -150,8 +152,10 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
 
     from_xml_string = from_xml_path = from_byte_string = from_binary_path = _from_mjcf
 
-    def _setup(self, params, sail_mode, wind, forces, dofs=6):
+    def _setup(self, params, sail_mode, wind, forces, dofs=6, waves=None):
         before = set(vars(self))
+        self.waves = waves
+        self._sea = sea_array(waves)
         self.params = params
         self.dofs = dofs
         self.sail_mode = sail_mode
@@ -165,7 +169,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             added_mass_coupling=forces.added_mass_coupling,
             vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes,
             resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
-            windage=forces.windage)
+            windage=forces.windage, sea_ramp=ramp_duration(waves))
         cols = column_quadrature(params.hull)
         self._columns = np.ascontiguousarray(
             np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))
@@ -216,7 +220,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
                       *self._table, w.oscillation, w.gust_frequency, w.gust_phase, w.gust_amplitude,
                       w.log_z,
                       w.wander, w.gust_cos, self._external, self._terms, self._diag, qfrc,
-                      self._madd, d.M, self._csr_addr, self._work)
+                      self._madd, d.M, self._csr_addr, self._work, self._sea)
         if self.dofs == 6:
             self._row = native.registry_row(self._args, d.act, self._warnings)
         else:

@@ -139,7 +139,7 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     switches = settings.forces
     if world == "mujoco":
         world_physics = BoatPhysics.load(params=params, sail_mode=settings.sail_mode, wind=wind,
-                                         forces=switches, dofs=settings.dofs)
+                                         forces=switches, dofs=settings.dofs, waves=settings.waves)
     elif task == "position_keeping":
         from .reference.viel import VielWorld
 

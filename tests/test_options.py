@@ -19,7 +19,7 @@ DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics=
                 sail=True, keel=True, rudder=True, damping=True, added_mass=True,
                 sail_tangential=True, added_mass_coupling="manoeuvring", vertical_damping="world",
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
-                keel_downwash=True, windage=True, boat_options={})
+                keel_downwash=True, windage=True, boat_options={}, waves=None)
 
 
 # ---- one definition of each set of choices --------------------------------------------------
@@ -75,7 +75,7 @@ def test_the_command_lines_world_choices_are_the_literals():
 
 def test_the_sweeps_env_options_are_the_physics_fields_and_the_control_step():
     names = set(sweep.env_options())
-    assert names == (set(options.PHYSICS_FIELDS) - {"boat_options"}) | {"control_timestep"}
+    assert names == (set(options.PHYSICS_FIELDS) - {"boat_options", "waves"}) | {"control_timestep"}
     assert sweep.env_options()["control_timestep"] == \
         inspect.signature(suite.load).parameters["control_timestep"].default
 

@@ -24,7 +24,7 @@ module                  what it computes
 ``wind_kernels``        the compiled wind velocity at a time and height (eqs. 39-43)
 ``waves``               the sea state's configuration and its seeded field: elevation,
                         orbital velocity, dynamic pressure of deep-water Airy waves
-                        (not yet read by the boat's forces)
+                        (read by the 6-DOF boat's forces)
 ``wave_spectra``        Pierson-Moskowitz and JONSWAP spectra, cos-2s spreading, the
                         sea a wind raises (fully developed, fetch-limited)
 ``boat``                every force on the boat at one instant (one compiled kernel)

@@ -86,6 +86,7 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_RUD_X,
     P_RUD_Z,
     P_SAIL_AREA,
+    P_SEA_RAMP,
     P_SIZE,
     P_STALL,
     P_SUCTION,
@@ -114,15 +115,12 @@ from .foil import (
     FB_RUDDER_RATIO,
     FB_SAIL_CD_MAX,
     FB_SAIL_SLOPE,
-    finite_hydrofoil_coefficients,
-    foil_world_force,
-    hydrofoil_coefficients,
-    lift_drag_components,
     sail_force,
-    section_flow,
 )
+from .hull_foils import hull_foil_force, point_flow
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .resistance import residuary_surge_force
+from .sea_kernels import foil_water_velocity, ramp_amplitudes, sea_buoyancy
 from .wind import wind_velocities
 from .windage import (
     W_AREA_FRONT,
@@ -147,7 +145,7 @@ T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len
  D_SAIL_FLOW_X, D_SAIL_FLOW_Y, D_SIZE) = range(17)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
-WORK_SIZE = 72  # scratch floats handed to boat_forces
+WORK_SIZE = 75  # scratch floats handed to boat_forces
 
 
 @kernel
@@ -187,87 +185,9 @@ def _accumulate(terms, row, force, point):
 
 
 @kernel
-def _point_flow(fluid_body, v, w, point, extra, out):
-    """Fluid velocity relative to a point: fluid - (v + w x point + extra) (body frame)."""
-    out[0] = fluid_body[0] - (v[0] + w[1] * point[2] - w[2] * point[1] + extra[0])
-    out[1] = fluid_body[1] - (v[1] + w[2] * point[0] - w[0] * point[2] + extra[1])
-    out[2] = fluid_body[2] - (v[2] + w[0] * point[1] - w[1] * point[0] + extra[2])
-
-
-@kernel(inline=True)  # called twice per step: inlined, it costs what the two blocks did
-def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rho, nu, current_b, v, w,
-                    alpha_grid, log_re_grid, cl_table, cd_table, zero3, point, flow, chord, normal, force,
-                    finite, lift_ratio, aspect_ratio_e, cd_max, match_angle, downwash):
-    """Lift and drag of a keel or rudder, Wille (2016a) eqs. 30-36; the force into ``force``.
-
-    The foil stands at (x, 0, z) in the body frame, turned by ``angle`` about -z: chord
-    (cos, -sin, 0), normal (sin, cos, 0). The flow is the water's velocity relative to that
-    point (current less the hull's motion, the foil's own turn rate neglected); C_L, C_D from
-    the section table at the chord Reynolds number, corrected for the aspect ratio
-    (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`), or with ``finite`` the finite
-    wing's (:func:`sailmujoco.forces.foil.finite_hydrofoil_coefficients`). ``downwash``, when
-    not 0, turns the inflow about the span by that angle against the angle of attack (the
-    keel's downwash at the rudder): alpha -> alpha - downwash, same speed; lift and drag follow
-    the turned flow.
-
-    Parameters
-    ----------
-    angle : float
-        The foil's turn about -z, rad (the rudder's sigma; 0 for the keel).
-    x, z, chord_length : float
-        The foil's centre of pressure in the body frame and its chord, m.
-    aspect_ratio, thickness, area : float
-        Geometric aspect ratio (-), thickness over chord (-) and planform area (m^2).
-    rho, nu : float
-        Water density (kg/m^3) and kinematic viscosity (m^2/s).
-    current_b, v, w : numpy.ndarray, shape (3,)
-        The current (m/s), the velocity of CO (m/s) and the angular velocity (rad/s), body
-        frame.
-    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The section table (:func:`sailmujoco.forces.foil.section_coefficients`).
-    zero3, point, flow, chord, normal : numpy.ndarray, shape (3,)
-        A zero vector (no point velocity beyond the hull's); work arrays, left holding this
-        foil's point (m), flow (m/s), chord and normal axes (body frame).
-    force : numpy.ndarray, shape (3,)
-        Receives the force, N, body frame.
-    finite : bool
-        The finite-wing coefficients instead of Wille's eqs. 23-24.
-    lift_ratio, aspect_ratio_e, cd_max, match_angle : float
-        The finite wing's a/a0 (-), effective aspect ratio (-), C_D,max (-) and matching angle
-        (rad), from the boat's ``FB_*`` block (:func:`~sailmujoco.forces.foil.pack_foil_block`).
-    downwash : float
-        Inflow turn epsilon, rad (0: none).
-
-    Returns
-    -------
-    alpha, speed, c_l : float
-        The (turned) angle of attack (rad), the in-plane flow speed (m/s) and C_L.
-    """
-    point[0], point[1], point[2] = x, 0.0, z
-    _point_flow(current_b, v, w, point, zero3, flow)
-    c, s = math.cos(angle), math.sin(angle)
-    chord[0], chord[1], chord[2] = c, -s, 0.0
-    normal[0], normal[1], normal[2] = s, c, 0.0
-    wc, wn, speed, alpha = section_flow(flow, chord, normal)
-    if downwash != 0.0:
-        alpha = alpha - downwash
-        wc, wn = -speed * math.cos(alpha), -speed * math.sin(alpha)  # alpha = atan2(-wn, -wc)
-    if finite:
-        c_l, c_d = finite_hydrofoil_coefficients(alpha, speed * chord_length / nu, lift_ratio, aspect_ratio_e,
-                                                 cd_max, match_angle, thickness, alpha_grid, log_re_grid,
-                                                 cl_table, cd_table)
-    else:
-        c_l, c_d = hydrofoil_coefficients(alpha, speed * chord_length / nu, aspect_ratio, thickness,
-                                          alpha_grid, log_re_grid, cl_table, cd_table)
-    fc, fn = lift_drag_components(wc, wn, speed, 0.5 * rho * speed * speed * area, c_l, c_d)
-    foil_world_force(fc, fn, chord, normal, force)
-    return alpha, speed, c_l
-
-
-@kernel
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, gust_cos,
-                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, add_mass):
+                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
     Parameters
@@ -313,6 +233,10 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational diagonal entries.
     work : numpy.ndarray, shape (WORK_SIZE,)
         Scratch space, so the kernel allocates nothing.
+    sea : numpy.ndarray, shape (6, m)
+        The sea (:mod:`sailmujoco.forces.sea_kernels`); with m > 0 components the geometric
+        hydrostatics are the Froude-Krylov wrench cut at the local surface and the keel and
+        rudder feel the orbital velocity at their centres of pressure; m = 0: calm water.
     add_mass : bool
         Whether to add the added mass to ``mass_csr``.
 
@@ -337,6 +261,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     wrench, extra = work[42:48], work[48:51]
     wind_w, wind_b, total = work[51:54], work[54:57], work[57:63]
     winds = work[63:72]  # the wind at the sail's CE, the topsides and the mast (rows of 3)
+    fluid = work[72:75]  # the water at a foil in a sea: current + orbital velocity
     zero3[:] = 0.0
     rotation_from_quat(qpos[3:7], R)
     if R[2, 2] < 0.0:
@@ -350,15 +275,22 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     for i in range(3):
         nu_r[i] = v[i] - current_b[i]
         nu_r[3 + i] = w[i]
+    waves = sea.shape[1] > 0  # a sea: r(t) a_j into row 5 (forces/sea_kernels.py)
+    if waves:
+        ramp_amplitudes(t, P[P_SEA_RAMP], sea)
+    water = current_b
 
     # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
     finite = P[P_FINITE_FOILS] > 0.0
     fb = P_FOIL_BLOCK
     keel_lift = 0.0
     if P[P_ON_KEEL] > 0.0:
+        if waves:
+            foil_water_velocity(t, qpos[0:3], R, P[P_KEEL_X], P[P_KEEL_Z], sea, current_b, fluid)
+            water = fluid
         alpha, speed, keel_lift = hull_foil_force(
             0.0, P[P_KEEL_X], P[P_KEEL_Z], P[P_KEEL_CHORD], P[P_KEEL_AR], P[P_KEEL_TC], P[P_KEEL_AREA],
-            P[P_RHO_W], P[P_NU_W], current_b, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
+            P[P_RHO_W], P[P_NU_W], water, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
             flow, chord, normal, force, finite, P[fb + FB_KEEL_RATIO], P[fb + FB_KEEL_AR],
             P[fb + FB_KEEL_CD_MAX], P[fb + FB_MATCH_ANGLE], 0.0)
         _accumulate(terms, T_KEEL, force, point)
@@ -369,9 +301,12 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         # the keel's downwash at the rudder, from the keel's C_L of this same call:
         # epsilon = k C_L,keel / (pi A_e,keel) (forces/foil.py, downwash_factor); 0 when off
         downwash = P[fb + FB_DOWNWASH_GAIN] * keel_lift if P[P_KEEL_DOWNWASH] > 0.0 else 0.0
+        if waves:
+            foil_water_velocity(t, qpos[0:3], R, P[P_RUD_X], P[P_RUD_Z], sea, current_b, fluid)
+            water = fluid
         alpha, speed, _ = hull_foil_force(
             qpos[idx[0]], P[P_RUD_X], P[P_RUD_Z], P[P_RUD_CHORD], P[P_RUD_AR], P[P_RUD_TC], P[P_RUD_AREA],
-            P[P_RHO_W], P[P_NU_W], current_b, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
+            P[P_RHO_W], P[P_NU_W], water, v, w, alpha_grid, log_re_grid, cl_table, cd_table, zero3, point,
             flow, chord, normal, force, finite, P[fb + FB_RUDDER_RATIO], P[fb + FB_RUDDER_AR],
             P[fb + FB_RUDDER_CD_MAX], P[fb + FB_MATCH_ANGLE], downwash)
         _accumulate(terms, T_RUDDER, force, point)
@@ -406,7 +341,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         wind_w[0], wind_w[1], wind_w[2] = winds[0], winds[1], winds[2]
         for i in range(3):
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
-        _point_flow(wind_b, v, w, point, extra, flow)
+        point_flow(wind_b, v, w, point, extra, flow)
         diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
         # Saoud's C_N (slope 0 selects it) or the finite wing's (forces/foil.py)
         slope = P[fb + FB_SAIL_SLOPE] if finite else 0.0
@@ -432,7 +367,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             wind_w[0], wind_w[1], wind_w[2] = winds[row], winds[row + 1], winds[row + 2]
             for i in range(3):
                 wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
-            _point_flow(wind_b, v, w, point, zero3, flow)
+            point_flow(wind_b, v, w, point, zero3, flow)
             if element == 0:
                 topsides_force(flow, P[P_RHO_A], P[wb + W_CX], P[wb + W_CY], P[wb + W_AREA_FRONT],
                                P[wb + W_AREA_SIDE], force)
@@ -442,7 +377,10 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
 
     # ---- hydrostatics ----
     mode = P[P_HYDRO_MODE]
-    if mode == 2.0:
+    if mode == 2.0 and waves:  # buoyancy and Froude-Krylov force, cut at the local surface
+        diag[D_SUBMERGED] = sea_buoyancy(t, qpos[0:3], R, columns, sea, P[P_RHO_W], P[P_G], wrench)
+        terms[T_HYDRO, :] = wrench
+    elif mode == 2.0:
         diag[D_SUBMERGED] = geometric_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
         terms[T_HYDRO, :] = wrench
     elif mode == 1.0:

@@ -183,7 +183,7 @@ def execute(run: dict) -> dict:
     try:
         env = load(run["boat"], run["task"], run["world"], seed=run["seed"],
                    time_limit=run.get("duration"), boat_options=run["boat_options"],
-                   **run["env_options"], **run["task_options"])
+                   waves=run.get("waves_options") or None, **run["env_options"], **run["task_options"])
         controller = make_controller(run["controller"], env, **run["controller_options"])
         if hasattr(controller, "reset"):
             controller.reset(run["seed"])

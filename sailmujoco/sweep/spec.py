@@ -3,7 +3,9 @@
 The ``env.`` options and their allowed values come from :mod:`sailmujoco.options` (the fields
 of :class:`~sailmujoco.options.PhysicsOptions`, less ``boat_options``, which is the ``boat.``
 namespace) and ``control_timestep``; the ``task.``, ``boat.`` and ``controller.`` options from
-the signatures of the task, the boat's parameter factory and the controller factory.
+the signatures of the task, the boat's parameter factory and the controller factory; the
+``waves.`` options are the sea's (:data:`sailmujoco.options.WAVE_OPTIONS`), the MuJoCo world's
+``waves`` physics option (a run without them is in calm water, its id as without the namespace).
 """
 
 from __future__ import annotations
@@ -20,7 +22,7 @@ import numpy as np
 
 from ..boat_schema import is_boat_file
 from ..names import check_known
-from ..options import PhysicsOptions, literal_fields
+from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
 from .controllers import controller_factory, factory_options, is_import_path, portable_name
 from .errors import SweepError
@@ -46,6 +48,7 @@ NAMESPACE_HELP = {  # where an option of [options], [grid] or [zip] goes
     "task": "the task's constructor (wind, references, ...)",
     "boat": "the boat's parameter factory",
     "controller": "the controller's factory",
+    "waves": "the sea: hs (m), tp (s), spectrum, direction_from_deg, gamma, spreading, n_components, seed",
 }
 NAMESPACES = tuple(NAMESPACE_HELP)
 TABLES = ("options", "grid", "zip")
@@ -54,7 +57,8 @@ RUN_KEYS = {"time_limit": "duration", "seed": "seeds"}  # suite.load's keywords 
 
 def env_options() -> dict:
     """``{name: default}`` of every ``env.`` option: the physics options (less
-    ``boat_options``, the ``boat.`` namespace) and ``control_timestep``."""
+    ``boat_options`` and ``waves``, the ``boat.`` and ``waves.`` namespaces) and
+    ``control_timestep``."""
     from ..suite import load
 
     fields = {f.name: f.default for f in dataclasses.fields(PhysicsOptions)}
@@ -65,8 +69,8 @@ def env_options() -> dict:
 
 def env_option_names() -> tuple:
     """The names of the ``env.`` options (:func:`env_options`, without loading the simulation)."""
-    return tuple(f.name for f in dataclasses.fields(PhysicsOptions) if f.name != "boat_options") + (
-        "control_timestep",)
+    return tuple(f.name for f in dataclasses.fields(PhysicsOptions)
+                 if f.name not in ("boat_options", "waves")) + ("control_timestep",)
 
 
 def env_choices() -> dict:
@@ -111,7 +115,8 @@ def _allowed_options(spec: dict) -> dict:
 
     boat = spec["boat"]
     allowed = {"env": set(env_options()), "task": set(task_options(spec["task"])),
-               "boat": set() if is_boat_file(boat) else _parameters(BOATS[boat])}
+               "boat": set() if is_boat_file(boat) else _parameters(BOATS[boat]),
+               "waves": set(WAVE_OPTIONS)}
     accepted = factory_options(controller_factory(spec["controller"]))
     allowed["controller"] = set(accepted) if accepted is not None else None
     return allowed
@@ -254,7 +259,8 @@ def _check_values(spec: dict, runs: list[dict], source: str = "the sweep descrip
                 raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}{where}")
         try:
             built = load(r["boat"], r["task"], r["world"], seed=r["seed"], time_limit=r.get("duration"),
-                         boat_options=r["boat_options"], **r["env_options"], **r["task_options"])
+                         boat_options=r["boat_options"], waves=r.get("waves_options") or None,
+                         **r["env_options"], **r["task_options"])
         except (TypeError, ValueError) as err:
             raise SweepError(f"env options {r['env_options']}: {err}{where}") from None
         env = env or built
@@ -354,6 +360,8 @@ def expand(spec: dict) -> list[dict]:
                 for ns in NAMESPACES:
                     run[f"{ns}_options"] = {k.split(".", 1)[1]: v for k, v in sorted(values.items())
                                             if k.startswith(ns + ".")}
+                if not run["waves_options"]:  # calm water: the run as without the namespace
+                    del run["waves_options"]
                 run["run_id"] = run_id(run)
                 runs.append(run)
     return runs
@@ -369,6 +377,7 @@ def run_id(run: dict) -> str:
     """
     keys = ("boat", "task", "world", "controller", "seed", "duration", "trajectory_rate",  # not session
             "env_options", "task_options", "boat_options", "controller_options")
+    keys += ("waves_options",) if run.get("waves_options") else ()
     text = json.dumps({k: run.get(k) for k in keys}, sort_keys=True, default=float)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
