@@ -1,0 +1,65 @@
+"""Cost of a sea: ``step(20)`` of each boat in a JONSWAP sea, as a ratio to the same boat's
+``step(20)`` in calm water and to the bare ``mj_step`` of the same model, all in this run.
+
+Run: python benchmarks/sea_step_speed.py [--hs 1.5] [--tp 6] [--components 100] [--seconds 2]
+
+"calm" is ``BoatPhysics.step(20)`` without a sea (the calm-water kernel, bit for bit as
+without the option); "sea" the same with ``waves=WaveConfig(spectrum="jonswap", hs, tp,
+n_components)``: at every RK4 stage the Froude-Krylov pressure on every hull column for every
+component, and the orbital flow at the keel and the rudder. "bare" is 20 ``mujoco.mj_step``
+calls on a fresh MjData of the same model. Each is timed for ``--seconds`` of wall time after
+one warm-up call.
+"""
+
+from __future__ import annotations
+
+import argparse
+import time
+
+import mujoco
+
+from sailmujoco.boats import BUILT_IN
+from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.physics import BoatPhysics
+
+
+def seconds_per_call(call, budget: float) -> float:
+    """Mean wall seconds of ``call()`` over about ``budget`` seconds, after one warm-up call."""
+    call()
+    start, n = time.perf_counter(), 0
+    while time.perf_counter() - start < budget:
+        call()
+        n += 1
+    return (time.perf_counter() - start) / n
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--hs", type=float, default=1.5, help="significant wave height, m")
+    parser.add_argument("--tp", type=float, default=6.0, help="peak period, s")
+    parser.add_argument("--components", type=int, default=100, help="wave components")
+    parser.add_argument("--seconds", type=float, default=2.0, help="wall seconds per timing")
+    args = parser.parse_args()
+    sea = WaveConfig(spectrum="jonswap", hs=args.hs, tp=args.tp, n_components=args.components)
+    print(f"step(20), JONSWAP hs {args.hs:g} m, tp {args.tp:g} s, {args.components} components; "
+          "ratios in this run")
+    print(f"{'boat':12s} {'bare':>9s} {'calm':>9s} {'sea':>10s} {'sea/calm':>9s} {'sea/bare':>9s}")
+    for boat in BUILT_IN:
+        calm, rough = BoatPhysics.load(boat), BoatPhysics.load(boat, waves=sea)
+        model = calm.model.ptr
+        bare_data = mujoco.MjData(model)
+        mujoco.mj_resetDataKeyframe(model, bare_data, 0)
+
+        def bare(model=model, data=bare_data):
+            for _ in range(20):
+                mujoco.mj_step(model, data)
+
+        t_bare = seconds_per_call(bare, args.seconds)
+        t_calm = seconds_per_call(lambda p=calm: p.step(20), args.seconds)
+        t_sea = seconds_per_call(lambda p=rough: p.step(20), args.seconds)
+        print(f"{boat:12s} {t_bare * 1e3:7.3f}ms {t_calm * 1e3:7.3f}ms {t_sea * 1e3:8.1f}ms "
+              f"{t_sea / t_calm:8.0f}x {t_sea / t_bare:8.0f}x")
+
+
+if __name__ == "__main__":
+    main()
