@@ -97,6 +97,33 @@ def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
         Receives the wrench, N and N m.
     """
     vol, qx, qy, qz = submerged_volume(pos_z, rot, columns)
+    buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
+    return vol
+
+
+@kernel(inline=True)
+def buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out):
+    """The wrench of buoyancy on a submerged volume into ``out`` (body frame, about CO).
+
+    F_b = rho g V e_z,b and M_b = rho g (Q x e_z,b), with e_z,b = R^T e_z the world vertical in
+    body axes: what :func:`geometric_buoyancy` and the Froude-Krylov force
+    (:func:`sailmujoco.forces.wave_pressure.froude_krylov`) share.
+
+    Parameters
+    ----------
+    vol : float
+        Submerged volume V, m^3.
+    qx, qy, qz : float
+        Its first moment about CO along body x, y, z, m^4.
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    rho : float
+        Water density, kg/m^3.
+    g : float
+        Gravitational acceleration, m/s^2.
+    out : numpy.ndarray, shape (6,)
+        Receives the wrench, N and N m.
+    """
     ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
     rg = rho * g
     out[0] = rg * vol * ex
@@ -105,7 +132,6 @@ def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
     out[3] = rg * (qy * ez - qz * ey)
     out[4] = rg * (qz * ex - qx * ez)
     out[5] = rg * (qx * ey - qy * ex)
-    return vol
 
 
 @kernel

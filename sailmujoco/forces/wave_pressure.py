@@ -60,6 +60,7 @@ import math
 import numpy as np
 
 from .._jit import kernel
+from .hydrostatics import buoyancy_wrench
 
 
 @kernel(inline=True)
@@ -238,14 +239,7 @@ def froude_krylov(pos, rot, columns, amplitude, omega, wavenumber, direction_to,
         qz += dv * 0.5 * (lo + hi)
         _add_column_dynamic(dyn, rot, x, y, lo, hi, h - eta, area * rho * g, amplitude,
                             wavenumber, comp[0], comp[1], cth, sth)
-    ex, ey, ez = rot[2, 0], rot[2, 1], rot[2, 2]
-    rg = rho * g
-    out[0] = rg * vol * ex
-    out[1] = rg * vol * ey
-    out[2] = rg * vol * ez
-    out[3] = rg * (qy * ez - qz * ey)
-    out[4] = rg * (qz * ex - qx * ez)
-    out[5] = rg * (qx * ey - qy * ex)
+    buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
     for row in range(3):  # world -> body: R^T
         out[row] += rot[0, row] * dyn[0] + rot[1, row] * dyn[1] + rot[2, row] * dyn[2]
         out[3 + row] += rot[0, row] * dyn[3] + rot[1, row] * dyn[4] + rot[2, row] * dyn[5]
