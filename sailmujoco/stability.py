@@ -66,13 +66,7 @@ def righting_moment(p: BoatParams, heel: float, columns: np.ndarray | None = Non
         The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column;
         default 48 x 48 columns.
     """
-    if columns is None:
-        columns = _columns(p, 48, 48)
-    rot = matrix_from_euler(heel, 0.0, 0.0)
-    z = equilibrium_heave(p, heel, columns)
-    vol, qx, qy, qz = submerged_volume(z, rot, columns)
-    centroid = np.array([qx, qy, qz]) / vol
-    lever = rot @ (centroid - np.array([p.cg_x, 0.0, p.cg_z]))  # world, from CG to B
+    vol, lever = _buoyancy_lever(p, heel, columns)
     # buoyancy (0, 0, rho g V) at B: moment about world x = lever_y * F_z; restoring is -M_x
     return -p.rho_water * GRAVITY * vol * lever[1] * np.sign(np.cos(heel))
 
@@ -94,12 +88,19 @@ def righting_arm(p: BoatParams, heel: float, columns: np.ndarray | None = None) 
         The hull's column quadrature, (5, n): x, y, area, z_bottom, z_top of each column;
         default 48 x 48 columns.
     """
+    _, lever = _buoyancy_lever(p, heel, columns)
+    return float(-lever[1])
+
+
+def _buoyancy_lever(p: BoatParams, heel: float, columns) -> tuple[float, np.ndarray]:
+    """(V, lever): the volume the boat displaces at ``heel`` (trim level, floating at its
+    weight) and the world vector from its CG to the centre of buoyancy B."""
     if columns is None:
         columns = _columns(p, 48, 48)
     rot = matrix_from_euler(heel, 0.0, 0.0)
     vol, qx, qy, qz = submerged_volume(equilibrium_heave(p, heel, columns), rot, columns)
-    lever = rot @ (np.array([qx, qy, qz]) / vol - np.array([p.cg_x, 0.0, p.cg_z]))  # world, CG to B
-    return float(-lever[1])
+    centroid = np.array([qx, qy, qz]) / vol
+    return vol, rot @ (centroid - np.array([p.cg_x, 0.0, p.cg_z]))  # world, from CG to B
 
 
 def righting_curve(p: BoatParams, heels) -> dict[str, np.ndarray]:
