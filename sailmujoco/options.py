@@ -36,6 +36,17 @@ foils                "finite", "paper"       --   finite-wing lift slope and 3-D
                                                   eq. 23 on the 2-D table
 keel_downwash        True, False             --   the keel's downwash at the rudder
 windage              True, False             --   air drag of topsides and mast
+wave_foil_flow       True, False             --   in a sea, the waves' orbital velocity in the
+                                                  keel's and rudder's flow; False: the foils
+                                                  in still water (or the current)
+wave_diffraction     True, False             --   in a sea, the hull's added mass times the
+                                                  water's acceleration (long-wave diffraction)
+wave_damping         "relative", "absolute"  --   in a sea, heave and pitch damping on the
+                                                  motion relative to the water; "absolute":
+                                                  on the hull's own motion
+wave_pressure_decay  True, False             --   in a sea, the wave's pressure decaying with
+                                                  depth as e^(kz) (Froude-Krylov); False:
+                                                  hydrostatic to the local surface
 boat_options         a mapping               SI   keyword arguments of the boat's parameter
                                                   factory (e.g. ``{"l_phi": 0.1}``)
 waves                None, a ``WaveConfig``  SI   the sea (:mod:`sailmujoco.forces.waves`);
@@ -80,6 +91,7 @@ VerticalDamping = Literal["world", "body"]  # heave/pitch damping on vertical mo
 RestoringAxes = Literal["horizontal", "body"]  # paper restoring moments about level / body axes
 Resistance = Literal["friction", "dsyhs"]  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
 Foils = Literal["paper", "finite"]  # the papers' foil coefficients / finite-wing slope and stall
+WaveDamping = Literal["relative", "absolute"]  # in a sea: damping on motion relative to the water / own
 
 
 def choices(literal) -> tuple:
@@ -151,6 +163,13 @@ class ForceSwitches:
         The keel's downwash at the rudder.
     windage : bool
         Air drag of topsides and mast.
+    wave_foil_flow, wave_diffraction, wave_pressure_decay : bool
+        The sea's mechanisms (in calm water they change nothing): the orbital velocity at the
+        foils; the long-wave diffraction force; the dynamic pressure's decay with depth
+        (docs/physics.md, "The boat in the sea").
+    wave_damping : {"relative", "absolute"}
+        In a sea, heave and pitch damping on the motion relative to the water, or on the
+        hull's own.
     """
 
     hydrostatics: Hydrostatics = "geometric"
@@ -167,6 +186,10 @@ class ForceSwitches:
     foils: Foils = "finite"
     keel_downwash: bool = True
     windage: bool = True
+    wave_foil_flow: bool = True
+    wave_diffraction: bool = True
+    wave_damping: WaveDamping = "relative"
+    wave_pressure_decay: bool = True
 
     def __post_init__(self):
         _check_fields(self)
@@ -185,6 +208,8 @@ class PhysicsOptions(ForceSwitches):
     added_mass_coupling, vertical_damping, restoring_axes, resistance, foils
         As :class:`ForceSwitches`.
     keel_downwash, windage : bool
+        As :class:`ForceSwitches`.
+    wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay
         As :class:`ForceSwitches`.
     sail_mode : {"actuated", "sheeted"}
         The sail command: an angle in rad, or a sheet length in m.

@@ -169,7 +169,9 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             added_mass_coupling=forces.added_mass_coupling,
             vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes,
             resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
-            windage=forces.windage, sea_ramp=ramp_duration(waves))
+            windage=forces.windage, sea_ramp=ramp_duration(waves),
+            sea_switches=(forces.wave_foil_flow, forces.wave_diffraction,
+                          forces.wave_damping == "relative", forces.wave_pressure_decay))
         cols = column_quadrature(params.hull)
         self._columns = np.ascontiguousarray(
             np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))

@@ -19,7 +19,8 @@ DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics=
                 sail=True, keel=True, rudder=True, damping=True, added_mass=True,
                 sail_tangential=True, added_mass_coupling="manoeuvring", vertical_damping="world",
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
-                keel_downwash=True, windage=True, boat_options={}, waves=None)
+                keel_downwash=True, windage=True, wave_foil_flow=True, wave_diffraction=True,
+                wave_damping="relative", wave_pressure_decay=True, boat_options={}, waves=None)
 
 
 # ---- one definition of each set of choices --------------------------------------------------
@@ -28,7 +29,7 @@ def test_each_choice_set_is_one_literal():
     assert options.choices(options.World) == ("mujoco", "paper")
     assert options.choices(options.Dofs) == (6, 4)
     literals = [v for v in vars(options).values() if typing.get_origin(v) is typing.Literal]
-    assert len(literals) == 10
+    assert len(literals) == 11
     assert options.literal_fields(PhysicsOptions) == {
         "hydrostatics": options.choices(options.Hydrostatics),
         "added_mass_coupling": options.choices(options.AddedMassCoupling),
@@ -36,6 +37,7 @@ def test_each_choice_set_is_one_literal():
         "restoring_axes": options.choices(options.RestoringAxes),
         "resistance": options.choices(options.Resistance),
         "foils": options.choices(options.Foils),
+        "wave_damping": options.choices(options.WaveDamping),
         "sail_mode": options.choices(options.SailMode),
         "dofs": options.choices(options.Dofs),
         "paper_model": options.choices(options.PaperModel)}

@@ -86,6 +86,7 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_RUD_X,
     P_RUD_Z,
     P_SAIL_AREA,
+    P_SEA_BLOCK,
     P_SEA_RAMP,
     P_SIZE,
     P_STALL,
@@ -120,7 +121,7 @@ from .foil import (
 from .hull_foils import hull_foil_force, point_flow
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .resistance import residuary_surge_force
-from .sea_kernels import foil_water_velocity, ramp_amplitudes, sea_buoyancy
+from .sea_kernels import SB_FOIL_FLOW, foil_water_velocity, ramp_amplitudes, sea_buoyancy
 from .wind import wind_velocities
 from .windage import (
     W_AREA_FRONT,
@@ -285,7 +286,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     fb = P_FOIL_BLOCK
     keel_lift = 0.0
     if P[P_ON_KEEL] > 0.0:
-        if waves:
+        if waves and P[P_SEA_BLOCK + SB_FOIL_FLOW] > 0.0:
             foil_water_velocity(t, qpos[0:3], R, P[P_KEEL_X], P[P_KEEL_Z], sea, current_b, fluid)
             water = fluid
         alpha, speed, keel_lift = hull_foil_force(
@@ -301,7 +302,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         # the keel's downwash at the rudder, from the keel's C_L of this same call:
         # epsilon = k C_L,keel / (pi A_e,keel) (forces/foil.py, downwash_factor); 0 when off
         downwash = P[fb + FB_DOWNWASH_GAIN] * keel_lift if P[P_KEEL_DOWNWASH] > 0.0 else 0.0
-        if waves:
+        if waves and P[P_SEA_BLOCK + SB_FOIL_FLOW] > 0.0:
             foil_water_velocity(t, qpos[0:3], R, P[P_RUD_X], P[P_RUD_Z], sea, current_b, fluid)
             water = fluid
         alpha, speed, _ = hull_foil_force(

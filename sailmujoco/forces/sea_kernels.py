@@ -22,6 +22,11 @@ from .wave_pressure import froude_krylov
 from .waves import RAMP_PERIODS, WaveConfig, components
 
 SEA_ROWS = 6  # amplitude, omega, k, direction_to, phase, ramped amplitude
+# The sea's mechanisms (physics options, sailmujoco.options.ForceSwitches), each packed as 1.0 (on)
+# or 0.0 in this order after the ramp in the sea's block of P (forces/boat_parameters.py,
+# P_SEA_BLOCK); wave_damping packs 1.0 for "relative":
+SEA_SWITCHES = ("wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
+SB_RAMP, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(5)
 
 
 def check_sea(config, dofs: int) -> None:
