@@ -19,7 +19,7 @@ import time
 import mujoco
 
 from sailmujoco.boats import BUILT_IN
-from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
 from sailmujoco.physics import BoatPhysics
 
 
@@ -37,7 +37,7 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--hs", type=float, default=1.5, help="significant wave height, m")
     parser.add_argument("--tp", type=float, default=6.0, help="peak period, s")
-    parser.add_argument("--components", type=int, default=100, help="wave components")
+    parser.add_argument("--components", type=int, default=N_COMPONENTS, help="wave components")
     parser.add_argument("--seconds", type=float, default=2.0, help="wall seconds per timing")
     args = parser.parse_args()
     sea = WaveConfig(spectrum="jonswap", hs=args.hs, tp=args.tp, n_components=args.components)
@@ -57,8 +57,8 @@ def main() -> None:
         t_bare = seconds_per_call(bare, args.seconds)
         t_calm = seconds_per_call(lambda p=calm: p.step(20), args.seconds)
         t_sea = seconds_per_call(lambda p=rough: p.step(20), args.seconds)
-        print(f"{boat:12s} {t_bare * 1e3:7.3f}ms {t_calm * 1e3:7.3f}ms {t_sea * 1e3:8.1f}ms "
-              f"{t_sea / t_calm:8.0f}x {t_sea / t_bare:8.0f}x")
+        print(f"{boat:12s} {t_bare * 1e3:7.3f}ms {t_calm * 1e3:7.3f}ms {t_sea * 1e3:8.3f}ms "
+              f"{t_sea / t_calm:8.2f}x {t_sea / t_bare:8.2f}x")
 
 
 if __name__ == "__main__":

@@ -53,16 +53,21 @@ def clear_stale_cache(module_file: str) -> None:
     _clear_stale_cache((*_SOURCES, module), {module.parent / "__pycache__"})
 
 
-def kernel(fn=None, *, inline: bool = False):
+def kernel(fn=None, *, inline: bool = False, reassociate: bool = False):
     """Compile ``fn`` with numba (cached on disk), or return it unchanged when JIT is disabled.
 
     ``@kernel(inline=True)`` inlines the function into its compiled callers (numba IR level):
     for a helper with many array arguments called in the per-step kernel, where the call itself
-    would cost measurable time.
+    would cost measurable time. ``@kernel(reassociate=True)`` lets the compiler reorder sums
+    (LLVM's ``reassoc`` and ``contract``, not ``nnan``/``ninf``: a NaN still shows), so that
+    a sum over wave components runs on vector registers; its last bits then differ from the
+    interpreted path's (the tests compare the two to 1e-10). Only the sea's sums use it: calm
+    water's arithmetic stays in its written order.
     """
     def build(f):
         return numba.njit(cache=True, nogil=True, error_model="numpy",
-                          inline="always" if inline else "never")(f)
+                          inline="always" if inline else "never",
+                          fastmath={"reassoc", "contract"} if reassociate else False)(f)
 
     return build if fn is None else build(fn)
 

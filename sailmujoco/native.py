@@ -150,7 +150,7 @@ KERNEL_ARRAYS = (
     ("alpha_grid", 1), ("log_re_grid", 1), ("cl_table", 2), ("cd_table", 2), ("oscillation", 1),
     ("gust_f", 1), ("gust_phase", 1), ("gust_amp", 2), ("log_z", 1), ("wander", 1),
     ("gust_cos", 1), ("external", 1), ("terms", 2), ("diag", 1), ("qfrc", 1), ("madd", 2),
-    ("mass_csr", 1), ("csr_addr", 1), ("work", 1), ("sea", 2))
+    ("mass_csr", 1), ("csr_addr", 1), ("work", 1), ("sea", 2), ("grid", 2))
 FOUR_DOF_ARRAYS = (("a_diag", 1), ("csr4", 2), ("weight_arm", 1), ("floating_heel", 1),
                    ("floating_righting", 1))
 ARRAYS = (*KERNEL_ARRAYS, ("data_qpos", 1), ("data_qvel", 1), ("data_qfrc", 1),
@@ -422,7 +422,7 @@ def _forces(row, t, add_mass):
         _vector(row, 10), _vector(row, 11), _vector(row, 12), _matrix(row, 13), _vector(row, 14),
         _vector(row, 15), _vector(row, 16), _vector(row, 17), _matrix(row, 18), _vector(row, 19),
         _vector(row, 20), _matrix(row, 21), _vector(row, 22), _ints(row, 23), _vector(row, 24),
-        _matrix(row, 25), add_mass)
+        _matrix(row, 25), _matrix(row, 26), add_mass)
 
 
 def _stage(m, d):

@@ -43,7 +43,7 @@ from .accessors import BoatAccessors
 from .errors import SimulationStopped
 from .forces import boat as kernels
 from .forces.foil import naca0015
-from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_array
+from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_arrays
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .four_dof import FourDofStage, csr_address
 from .hull import column_quadrature, strip_quadrature
@@ -155,7 +155,6 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
     def _setup(self, params, sail_mode, wind, forces, dofs=6, waves=None):
         before = set(vars(self))
         self.waves = waves
-        self._sea = sea_array(waves)
         self.params = params
         self.dofs = dofs
         self.sail_mode = sail_mode
@@ -169,9 +168,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             added_mass_coupling=forces.added_mass_coupling,
             vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes,
             resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
-            windage=forces.windage, sea_ramp=ramp_duration(waves),
-            sea_switches=(forces.wave_foil_flow, forces.wave_diffraction,
-                          forces.wave_damping == "relative", forces.wave_pressure_decay))
+            windage=forces.windage, sea_ramp=ramp_duration(waves))
+        self._sea, self._grid = sea_arrays(params.hull, waves, self._P, forces)
         cols = column_quadrature(params.hull)
         self._columns = np.ascontiguousarray(
             np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))
@@ -222,7 +220,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
                       *self._table, w.oscillation, w.gust_frequency, w.gust_phase, w.gust_amplitude,
                       w.log_z,
                       w.wander, w.gust_cos, self._external, self._terms, self._diag, qfrc,
-                      self._madd, d.M, self._csr_addr, self._work, self._sea)
+                      self._madd, d.M, self._csr_addr, self._work, self._sea, self._grid)
         if self.dofs == 6:
             self._row = native.registry_row(self._args, d.act, self._warnings)
         else:

@@ -34,7 +34,7 @@ def test_zero_in_steady_sailing_straight_or_turning(flotation_x, rng):
         nu = np.concatenate([rot.T @ v_co, rot.T @ turn])
         assert abs(nu[2]) + abs(nu[4]) > 1e-3 or abs(heel) < 1 or abs(trim) < 1
         out = np.zeros(6)
-        vertical_damping(rot, nu, flotation_x, D33, D55, out)
+        vertical_damping(rot, nu, flotation_x, D33, D55, 0.0, 0.0, out)
         assert np.abs(out).max() < 1e-9
 
 
@@ -42,7 +42,7 @@ def test_upright_values_and_dissipation(rng):
     """Upright: -d33 w and -d55 q, the linear damping's definition. Any attitude: the power is
     -d33 (dz_F/dt)^2 - d55 (dtheta/dt)^2, the rates measured by finite differences of the pose."""
     out = np.zeros(6)
-    vertical_damping(np.eye(3), np.array([2.0, 0.0, 0.1, 0.0, 0.05, 0.0]), 0.0, D33, D55, out)
+    vertical_damping(np.eye(3), np.array([2.0, 0.0, 0.1, 0.0, 0.05, 0.0]), 0.0, D33, D55, 0.0, 0.0, out)
     assert out == pytest.approx([0.0, 0.0, -D33 * 0.1, 0.0, -D55 * 0.05, 0.0], abs=1e-12)
     dt = 1e-6
     for _ in range(20):
@@ -50,7 +50,7 @@ def test_upright_values_and_dissipation(rng):
         nu = rng.normal(size=6) * np.array([3.0, 0.5, 0.3, 0.2, 0.1, 0.2])
         x_f = -0.3
         out[:] = 0.0
-        vertical_damping(rot, nu, x_f, D33, D55, out)
+        vertical_damping(rot, nu, x_f, D33, D55, 0.0, 0.0, out)
         # pose a moment later (body rates: R' = R exp(omega dt))
         rot2 = rot @ Rotation.from_rotvec(nu[3:] * dt).as_matrix()
         zf_dot = (rot @ (nu[:3] + np.cross(nu[3:], [x_f, 0, 0])))[2]

@@ -16,6 +16,7 @@ from scipy.signal import welch
 from sailmujoco.constants import GRAVITY as G
 from sailmujoco.constants import RHO_WATER
 from sailmujoco.forces.waves import (
+    N_COMPONENTS,
     WaveConfig,
     components,
     dynamic_pressure,
@@ -242,7 +243,7 @@ def test_components_carry_the_spectrum_energy(spectrum):
     assert np.sum(comp.amplitude**2 / 2.0) == pytest.approx(hs**2 / 16.0, rel=0.01)
     assert comp.k == pytest.approx(comp.omega**2 / G, rel=1e-15)
     for array in (comp.amplitude, comp.omega, comp.k, comp.direction_to, comp.phase):
-        assert array.dtype == np.float64 and array.shape == (100,) and array.flags.c_contiguous
+        assert array.dtype == np.float64 and array.shape == (N_COMPONENTS,) and array.flags.c_contiguous
 
 
 def _dnv_spectrum(f, hs, fp, gamma):
@@ -263,7 +264,9 @@ def _hour(config, dt=0.25):
 @pytest.mark.parametrize("spectrum", ["pm", "jonswap"])
 def test_an_hour_of_sea_has_four_std_equal_to_hs_and_its_peak_at_one_over_tp(spectrum):
     hs, tp = 2.0, 8.0
-    config = WaveConfig(spectrum=spectrum, hs=hs, tp=tp, seed=7)
+    # 100 components: lines closer than the periodogram's 1/256 Hz bins blend into the spectrum
+    # (the default's lines, 1/57 Hz apart, are checked for their energy above)
+    config = WaveConfig(spectrum=spectrum, hs=hs, tp=tp, seed=7, n_components=100)
     t, eta = _hour(config)
     assert 4.0 * eta.std() == pytest.approx(hs, rel=0.03)
     f, pxx = welch(eta, fs=4.0, nperseg=1024, detrend=False)  # 256 s segments
@@ -284,7 +287,7 @@ def test_an_hour_of_sea_has_four_std_equal_to_hs_and_its_peak_at_one_over_tp(spe
 def test_the_sea_does_not_repeat_after_two_pi_over_the_bin_width():
     config = WaveConfig(spectrum="jonswap", hs=2.0, tp=8.0, seed=5)
     comp = components(config)
-    d_omega = (5.0 - 0.5) * (2.0 * math.pi / 8.0) / 100  # the band over the default 100 bins
+    d_omega = (5.0 - 0.5) * (2.0 * math.pi / 8.0) / N_COMPONENTS  # the band over the default bins
     lag = 2.0 * math.pi / d_omega  # the repeat period an unjittered grid would have (178 s)
     dt = 0.25
     t = 3.0 * config.tp + np.arange(0.0, 3600.0 + lag + 10.0, dt)

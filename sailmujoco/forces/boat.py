@@ -121,7 +121,21 @@ from .foil import (
 from .hull_foils import hull_foil_force, point_flow
 from .hydrostatics import geometric_buoyancy, paper_restoring
 from .resistance import residuary_surge_force
-from .sea_kernels import SB_FOIL_FLOW, foil_water_velocity, ramp_amplitudes, sea_buoyancy
+from .sea_hull import SMALL_SIZE as SEA_SMALL_SIZE
+from .sea_hull import hull_sea_wrench
+from .sea_kernels import (
+    SB_DIFFRACTION,
+    SB_DX,
+    SB_DY,
+    SB_FOIL_FLOW,
+    SB_NX,
+    SB_NY,
+    SB_PRESSURE_DECAY,
+    SB_RELATIVE_DAMPING,
+    SEA_ROWS,
+    foil_water_velocity,
+    sea_stage,
+)
 from .wind import wind_velocities
 from .windage import (
     W_AREA_FRONT,
@@ -146,7 +160,7 @@ T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len
  D_SAIL_FLOW_X, D_SAIL_FLOW_Y, D_SIZE) = range(17)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
-WORK_SIZE = 75  # scratch floats handed to boat_forces
+WORK_SIZE = 86 + SEA_SMALL_SIZE  # scratch floats handed to boat_forces
 
 
 @kernel
@@ -188,7 +202,7 @@ def _accumulate(terms, row, force, point):
 @kernel
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, gust_cos,
-                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, add_mass):
+                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, grid, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
     Parameters
@@ -234,10 +248,14 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational diagonal entries.
     work : numpy.ndarray, shape (WORK_SIZE,)
         Scratch space, so the kernel allocates nothing.
-    sea : numpy.ndarray, shape (6, m)
-        The sea (:mod:`sailmujoco.forces.sea_kernels`); with m > 0 components the geometric
-        hydrostatics are the Froude-Krylov wrench cut at the local surface and the keel and
-        rudder feel the orbital velocity at their centres of pressure; m = 0: calm water.
+    sea : numpy.ndarray, shape (rows, m)
+        The sea (:func:`sailmujoco.forces.sea_kernels.sea_array`); with m > 0 components the
+        geometric hydrostatics gain the sea's part (:mod:`sailmujoco.forces.sea_hull`: the
+        Froude-Krylov and diffraction forces, the water's heave and pitch rates for the
+        damping) and the keel and rudder feel the orbital velocity averaged over their spans;
+        m = 0: calm water.
+    grid : numpy.ndarray, shape (6, n)
+        The hull's coarse grid for the sea (:func:`sailmujoco.forces.sea_kernels.grid_array`).
     add_mass : bool
         Whether to add the added mass to ``mass_csr``.
 
@@ -263,6 +281,8 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     wind_w, wind_b, total = work[51:54], work[54:57], work[57:63]
     winds = work[63:72]  # the wind at the sail's CE, the topsides and the mast (rows of 3)
     fluid = work[72:75]  # the water at a foil in a sea: current + orbital velocity
+    added, water, sea_wrench = work[75:78], work[78:80], work[80:86]  # the hull in a sea
+    sea_small = work[86:86 + SEA_SMALL_SIZE]
     zero3[:] = 0.0
     rotation_from_quat(qpos[3:7], R)
     if R[2, 2] < 0.0:
@@ -276,9 +296,10 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     for i in range(3):
         nu_r[i] = v[i] - current_b[i]
         nu_r[3 + i] = w[i]
-    waves = sea.shape[1] > 0  # a sea: r(t) a_j into row 5 (forces/sea_kernels.py)
+    waves = sea.shape[1] > 0  # a sea: this stage's phases into its rows (forces/sea_kernels.py)
+    sb = P_SEA_BLOCK
     if waves:
-        ramp_amplitudes(t, P[P_SEA_RAMP], sea)
+        sea_stage(t, P[P_SEA_RAMP], qpos[0:3], R, sea)
     water = current_b
 
     # ---- keel: fixed to the hull, chord +x, normal +y (Wille eqs. 30-33) ----
@@ -286,8 +307,9 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     fb = P_FOIL_BLOCK
     keel_lift = 0.0
     if P[P_ON_KEEL] > 0.0:
-        if waves and P[P_SEA_BLOCK + SB_FOIL_FLOW] > 0.0:
-            foil_water_velocity(t, qpos[0:3], R, P[P_KEEL_X], P[P_KEEL_Z], sea, current_b, fluid)
+        if waves and P[sb + SB_FOIL_FLOW] > 0.0:
+            foil_water_velocity(qpos[0:3], R, P[P_KEEL_X], P[P_KEEL_Z],
+                                math.sqrt(P[P_KEEL_AR] * P[P_KEEL_AREA]), sea, current_b, fluid)
             water = fluid
         alpha, speed, keel_lift = hull_foil_force(
             0.0, P[P_KEEL_X], P[P_KEEL_Z], P[P_KEEL_CHORD], P[P_KEEL_AR], P[P_KEEL_TC], P[P_KEEL_AREA],
@@ -302,8 +324,9 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         # the keel's downwash at the rudder, from the keel's C_L of this same call:
         # epsilon = k C_L,keel / (pi A_e,keel) (forces/foil.py, downwash_factor); 0 when off
         downwash = P[fb + FB_DOWNWASH_GAIN] * keel_lift if P[P_KEEL_DOWNWASH] > 0.0 else 0.0
-        if waves and P[P_SEA_BLOCK + SB_FOIL_FLOW] > 0.0:
-            foil_water_velocity(t, qpos[0:3], R, P[P_RUD_X], P[P_RUD_Z], sea, current_b, fluid)
+        if waves and P[sb + SB_FOIL_FLOW] > 0.0:
+            foil_water_velocity(qpos[0:3], R, P[P_RUD_X], P[P_RUD_Z],
+                                math.sqrt(P[P_RUD_AR] * P[P_RUD_AREA]), sea, current_b, fluid)
             water = fluid
         alpha, speed, _ = hull_foil_force(
             qpos[idx[0]], P[P_RUD_X], P[P_RUD_Z], P[P_RUD_CHORD], P[P_RUD_AR], P[P_RUD_TC], P[P_RUD_AREA],
@@ -378,11 +401,21 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
 
     # ---- hydrostatics ----
     mode = P[P_HYDRO_MODE]
-    if mode == 2.0 and waves:  # buoyancy and Froude-Krylov force, cut at the local surface
-        diag[D_SUBMERGED] = sea_buoyancy(t, qpos[0:3], R, columns, sea, P[P_RHO_W], P[P_G], wrench)
-        terms[T_HYDRO, :] = wrench
-    elif mode == 2.0:
+    water_dz, water_dpitch = 0.0, 0.0  # the water's heave and pitch rates at the hull (a sea)
+    if mode == 2.0:
         diag[D_SUBMERGED] = geometric_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
+        if waves:  # + the sea's part, on the coarse grid (forces/sea_hull.py)
+            added[0], added[1], added[2] = P[P_A1], P[P_A2], P[P_A3]
+            nx, ny = int(P[sb + SB_NX]), int(P[sb + SB_NY])
+            hull_sea_wrench(qpos[0:3], R, sea, sea[SEA_ROWS:SEA_ROWS + nx], sea[SEA_ROWS + nx:], grid,
+                            P[sb + SB_DX], P[sb + SB_DY], nx, ny, P[P_FLOTATION_X], added,
+                            P[sb + SB_PRESSURE_DECAY] > 0.0,
+                            P[sb + SB_DIFFRACTION] > 0.0 and P[P_ON_ADDED] > 0.0,
+                            P[P_RHO_W], P[P_G], sea_small, sea_wrench, water)
+            for i in range(6):
+                wrench[i] += sea_wrench[i]
+            if P[sb + SB_RELATIVE_DAMPING] > 0.0:
+                water_dz, water_dpitch = water[0], water[1]
         terms[T_HYDRO, :] = wrench
     elif mode == 1.0:
         paper_restoring(qpos[2], R, P[P_MASS] * P[P_G], P[P_RIGHTING_K], P[P_RIGHTING_SIN] > 0.0,
@@ -394,7 +427,8 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     if P[P_ON_DAMPING] > 0.0:
         hull_damping(R, nu_r, P[P_RHO_W], P[P_D11:P_D66 + 1], P[P_WETTED], P[P_FORM_K], P[P_LENGTH],
                      P[P_NU_W], P[P_CROSSFLOW_CD], strips[0], strips[1], strips[2], P[P_BF0],
-                     P[P_BL], P[P_OMEGA_ROLL], P[P_FLOTATION_X], P[P_BODY_DAMPING] > 0.0, wrench)
+                     P[P_BL], P[P_OMEGA_ROLL], P[P_FLOTATION_X], P[P_BODY_DAMPING] > 0.0, water_dz,
+                     water_dpitch, wrench)
         if P[P_RESISTANCE_DSYHS] > 0.0:  # + Delft residuary resistance, along body x at CO
             heel = math.atan2(R[2, 1], R[2, 2])  # frames.euler_from_matrix
             block = P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + RESISTANCE_BLOCK_SIZE]

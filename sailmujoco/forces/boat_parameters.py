@@ -46,9 +46,9 @@ FOIL_FORMS = literal_choices(Foils)  # the papers' foil coefficients / finite-wi
 P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
 P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/finite_wing.py (finite-wing forms)
 P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
-P_SEA_BLOCK, SEA_BLOCK_SIZE = 165, 8  # forces/sea_kernels.py (ramp and the sea's switches)
+P_SEA_BLOCK, SEA_BLOCK_SIZE = 165, 10  # forces/sea_kernels.py (ramp, switches, the hull's grid)
 P_SEA_RAMP = P_SEA_BLOCK  # s, the waves' start-up ramp T_r; 0 in calm water
-P_SIZE = 173
+P_SIZE = 175
 
 
 def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
@@ -57,8 +57,7 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
                     wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
                     vertical_damping: str = "world", restoring_axes: str = "horizontal",
                     resistance: str = "dsyhs", foils: str = "finite", keel_downwash: bool = True,
-                    windage: bool = True, sea_ramp: float = 0.0,
-                    sea_switches: tuple = (True, True, True, True)) -> np.ndarray:
+                    windage: bool = True, sea_ramp: float = 0.0) -> np.ndarray:
     """Flatten boat parameters and force switches into ``P`` (P_SIZE,), laid out by the P_* indices.
 
     Parameters
@@ -79,9 +78,6 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
         Time step of the wind's wander series, s.
     sea_ramp : float
         The waves' start-up ramp T_r, s (0 in calm water).
-    sea_switches : tuple of bool
-        The sea's mechanisms, in the order of
-        :data:`sailmujoco.forces.sea_kernels.SEA_SWITCHES` (each on by default).
     """
     for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
                                  ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
@@ -134,5 +130,4 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     P[P_KEEL_DOWNWASH], P[P_ON_WINDAGE] = float(keel_downwash), float(windage)
     pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
     P[P_SEA_RAMP] = sea_ramp  # forces/sea_kernels.py, ramp_duration
-    P[P_SEA_BLOCK + 1:P_SEA_BLOCK + 1 + len(sea_switches)] = [float(on) for on in sea_switches]
     return P

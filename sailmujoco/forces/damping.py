@@ -128,11 +128,13 @@ def roll_damping(p, u_r, roll_friction, roll_lift, roll_frequency, length):
 
 
 @kernel
-def vertical_damping(rot, nu, flotation_x, d33, d55, out):
+def vertical_damping(rot, nu, flotation_x, d33, d55, water_dz, water_dpitch, out):
     """Heave and pitch damping on the vertical motion (module docstring); adds to ``out``.
 
     The hull's body velocity is used for the vertical motion: the current is horizontal, so
-    relative and absolute vertical motion agree.
+    relative and absolute vertical motion agree in calm water; in a sea the water's own heave
+    and pitch rates at the waterplane are subtracted (the damping acts on the motion relative
+    to the water: a hull carried by a long wave is not damped).
 
     Parameters
     ----------
@@ -146,13 +148,16 @@ def vertical_damping(rot, nu, flotation_x, d33, d55, out):
         Heave damping on dz_F/dt, N s/m.
     d55 : float
         Pitch damping on dtheta/dt, N m s/rad.
+    water_dz, water_dpitch : float
+        The water's vertical velocity at F (m/s) and its surface's pitch rate (rad/s, bow up
+        positive); 0 in calm water.
     out : numpy.ndarray, shape (6,)
         The body-frame wrench about CO (N, N m) the damping is added to.
     """
     u, v, w, q, r = nu[0], nu[1], nu[2], nu[4], nu[5]
     r20, r21, r22 = rot[2, 0], rot[2, 1], rot[2, 2]
     # velocity of F = (x_F, 0, 0) in the body frame: v + omega x r_F = (u, v + r x_F, w - q x_F)
-    zf_dot = r20 * u + r21 * (v + r * flotation_x) + r22 * (w - q * flotation_x)
+    zf_dot = r20 * u + r21 * (v + r * flotation_x) + r22 * (w - q * flotation_x) - water_dz
     fz = -d33 * zf_dot  # world vertical, at F
     out[0] += fz * r20
     out[1] += fz * r21
@@ -164,7 +169,7 @@ def vertical_damping(rot, nu, flotation_x, d33, d55, out):
     cos_theta = math.sqrt(r21 * r21 + r22 * r22)
     if cos_theta < 1e-9:
         return
-    theta_dot = (r21 * r - r22 * q) / cos_theta
+    theta_dot = (r21 * r - r22 * q) / cos_theta - water_dpitch
     # y1 = e_z x (R00, R10, 0)/|.| (world, horizontal, to port); its body components R^T y1
     hx, hy = rot[0, 0], rot[1, 0]
     hn = math.sqrt(hx * hx + hy * hy)
@@ -180,7 +185,7 @@ def vertical_damping(rot, nu, flotation_x, d33, d55, out):
 @kernel
 def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu, crossflow_cd,
                  strip_x, strip_w, strip_draft, roll_friction, roll_lift, roll_frequency,
-                 flotation_x, body_frame_vertical, out):
+                 flotation_x, body_frame_vertical, water_dz, water_dpitch, out):
     """Total hull damping wrench (body frame, about CO) into ``out``.
 
     Linear damping (eq. 13) plus ITTC surge resistance (eqs. 15-16), cross-flow drag (eqs.
@@ -214,6 +219,10 @@ def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu
         Centre of flotation forward of CO, m.
     body_frame_vertical : bool
         Heave and pitch damping on body w and q instead of the vertical motion.
+    water_dz, water_dpitch : float
+        The water's vertical velocity at the centre of flotation (m/s) and its surface's pitch
+        rate (rad/s) in a sea (:func:`sailmujoco.forces.sea_hull.hull_sea_wrench`), which the
+        vertical damping acts relative to; 0 in calm water.
     out : numpy.ndarray, shape (6,)
         Receives the wrench, N and N m.
     """
@@ -229,4 +238,4 @@ def hull_damping(rot, nu_r, rho, linear, wetted_surface, form_factor, length, nu
         out[2] = -linear[2] * w
         out[4] = -linear[3] * q
     else:
-        vertical_damping(rot, nu_r, flotation_x, linear[2], linear[3], out)
+        vertical_damping(rot, nu_r, flotation_x, linear[2], linear[3], water_dz, water_dpitch, out)

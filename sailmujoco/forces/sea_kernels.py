@@ -1,14 +1,20 @@
-"""The sea as the force kernel reads it: the components in one array, the ramp, the hull's
-Froude-Krylov wrench and the water's velocity at a foil.
+"""The sea as the force kernel reads it: the components in one array, each stage's phases,
+and the water's velocity at a foil.
 
-The force kernel (:func:`sailmujoco.forces.boat.boat_forces`) takes the sea as one array
-``sea`` of shape (6, n): rows amplitude a_j (m), angular frequency omega_j (rad/s), wavenumber
-k_j (rad/m), direction travelled toward beta_j (rad, from east counter-clockwise), phase phi_j
-(rad) of :func:`sailmujoco.forces.waves.components`, and a sixth row the kernel fills at each
-call with the ramped amplitudes r(t) a_j. A calm sea is the array of shape (6, 0): the kernel
-then runs the calm-water arithmetic untouched. The ramp r(t) = (1 - cos(pi t/T_r))/2, 0 before
-t = 0 and 1 after T_r = 3 Tp, is :func:`sailmujoco.forces.waves.ramp` evaluated at the stage
-time inside the kernel.
+The force kernel (:func:`sailmujoco.forces.boat.boat_forces`) takes the sea as one array ``sea``
+of shape (SEA_ROWS, m), one column per component, largest amplitude first. Rows
+0-5 are fixed: amplitude a_j (m), angular frequency omega_j (rad/s), wavenumber k_j (rad/m),
+cos and sin of the direction beta_j it travels toward (from east counter-clockwise) and the
+phase phi_j (rad) of :func:`sailmujoco.forces.waves.components`. :func:`sea_stage` fills rows
+6-10 at every call: the ramped amplitude r(t) a_j, the phase theta_j at CO, and the body-frame
+wavevector (kappa_x, kappa_y, kappa_z)_j, the phase's change per metre along each body axis
+(k_j (cos beta_j, sin beta_j) . the horizontal part of that axis in the world), so that the
+phase at a body point (x, y, z) is theta_j + kappa_x x + kappa_y y + kappa_z z.
+
+A calm sea is
+the array of shape (SEA_ROWS, 0): the kernel then runs calm water's arithmetic untouched.
+The ramp r(t) = (1 - cos(pi t/T_r))/2, 0 before t = 0 and 1 after T_r = 3 Tp, is
+:func:`sailmujoco.forces.waves.ramp` evaluated at the stage time inside the kernel.
 """
 
 from __future__ import annotations
@@ -18,15 +24,18 @@ import math
 import numpy as np
 
 from .._jit import kernel
-from .wave_pressure import froude_krylov
+from ..hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
+from .boat_parameters import P_SEA_BLOCK
+from .sea_hull import SCRATCH_ROWS
 from .waves import RAMP_PERIODS, WaveConfig, components
 
-SEA_ROWS = 6  # amplitude, omega, k, direction_to, phase, ramped amplitude
+SEA_ROWS = 11  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kappa_x, kappa_y, kappa_z
 # The sea's mechanisms (physics options, sailmujoco.options.ForceSwitches), each packed as 1.0 (on)
 # or 0.0 in this order after the ramp in the sea's block of P (forces/boat_parameters.py,
 # P_SEA_BLOCK); wave_damping packs 1.0 for "relative":
 SEA_SWITCHES = ("wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
 SB_RAMP, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(5)
+SB_DX, SB_DY, SB_NX, SB_NY = range(5, 9)  # the hull's grid (sailmujoco/hull_grid.py): steps, counts
 
 
 def check_sea(config, dofs: int) -> None:
@@ -45,21 +54,80 @@ def check_sea(config, dofs: int) -> None:
         raise ValueError("waves need the 6-DOF boat (dofs=6): dofs=4 holds heave and pitch")
 
 
-def sea_array(config: WaveConfig | None) -> np.ndarray:
-    """The kernel's sea array (6, n) of a sea state; (6, 0) for None or ``hs = 0`` (calm).
+def sea_array(config: WaveConfig | None, depths=()) -> np.ndarray:
+    """The kernel's sea array of the components the boat feels (module docstring): SEA_ROWS
+    rows, then e^(k_j z_i) at the depths z_i of the hull's grid stations
+    (:func:`sailmujoco.hull_grid.section_depths`), then the hull's scratch rows
+    (:func:`sailmujoco.forces.sea_hull.hull_sea_wrench`); m = 0 for None or ``hs = 0`` (calm).
 
     Parameters
     ----------
     config : WaveConfig or None
         The sea state.
+    depths : sequence of float
+        Depths (negative, m) where the diffraction force takes the water's acceleration.
     """
+    depths = np.asarray(depths, dtype=float)
+    rows = SEA_ROWS + depths.size + SCRATCH_ROWS + 2 * GRID_ROWS
     if config is None or config.hs == 0.0:
-        return np.zeros((SEA_ROWS, 0))
+        return np.zeros((rows, 0))
     comp = components(config)
-    sea = np.zeros((SEA_ROWS, comp.amplitude.shape[0]))
-    sea[0], sea[1], sea[2] = comp.amplitude, comp.omega, comp.k
-    sea[3], sea[4] = comp.direction_to, comp.phase
+    felt = np.argsort(-comp.amplitude, kind="stable")  # largest first
+    sea = np.zeros((rows, felt.size))
+    sea[0], sea[1], sea[2] = comp.amplitude[felt], comp.omega[felt], comp.k[felt]
+    sea[3], sea[4] = np.cos(comp.direction_to[felt]), np.sin(comp.direction_to[felt])
+    sea[5] = comp.phase[felt]
+    sea[SEA_ROWS:SEA_ROWS + depths.size] = np.exp(np.outer(depths, sea[2]))
     return np.ascontiguousarray(sea)
+
+
+def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> np.ndarray:
+    """The kernel's ``grid`` array (6, 2 nx ny): the grid's columns (rows x, y, area, z_bottom,
+    z_top) and in row 5 each station's share of the added mass; the grid's steps and counts
+    and the sea's switches into the sea's block of ``P``.
+
+    Parameters
+    ----------
+    switches : ForceSwitches
+        The physics' switches; those of :data:`SEA_SWITCHES` are packed (1.0 on; wave_damping
+        1.0 for "relative").
+    grid : HullGrid
+        The hull's coarse grid (:func:`sailmujoco.hull_grid.hull_grid`).
+    shares : numpy.ndarray, shape (nx,)
+        Each station's share of the added mass (:func:`sailmujoco.hull_grid.section_weights`).
+    P : numpy.ndarray
+        The packed parameters, written in place.
+    """
+    out = np.zeros((6, max(grid.columns.shape[1], grid.nx)))
+    out[:5] = grid.columns
+    out[5, :grid.nx] = shares
+    block = P_SEA_BLOCK
+    P[block + SB_DX], P[block + SB_DY] = grid.dx, grid.dy
+    P[block + SB_NX], P[block + SB_NY] = grid.nx, grid.ny
+    for k, name in enumerate(SEA_SWITCHES):
+        value = getattr(switches, name)
+        P[block + SB_FOIL_FLOW + k] = float(value is True or value == "relative")
+    return np.ascontiguousarray(out)
+
+
+def sea_arrays(hull, config: WaveConfig | None, P: np.ndarray, switches):
+    """The kernel's ``sea`` and ``grid`` arrays for a hull in a sea state (:func:`sea_array`,
+    :func:`grid_array`), with the grid's numbers and the switches packed into ``P``.
+
+    Parameters
+    ----------
+    hull : HullShape
+        The canoe body.
+    config : WaveConfig or None
+        The sea state.
+    P : numpy.ndarray
+        The packed parameters, written in place.
+    switches : ForceSwitches
+        The physics' switches.
+    """
+    grid = hull_grid(hull)
+    sea = sea_array(config, section_depths(hull, grid))
+    return sea, grid_array(grid, section_weights(hull, grid), P, switches)
 
 
 def ramp_duration(config: WaveConfig | None) -> float:
@@ -74,8 +142,9 @@ def ramp_duration(config: WaveConfig | None) -> float:
 
 
 @kernel
-def ramp_amplitudes(t, duration, sea):
-    """Fill ``sea``'s sixth row with r(t) a_j (:func:`sailmujoco.forces.waves.ramp`).
+def sea_stage(t, duration, pos, rot, sea):
+    """Fill ``sea``'s rows 6-10 for this stage: r(t) a_j, theta_j at CO and the body-frame
+    wavevector (module docstring).
 
     Parameters
     ----------
@@ -83,90 +152,71 @@ def ramp_amplitudes(t, duration, sea):
         Time, s.
     duration : float
         The ramp's length T_r, s (> 0).
-    sea : numpy.ndarray, shape (6, n)
-        The sea array (module docstring); row 5 receives the ramped amplitudes, m.
-    """
-    s = min(max(t / duration, 0.0), 1.0)
-    r = 0.5 * (1.0 - math.cos(math.pi * s))
-    for j in range(sea.shape[1]):
-        sea[5, j] = r * sea[0, j]
-
-
-@kernel
-def sea_buoyancy(t, pos, rot, columns, sea, rho, g, out):
-    """Buoyancy and Froude-Krylov wave force on the hull's columns, cut at the local surface.
-
-    :func:`sailmujoco.forces.wave_pressure.froude_krylov` with the ramped amplitudes (row 5 of
-    ``sea``, filled by :func:`ramp_amplitudes`).
-
-    Parameters
-    ----------
-    t : float
-        Time, s.
     pos : numpy.ndarray, shape (3,)
         World position of CO, m.
     rot : numpy.ndarray, shape (3, 3)
         Rotation body -> world.
-    columns : numpy.ndarray, shape (5, n)
-        The hull's columns (:func:`sailmujoco.hull.column_quadrature`).
-    sea : numpy.ndarray, shape (6, m)
-        The sea array, ramped.
-    rho, g : float
-        Water density (kg/m^3) and gravitational acceleration (m/s^2).
-    out : numpy.ndarray, shape (6,)
-        Receives the wrench (body frame, about CO), N and N m.
-
-    Returns
-    -------
-    float
-        The wet volume, m^3.
+    sea : numpy.ndarray, shape (SEA_ROWS, m)
+        The sea array.
     """
-    return froude_krylov(pos, rot, columns, sea[5], sea[1], sea[2], sea[3], sea[4], t, rho, g, out)
+    s = min(max(t / duration, 0.0), 1.0)
+    r = 0.5 * (1.0 - math.cos(math.pi * s))
+    for j in range(sea.shape[1]):
+        k, cb, sb = sea[2, j], sea[3, j], sea[4, j]
+        sea[6, j] = r * sea[0, j]
+        sea[7, j] = k * (pos[0] * cb + pos[1] * sb) - sea[1, j] * t + sea[5, j]
+        sea[8, j] = k * (cb * rot[0, 0] + sb * rot[1, 0])
+        sea[9, j] = k * (cb * rot[0, 1] + sb * rot[1, 1])
+        sea[10, j] = k * (cb * rot[0, 2] + sb * rot[1, 2])
 
 
 @kernel
-def foil_water_velocity(t, pos, rot, x, z, sea, current_b, out):
-    """The water's velocity at the body point (x, 0, z): current plus orbital velocity, body frame.
+def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
+    """The water's velocity at a foil, body frame: the current plus the orbital velocity
+    averaged over the foil's span.
 
-    The orbital velocity of :func:`sailmujoco.forces.waves.orbital_velocity` (vertically
-    stretched, z_s = min(z - eta, 0), eta at the point's horizontal position), with the ramped
-    amplitudes, turned world -> body by R^T and added to the current. One point per foil: the
-    velocity varies along the span as e^(k z_s), which a single point at the centre of pressure
-    averages only to first order in k times the span.
+    The foil stands at body (x, 0, z), its span ``span`` centred there along body z. The phases
+    are those at (x, 0, z) (the span's horizontal offset at a heel is left out); each
+    component's speed a_j omega_j e^(k_j z_s) is averaged over the span's stretched heights
+    z_s (:func:`sailmujoco.forces.waves.orbital_velocity`; z_s = min(z - eta, 0), eta at the
+    foil): exactly, e^(k z_top) (1 - e^(-k d)) / (k d) for a span reaching from z_top down over
+    the height d, which is the limit of many points along the span (the keel's flow falls to
+    about 0.45 of its top value down a 1.3 m span in a 10 m wave).
 
     Parameters
     ----------
-    t : float
-        Time, s.
     pos : numpy.ndarray, shape (3,)
         World position of CO, m.
     rot : numpy.ndarray, shape (3, 3)
         Rotation body -> world.
     x, z : float
-        The point in the body frame (on the centre plane), m.
-    sea : numpy.ndarray, shape (6, m)
-        The sea array, ramped (:func:`ramp_amplitudes`).
+        The foil's centre of pressure in the body frame (on the centre plane), m.
+    span : float
+        The foil's span, m.
+    sea : numpy.ndarray, shape (SEA_ROWS, m)
+        The sea array with this stage's rows (:func:`sea_stage`).
     current_b : numpy.ndarray, shape (3,)
         The current, body frame, m/s.
     out : numpy.ndarray, shape (3,)
         Receives the water's velocity, body frame, m/s.
     """
-    px = pos[0] + rot[0, 0] * x + rot[0, 2] * z
-    py = pos[1] + rot[1, 0] * x + rot[1, 2] * z
-    pz = pos[2] + rot[2, 0] * x + rot[2, 2] * z
+    m = sea.shape[1]
+    phase = np.empty((2, m))
     eta = 0.0
-    for j in range(sea.shape[1]):
-        theta = sea[2, j] * (px * math.cos(sea[3, j]) + py * math.sin(sea[3, j])) - sea[1, j] * t + sea[4, j]
-        eta += sea[5, j] * math.cos(theta)
-    z_s = min(pz - eta, 0.0)
+    for j in range(m):
+        theta = sea[7, j] + sea[8, j] * x + sea[10, j] * z
+        phase[0, j], phase[1, j] = math.cos(theta), math.sin(theta)
+        eta += sea[6, j] * phase[0, j]
+    height = rot[2, 2] * span  # the span's world height
+    z_top = min(pos[2] + rot[2, 0] * x + rot[2, 2] * (z + 0.5 * span) - eta, 0.0)
     ue, un, uz = 0.0, 0.0, 0.0
-    for j in range(sea.shape[1]):
-        cb, sb = math.cos(sea[3, j]), math.sin(sea[3, j])
-        theta = sea[2, j] * (px * cb + py * sb) - sea[1, j] * t + sea[4, j]
-        speed = sea[5, j] * sea[1, j] * math.exp(sea[2, j] * z_s)
-        horizontal = speed * math.cos(theta)
-        ue += horizontal * cb
-        un += horizontal * sb
-        uz += speed * math.sin(theta)
+    for j in range(m):
+        q = sea[2, j] * height
+        mean = 1.0 - q * (0.5 - q / 6.0) if q < 1e-4 else -math.expm1(-q) / q
+        speed = sea[6, j] * sea[1, j] * math.exp(sea[2, j] * z_top) * mean
+        horizontal = speed * phase[0, j]
+        ue += horizontal * sea[3, j]
+        un += horizontal * sea[4, j]
+        uz += speed * phase[1, j]
     for i in range(3):
         out[i] = current_b[i] + rot[0, i] * ue + rot[1, i] * un + rot[2, i] * uz

@@ -64,11 +64,22 @@ from .hydrostatics import buoyancy_wrench
 
 
 @kernel(inline=True)
-def _wet_interval(h, r22, z_bottom, z_top, eta):
+def wet_interval(h, r22, z_bottom, z_top, eta):
     """(lo, hi): the column's wet part in body z, cut where its axis meets the height ``eta``.
 
     The axis' world height at body z is h + r22 z, as in
     :func:`sailmujoco.forces.hydrostatics.submerged_volume` (there with eta = 0).
+
+    Parameters
+    ----------
+    h : float
+        World height of the column's body-z origin, m.
+    r22 : float
+        R[2, 2], the column axis' vertical component.
+    z_bottom, z_top : float
+        The column's ends in body z, m.
+    eta : float
+        The surface's height where the column is cut, m.
     """
     if abs(r22) < 1e-12:
         return (z_bottom, z_top) if h < eta else (0.0, 0.0)
@@ -229,7 +240,7 @@ def froude_krylov(pos, rot, columns, amplitude, omega, wavenumber, direction_to,
         dy = rot[1, 0] * x + rot[1, 1] * y
         eta = _column_phases(comp, amplitude, dx, dy, cth, sth)
         h = pos[2] + r20 * x + r21 * y  # world height of the column's body-z origin
-        lo, hi = _wet_interval(h, r22, columns[3, i], columns[4, i], eta)
+        lo, hi = wet_interval(h, r22, columns[3, i], columns[4, i], eta)
         if hi <= lo:
             continue
         dv = area * (hi - lo)
