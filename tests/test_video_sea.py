@@ -207,3 +207,43 @@ def test_video_help_shows_the_sea_with_an_example(capsys):
             main([command, "--help"])
         out = capsys.readouterr().out
         assert "--waves KEY=VALUE" in out and "--waves hs=1.5" in out
+
+
+# ----------------------------------------------------------------------------- the waves in a still
+def test_the_sun_stands_low_over_the_bearing_the_waves_come_from(boat):
+    """Waves from the south-west (225 deg) travel north-east: the sun's light goes that way,
+    10 deg or so down, so that a slope facing the waves' origin is lit and its back is not."""
+    waves = WaveConfig(spectrum="regular", hs=1.0, tp=5.0, direction_from=math.radians(225.0))
+    with renderer(boat, waves) as r:
+        light = r.model.light_dir[r.model.light("sun").id]
+        light = light / np.linalg.norm(light)
+    assert light[0] == pytest.approx(light[1]) and light[0] > 0.0  # toward the north-east
+    assert 5.0 < math.degrees(math.asin(-light[2])) < 20.0  # low over the horizon
+
+
+def test_a_still_from_above_shows_the_crests_where_the_elevation_has_them(boat):
+    """A regular wave from the west seen straight down: along the image's rows the brightness
+    repeats at the wavelength g T^2/(2 pi) and follows the slope d eta/dx (the side facing the
+    low western sun is lit); calm water under the same camera is flat."""
+    H, T = 0.6, 3.0
+    wavelength = GRAVITY * T**2 / (2.0 * math.pi)  # 14.05 m
+    waves = WaveConfig(spectrum="regular", hs=H, tp=T, direction_from=1.5 * math.pi)
+    centre, extent, (w, h) = (0.0, 22.0), 14.0, (160, 120)  # inside the exact region, boat not in view
+    kw = dict(camera="top", top_center=centre, top_extent=extent)
+    t = 10.0 * T + 0.7
+    try:
+        with SceneRenderer(boat, w, h, overlay=False, forces=False, waves=waves, **kw) as r:
+            sea = r.render(snap(t, position=(0.0, 0.0, 0.0))).astype(float).mean(axis=2)
+        with SceneRenderer(boat, w, h, overlay=False, forces=False, **kw) as r:
+            calm = r.render(snap(t, position=(0.0, 0.0, 0.0))).astype(float).mean(axis=2)
+    except Exception as err:  # no GL platform here
+        pytest.skip(f"no offscreen rendering: {err}")
+    profile, flat = sea.mean(axis=0), calm.mean(axis=0)
+    assert flat.std() < 0.2 * profile.std()
+    x = centre[0] + (np.arange(w) + 0.5 - 0.5 * w) * (2.0 * extent / h)  # m, each column's east
+    lengths = np.linspace(0.5, 2.0, 301) * wavelength
+    power = [abs(np.sum((profile - profile.mean()) * np.exp(-2j * math.pi * x / L))) for L in lengths]
+    assert lengths[int(np.argmax(power))] == pytest.approx(wavelength, rel=0.05)
+    k, omega = 2.0 * math.pi / wavelength, 2.0 * math.pi / T
+    slope = -0.5 * H * k * np.sin(k * x - omega * t)  # d eta/dx of eta = H/2 cos(k x - omega t)
+    assert np.corrcoef(profile, slope)[0, 1] > 0.7
