@@ -5,8 +5,12 @@ flat ``sea_surface`` plane gives way to
 
 * a MuJoCo height field (``sea_waves``: visual only, ``contype = conaffinity = 0``, the group
   and material of the sea) of half-size L around a centre that follows the boat, its heights
-  set each frame from :func:`~sailmujoco.forces.waves.elevation` at its grid points, and
-* four flat planes (``sea_far_*``) framing it: the still sea out to the horizon.
+  set each frame from :func:`~sailmujoco.forces.waves.elevation` at its grid points
+  (:func:`grid_elevation`), and
+* four flat planes (``sea_far_*``) framing it: the still sea out to the horizon;
+* a low sun over the bearing the waves come from, a dimmer headlight, a more opaque surface and
+  a fainter texture (:func:`light_the_sea`, :func:`paint_the_sea`): the slopes, lit on the side
+  facing the waves' origin and dark behind, show the crests and troughs in a still.
 
 The centre moves in whole texture tiles (:data:`~sailmujoco.video.water.TILE_HULLS` hull
 lengths, the nearest tile corner to the boat), so the sea's texture stays fixed to the world
