@@ -49,6 +49,7 @@ from .video import (
     snapshot_observation,
     snapshot_physics,
 )
+from .video.sea_option import add_waves_argument, waves_from_arguments
 from .window import NoDisplay, Window, open_display
 
 KEY_SPACE, KEY_RIGHT = 32, 262  # GLFW key codes
@@ -64,6 +65,7 @@ KEYS = """keys and mouse:
 def _video_hint(args) -> str:
     world = f" --world {args.world}" if args.world != "mujoco" else ""
     options = "".join(f" --option {key}={value!r}" for key, value in args.option)
+    options += "".join(f" --waves {key}={value}" for key, value in getattr(args, "waves", []))
     return (f"record a video instead: sailmujoco video {args.boat} {args.task} "
             f"--controller {args.controller}{options}{world} "
             f"--out results/{boat_label(args.boat)}_{args.task}.mp4")
@@ -289,6 +291,8 @@ EXAMPLES = """examples:
   sailmujoco view wille_yacht heading_hold --controller pid
   sailmujoco view saoud_robot heading_hold --controller pid --option kp=2.0 --set wind_speed=4
   sailmujoco view saoud_robot heading_hold --controller my_law.py:make --paused
+  sailmujoco view wille_yacht beam_reach_roll --controller wille_roll --waves hs=1.5 \\
+      --waves tp=6 --waves n_components=16     # a 1.5 m sea from the wind's bearing
   xvfb-run -a sailmujoco view wille_yacht heading_hold --controller pid --seconds 10 \\
       --screenshot view.png        # headless: a virtual display"""
 
@@ -332,6 +336,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                              "camera with the videos' map and numbers")
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper (repeatable)")
+    add_waves_argument(parser)
     parser.set_defaults(func=run_cli)
     return parser
 
@@ -356,12 +361,16 @@ def run_cli(args) -> int:
     # names first, so that without a display the suggested video command is one that runs
     validate({"boat": args.boat, "task": args.task, "world": args.world, "controller": args.controller})
     options = controller_options(args)
+    settings = dict(args.set)
+    waves = waves_from_arguments(args.waves, args.task, args.world, args.seed, settings)
+    if waves is not None:
+        settings["waves"] = waves
     try:
         result = watch(args.boat, args.task, args.controller, world=args.world, seconds=args.seconds,
                        controller_options=options,
                        seed=args.seed, fps=args.fps, forces=not args.no_forces,
                        overlay=not args.no_overlay, paused=args.paused,
-                       screenshot_path=args.screenshot, **dict(args.set))
+                       screenshot_path=args.screenshot, **settings)
     except NoDisplay as err:
         print(f"sailmujoco view: cannot open a window: {err}; {_video_hint(args)}", file=sys.stderr)
         return 2

@@ -96,3 +96,154 @@ def test_without_a_sea_the_flat_surface_is_drawn(boat):
             assert r.model.geom("sea_surface").id >= 0
             frames.append(r.render(snap(20.0)))
     assert np.array_equal(frames[0], frames[1]) and np.array_equal(frames[0], frames[2])
+
+
+# ----------------------------------------------------------------------------- a video in a sea
+def test_a_video_in_a_sea_draws_the_moving_elevation(boat, tmp_path, monkeypatch):
+    """record() in a JONSWAP sea: between two frames the stored heights change by a good part of
+    the sea's height, and at grid points inside the exact region each frame's heights are the
+    elevation at that frame's time, evaluated point by point."""
+    pytest.importorskip("imageio_ffmpeg")
+    from sailmujoco import video
+    from sailmujoco.forces.waves import elevation
+
+    waves = WaveConfig(spectrum="jonswap", hs=1.0, tp=4.0, direction_from=0.3, n_components=6, seed=5)
+    seen = []  # (time, heights, grid) of each frame drawn
+    render = video.SceneRenderer.render
+
+    def spy(self, snap, *args, **kwargs):
+        frame = render(self, snap, *args, **kwargs)
+        x, y = self.sea.grid()
+        seen.append((snap.time, self.sea.heights().copy(), x.copy(), y.copy(), self.sea.window))
+        return frame
+
+    monkeypatch.setattr(video.SceneRenderer, "render", spy)
+    try:
+        rec = video.record("wille_yacht", "beam_reach_roll", "wille_roll", tmp_path / "sea.mp4",
+                           seconds=14.0, fps=0.5, width=96, height=64, overlay=False, waves=waves)
+    except video.RenderingUnavailable as err:
+        pytest.skip(f"no offscreen rendering: {err}")
+    assert rec.frames == 7 and len(seen) == 7
+    (t1, h1, *_), (t2, h2, *_) = seen[-2], seen[-1]
+    assert t2 - t1 == pytest.approx(2.0)  # both after the ramp (3 Tp = 12 s) or at its end
+    assert np.abs(h2 - h1).mean() > 0.1 * waves.hs
+    rng = np.random.default_rng(1)
+    for time, heights, x, y, window in seen[-3:]:
+        rows, cols = np.nonzero(window == 1.0)
+        for i in rng.choice(rows.size, 5, replace=False):
+            r, c = rows[i], cols[i]
+            expected = float(elevation(waves, time, float(x[r, c]), float(y[r, c])))
+            assert heights[r, c] == pytest.approx(expected, abs=1e-6 * 2 * waves.hs)
+
+
+# ----------------------------------------------------------------------------- the command line
+def cli_video(tmp_path, *waves_arguments):
+    from sailmujoco.cli import main
+
+    return main(["video", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll",
+                 "--seconds", "0.4", "--fps", "5", "--width", "64", "--height", "48",
+                 "--no-overlay", "--no-progress", "--out", str(tmp_path / "sea.mp4"),
+                 *[a for pair in waves_arguments for a in ("--waves", pair)]])
+
+
+def test_cli_sea_comes_from_the_wind_unless_given(tmp_path, monkeypatch, capsys):
+    """--waves KEY=VALUE builds the sea; without direction_from_deg it comes from the bearing of
+    the wind the task's physics is loaded with (read here from a separately loaded run)."""
+    from sailmujoco import suite
+    from sailmujoco.video import command
+
+    given = []
+    record = command.record
+
+    def spy(*args, **kwargs):
+        given.append(kwargs["waves"])
+        return record(*args, **kwargs)
+
+    monkeypatch.setattr(command, "record", spy)
+    try:
+        code = cli_video(tmp_path, "hs=0.8", "tp=5", "n_components=4", "seed=2")
+    except Exception as err:  # no GL platform here
+        pytest.skip(f"no offscreen rendering: {err}")
+    out = capsys.readouterr().out
+    assert code == 0 and "2 frames" in out and (tmp_path / "sea.mp4").stat().st_size > 0
+    wind = suite.load("wille_yacht", "beam_reach_roll", seed=0).physics.wind.config
+    sea = given[0]
+    assert (sea.spectrum, sea.hs, sea.tp, sea.n_components, sea.seed) == ("jonswap", 0.8, 5, 4, 2)
+    assert sea.direction_from == pytest.approx(wind.direction_from, abs=1e-12)
+    code = cli_video(tmp_path, "hs=0.8", "n_components=4", "spectrum=regular", "direction_from_deg=45")
+    assert code == 0
+    assert given[1].spectrum == "regular" and given[1].direction_from == pytest.approx(math.pi / 4)
+
+
+@pytest.mark.parametrize("pair, message", [
+    ("hs=-1", "--waves hs must be >= 0 m, got -1"),
+    ("tp=0", "--waves tp must be > 0 s"),
+    ("spectrum=jonswp", "did you mean 'jonswap'"),
+    ("gamma=9", "--waves gamma must be in [1, 7]"),
+    ("n_components=0", "--waves n_components must be an integer >= 1"),
+    ("height=2", "unknown sea option 'height' in --waves"),
+])
+def test_cli_bad_sea_is_one_line_and_exit_2(tmp_path, capsys, pair, message):
+    code = cli_video(tmp_path, pair)
+    err = capsys.readouterr().err
+    assert code == 2 and message in err and len(err.strip().splitlines()) == 1, err
+    assert "Traceback" not in err and not (tmp_path / "sea.mp4").exists()
+
+
+def test_cli_paper_world_refuses_a_sea(tmp_path, capsys):
+    from sailmujoco.cli import main
+
+    code = main(["video", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll", "--world",
+                 "paper", "--waves", "hs=1", "--out", str(tmp_path / "x.mp4")])
+    err = capsys.readouterr().err
+    assert code == 2 and "--waves" in err and "--world mujoco" in err and len(err.splitlines()) == 1
+
+
+def test_video_help_shows_the_sea_with_an_example(capsys):
+    from sailmujoco.cli import main
+
+    for command in ("video", "view"):
+        with pytest.raises(SystemExit):
+            main([command, "--help"])
+        out = capsys.readouterr().out
+        assert "--waves KEY=VALUE" in out and "--waves hs=1.5" in out
+
+
+# ----------------------------------------------------------------------------- the waves in a still
+def test_the_sun_stands_low_over_the_bearing_the_waves_come_from(boat):
+    """Waves from the south-west (225 deg) travel north-east: the sun's light goes that way,
+    10 deg or so down, so that a slope facing the waves' origin is lit and its back is not."""
+    waves = WaveConfig(spectrum="regular", hs=1.0, tp=5.0, direction_from=math.radians(225.0))
+    with renderer(boat, waves) as r:
+        light = r.model.light_dir[r.model.light("sun").id]
+        light = light / np.linalg.norm(light)
+    assert light[0] == pytest.approx(light[1]) and light[0] > 0.0  # toward the north-east
+    assert 5.0 < math.degrees(math.asin(-light[2])) < 20.0  # low over the horizon
+
+
+def test_a_still_from_above_shows_the_crests_where_the_elevation_has_them(boat):
+    """A regular wave from the west seen straight down: along the image's rows the brightness
+    repeats at the wavelength g T^2/(2 pi) and follows the slope d eta/dx (the side facing the
+    low western sun is lit); calm water under the same camera is flat."""
+    H, T = 0.6, 3.0
+    wavelength = GRAVITY * T**2 / (2.0 * math.pi)  # 14.05 m
+    waves = WaveConfig(spectrum="regular", hs=H, tp=T, direction_from=1.5 * math.pi)
+    centre, extent, (w, h) = (0.0, 22.0), 14.0, (160, 120)  # inside the exact region, boat not in view
+    kw = dict(camera="top", top_center=centre, top_extent=extent)
+    t = 10.0 * T + 0.7
+    try:
+        with SceneRenderer(boat, w, h, overlay=False, forces=False, waves=waves, **kw) as r:
+            sea = r.render(snap(t, position=(0.0, 0.0, 0.0))).astype(float).mean(axis=2)
+        with SceneRenderer(boat, w, h, overlay=False, forces=False, **kw) as r:
+            calm = r.render(snap(t, position=(0.0, 0.0, 0.0))).astype(float).mean(axis=2)
+    except Exception as err:  # no GL platform here
+        pytest.skip(f"no offscreen rendering: {err}")
+    profile, flat = sea.mean(axis=0), calm.mean(axis=0)
+    assert flat.std() < 0.2 * profile.std()
+    x = centre[0] + (np.arange(w) + 0.5 - 0.5 * w) * (2.0 * extent / h)  # m, each column's east
+    lengths = np.linspace(0.5, 2.0, 301) * wavelength
+    power = [abs(np.sum((profile - profile.mean()) * np.exp(-2j * math.pi * x / L))) for L in lengths]
+    assert lengths[int(np.argmax(power))] == pytest.approx(wavelength, rel=0.05)
+    k, omega = 2.0 * math.pi / wavelength, 2.0 * math.pi / T
+    slope = -0.5 * H * k * np.sin(k * x - omega * t)  # d eta/dx of eta = H/2 cos(k x - omega t)
+    assert np.corrcoef(profile, slope)[0, 1] > 0.7

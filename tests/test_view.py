@@ -176,3 +176,18 @@ def test_episode_seed_and_length_are_options_not_settings(setting, option, capsy
     assert main(["view", "wille_yacht", "heading_hold", "--controller", "pid", "--set", setting]) == 2
     err = capsys.readouterr().err.strip().splitlines()
     assert err == [f"sailmujoco: error: --set {setting.split('=')[0]}=... is the option {option}"]
+
+
+def test_view_takes_the_videos_sea_and_names_a_bad_one_before_the_display(tmp_path, capsys):
+    """--waves as in `sailmujoco video`: a bad value is one line (exit 2) whatever the display;
+    without a display the video command suggested sails in the same sea."""
+    from sailmujoco.cli import main
+
+    assert main(["view", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll",
+                 "--waves", "tp=-6"]) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "--waves tp must be > 0 s" in err[0]
+    out = subprocess.run(VIEW + ["--seconds", "2", "--waves", "hs=1.5", "--waves", "tp=6"], env=_env(),
+                         capture_output=True, text=True, cwd=tmp_path, timeout=120)
+    assert out.returncode == 2 and "cannot open a window" in out.stderr
+    assert "--waves hs=1.5 --waves tp=6" in out.stderr

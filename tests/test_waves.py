@@ -395,3 +395,28 @@ def test_bad_winds_are_refused_in_one_line(kwargs, message):
     with pytest.raises(ValueError, match=None) as err:
         WaveConfig.from_wind(**kwargs)
     assert str(err.value).startswith(message)
+
+
+@pytest.mark.parametrize("sign, name", [(+1.0, "head seas"), (-1.0, "following seas")])
+def test_a_moving_point_sees_the_encounter_frequency(sign, name):
+    """A point moving at U into a regular wave (head seas) sees the elevation oscillate at
+    omega_e = omega + k U, k = omega^2/g; moving with it (following seas), omega - k U. The waves
+    come from the compass bearing 30 deg, so they travel toward 210 deg: the unit vector
+    (east, north) = (sin 210 deg, cos 210 deg). The frequency is measured from the upward zero
+    crossings (interpolated) over about 150 encounter periods after the ramp."""
+    T, U = 5.0, 3.0  # s, m/s
+    omega = 2.0 * math.pi / T
+    k = omega**2 / G
+    expected = omega + sign * k * U
+    waves = WaveConfig(spectrum="regular", hs=1.0, tp=T, direction_from=math.radians(30.0))
+    travel = np.array([math.sin(math.radians(210.0)), math.cos(math.radians(210.0))])
+    t = np.arange(0.0, 150.0 * 2.0 * math.pi / expected, 0.01) + 4.0 * T  # after the 3 T ramp
+    x0, y0 = 12.0, -7.0
+    x = x0 - sign * U * (t - t[0]) * travel[0]
+    y = y0 - sign * U * (t - t[0]) * travel[1]
+    eta = elevation(waves, t, x, y)
+    up = np.nonzero((eta[:-1] < 0.0) & (eta[1:] >= 0.0))[0]
+    crossings = t[up] - eta[up] * (t[up + 1] - t[up]) / (eta[up + 1] - eta[up])
+    measured = 2.0 * math.pi * (crossings.size - 1) / (crossings[-1] - crossings[0])
+    assert measured == pytest.approx(expected, rel=0.01), name
+    assert abs(measured - omega) > 0.3 * omega  # the encounter shifts it well beyond 1 %

@@ -12,7 +12,10 @@ What a frame shows
     On the left, the 3-D scene: the boat as MuJoCo draws it (hull, keel, mast, boom and sail on
     the ``sail`` joint, rudder blade on the ``rudder`` joint), heeling and pitching with the hull,
     on a see-through sea with a wave texture that moves under the camera, deep blue water under
-    it and a sky gradient above (:mod:`~sailmujoco.video.water`). Added to MuJoCo's scene: the
+    it and a sky gradient above (:mod:`~sailmujoco.video.water`); in a sea (``waves``, or the
+    simulation's own; ``--waves KEY=VALUE`` on the command line, :mod:`~sailmujoco.video.sea_option`)
+    the surface around the boat moves with the waves' elevation, lit by a low sun over the
+    waves' bearing (:mod:`~sailmujoco.video.sea`). Added to MuJoCo's scene: the
     true-wind arrow centred just above the masthead (cyan, pointing where the wind blows to,
     0.12 masthead heights per m/s); with ``forces``, the sail, keel and rudder force vectors at
     ``sail_ce``, ``keel_cp`` and ``rudder_cp`` (red, green, orange; 1.3 masthead heights for

@@ -19,13 +19,17 @@ from ..options import World, choices
 from .gl import FIX, RenderingUnavailable
 from .recording import record
 from .scene import CAMERAS
+from .sea_option import add_waves_argument, waves_from_arguments
 
 EXAMPLES = """examples:
   sailmujoco video wille_yacht heading_hold --controller pid --out results/pid.mp4
   sailmujoco video saoud_robot heading_hold --controller pid --option kp=2.0 --seconds 20 \\
       --camera top --set wind_speed=4 --out results/saoud_kp2.mp4 --still results/saoud_kp2.png
   sailmujoco video saoud_robot heading_hold --controller my_law.py:make --option gain=0.5 \\
-      --out results/my_law.mp4"""
+      --out results/my_law.mp4
+  sailmujoco video wille_yacht beam_reach_roll --controller wille_roll --seconds 30 \\
+      --waves hs=1.5 --waves tp=6 --waves n_components=32 --out results/beam_sea.mp4
+      # a 1.5 m JONSWAP sea (the default spectrum), 6 s peak period, from the wind's bearing"""
 
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
@@ -71,6 +75,7 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--set", type=setting, action="append", default=[], metavar="KEY=VALUE",
                         help="task or environment option, e.g. case=3 or hydrostatics=paper "
                              "(repeatable)")
+    add_waves_argument(parser)
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
     parser.set_defaults(func=run_cli)
     return parser
@@ -91,6 +96,7 @@ def run_cli(args) -> int:
     """
     check_settings(args.set, args.task)
     options = controller_options(args)
+    waves = waves_from_arguments(args.waves, args.task, args.world, args.seed, dict(args.set))
     file_argument("--out", args.out, "run.mp4")
     if args.still:
         file_argument("--still", args.still, "last.png")
@@ -101,7 +107,7 @@ def run_cli(args) -> int:
                      camera=args.camera, overlay=not args.no_overlay, forces=not args.no_forces,
                      seed=args.seed, still=args.still, progress=not args.no_progress,
                      follow_distance=args.distance, follow_bearing_deg=args.bearing,
-                     **dict(args.set))
+                     waves=waves, **dict(args.set))
     except RenderingUnavailable as err:
         print(f"sailmujoco video: error: {err}", file=sys.stderr)
         return 1

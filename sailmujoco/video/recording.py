@@ -232,8 +232,10 @@ def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, 
 def _scene_renderer(boat: str, task: str, world: str, name: str, env, options: dict, waves, **kwargs):
     """(whether it is the MuJoCo world, the run's :class:`SceneRenderer`): its boat, target,
     labels and sea (``waves``, else the simulation's); ``kwargs`` its size and camera."""
+    from ..options import wave_config
+
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
-    sea = waves if waves is not None else simulated_sea(env.physics)
+    sea = wave_config(waves) if waves is not None else simulated_sea(env.physics)
     return mujoco_world, SceneRenderer(params, sail_mode=sail_mode, target=target, waves=sea,
                                        labels=f"{boat_label(boat)} · {task} · {name} ({world})", **kwargs)
 
@@ -371,9 +373,9 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
         Progress over frames on stderr: a bar on a terminal, a plain line per tenth elsewhere.
     follow_distance, follow_bearing_deg, follow_elevation_deg, follow_lag, top_center, top_extent
         Camera settings, see :class:`~sailmujoco.video.SceneRenderer`.
-    waves : WaveConfig, optional
-        The sea drawn (:mod:`sailmujoco.video.sea`), given to :func:`sailmujoco.suite.load` too where
-        the physics takes one. None: the simulation's own (:func:`simulated_sea`), or a flat sea.
+    waves : WaveConfig or mapping, optional
+        The sea drawn (:mod:`sailmujoco.video.sea`; a mapping as :func:`~sailmujoco.options.wave_config`
+        reads it), given to :func:`sailmujoco.suite.load` too. None: the simulation's own, or none.
     **options
         Passed to :func:`sailmujoco.suite.load`: environment options (``hydrostatics``,
         ``dofs``, ``control_timestep``, ``boat_options`` ...) and task options (``case=3``...).

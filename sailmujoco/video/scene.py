@@ -167,7 +167,8 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
     sea's wave texture and opacity and the deep water under it (:mod:`sailmujoco.video.water`),
     the sail see-through (:data:`SAIL_ALPHA`: the follow camera sits to windward, and the
     sail's force points to leeward), shadows off, an offscreen buffer of at least ``width`` x ``height``;
-    with a sea, the moving surface in place of the flat one (:mod:`sailmujoco.video.sea`).
+    with a sea, the moving surface in place of the flat one, a low sun over the waves' bearing and
+    a fainter texture (:mod:`sailmujoco.video.sea`).
 
     Parameters
     ----------
@@ -194,7 +195,11 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
     if sea.has_sea(waves):
         sea.add_sea_surface(spec, sea.SeaLayout(waves, params.hull.length))
     model = spec.compile()
-    water.paint_sea(model, params.hull.length)
+    if sea.has_sea(waves):
+        sea.paint_the_sea(model, params.hull.length)
+        sea.light_the_sea(model, waves)
+    else:
+        water.paint_sea(model, params.hull.length)
     model.mat_rgba[model.material("sailcloth").id, 3] = SAIL_ALPHA
     model.vis.quality.shadowsize = 0
     model.vis.global_.offwidth = max(int(model.vis.global_.offwidth), int(width))

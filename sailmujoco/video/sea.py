@@ -5,8 +5,12 @@ flat ``sea_surface`` plane gives way to
 
 * a MuJoCo height field (``sea_waves``: visual only, ``contype = conaffinity = 0``, the group
   and material of the sea) of half-size L around a centre that follows the boat, its heights
-  set each frame from :func:`~sailmujoco.forces.waves.elevation` at its grid points, and
-* four flat planes (``sea_far_*``) framing it: the still sea out to the horizon.
+  set each frame from :func:`~sailmujoco.forces.waves.elevation` at its grid points
+  (:func:`grid_elevation`), and
+* four flat planes (``sea_far_*``) framing it: the still sea out to the horizon;
+* a low sun over the bearing the waves come from, a dimmer headlight, a more opaque surface and
+  a fainter texture (:func:`light_the_sea`, :func:`paint_the_sea`): the slopes, lit on the side
+  facing the waves' origin and dark behind, show the crests and troughs in a still.
 
 The centre moves in whole texture tiles (:data:`~sailmujoco.video.water.TILE_HULLS` hull
 lengths, the nearest tile corner to the boat), so the sea's texture stays fixed to the world
@@ -32,11 +36,17 @@ import math
 import numpy as np
 
 from .. import constants as c
-from ..forces.waves import components, elevation
+from ..forces.waves import components, ramp
 
-HULLS = 3.0  # half-size of the height field: at least this many hull lengths ...
-WAVELENGTHS = 0.75  # ... and this many peak wavelengths (1.5 wavelengths across)
+HULLS = 6.0  # half-size of the height field: at least this many hull lengths ...
+WAVELENGTHS = 1.5  # ... and this many peak wavelengths (3 wavelengths across)
 MAX_SAMPLES = 129  # grid points along each side, at most
+SUN_ELEVATION_DEG = 10.0  # deg, the sun over the horizon where the waves come from ...
+SUN_DIFFUSE = 2.4  # ... and its diffuse intensity: the slopes facing it are lit, their backs not
+HEADLIGHT = (0.25, 0.45)  # the camera's light with a sea: ambient, diffuse (calm water: 0.35, 0.6)
+TEXTURE_GAIN = 1.6  # the sea's texture brighter by this and its material darker by as much
+SEA_ALPHA = 0.8  # opacity of the moving surface (calm water: water.SEA_ALPHA)
+TEXTURE_CONTRAST = 0.35  # the wave texture's contrast on a sea: the drawn waves carry the picture
 FAR = 2000.0  # m, half-size of the still sea around the height field, as the scene's plane
 HFIELD, GEOM = "sea_waves", "sea_waves"
 FAR_GEOMS = ("sea_far_north", "sea_far_south", "sea_far_east", "sea_far_west")
@@ -127,6 +137,83 @@ def add_sea_surface(spec, layout: SeaLayout) -> None:
         spec.worldbody.add_geom(name=name, type=mujoco.mjtGeom.mjGEOM_PLANE, size=[*size, 1.0], **kind)
 
 
+def grid_elevation(config, time: float, xs, ys) -> np.ndarray:
+    """The elevation (m) at ``time`` on the grid of columns ``xs`` by rows ``ys``, (len(ys), len(xs)).
+
+    :func:`~sailmujoco.forces.waves.elevation` at every grid point, summed as a product of
+    matrices: with theta_i = k_i (x cos beta_i + y sin beta_i) - omega_i t + phi_i,
+
+        eta(x_j, y_m) = r(t) Re sum_i [a_i e^(i (phi_i - omega_i t))] e^(i k_i y_m sin beta_i)
+                        e^(i k_i x_j cos beta_i),
+
+    (rows x components) @ (components x columns): n (rows + columns) exponentials instead of
+    n rows x columns cosines, for the same sum.
+
+    Parameters
+    ----------
+    config : WaveConfig
+        The sea state.
+    time : float
+        Time, s.
+    xs, ys : array_like
+        World east of the columns and north of the rows, m.
+    """
+    comp = components(config)
+    xs, ys = np.asarray(xs, float), np.asarray(ys, float)
+    weight = comp.amplitude * np.exp(1j * (comp.phase - comp.omega * time))
+    along_x = np.exp(1j * np.outer(comp.k * np.cos(comp.direction_to), xs))  # components x columns
+    along_y = np.exp(1j * np.outer(ys, comp.k * np.sin(comp.direction_to)))  # rows x components
+    return float(ramp(config, time)) * ((along_y * weight) @ along_x).real
+
+
+def light_the_sea(model, config) -> None:
+    """Light the compiled display model so that the waves' slopes read in a still.
+
+    Diffuse light on a slope s (rad) along the sun's bearing varies as sin(e + s) for a sun
+    at elevation e: relative to the flat water by about s cot(e), 3.7 s at e = 15 deg, and
+    0.5 s for the scene's high sun. So the scene's ``sun`` goes low (:data:`SUN_ELEVATION_DEG`)
+    over the bearing the waves come from, where long-crested waves turn their full slope to
+    it; the camera's headlight, which lights every slope alike, is dimmed (:data:`HEADLIGHT`);
+    the surface is made less see-through (:data:`SEA_ALPHA`), since what shows through it is
+    the flat deep water; and its texture's contrast is cut (:data:`TEXTURE_CONTRAST`).
+    OpenGL clips the lit colour at 1 before the texture multiplies it: the sea's material
+    colour 1/:data:`TEXTURE_GAIN` (and a texture as much brighter, :func:`paint_the_sea`)
+    leaves the sunlit slopes that headroom, so that they stay brighter than the flat water.
+
+    Parameters
+    ----------
+    model : mujoco.MjModel
+        The display model, with its ``sun`` light and ``sea`` material.
+    config : WaveConfig
+        The sea drawn: its ``direction_from`` (compass bearing) places the sun.
+    """
+    from ..frames import yaw_from_heading
+
+    sun = model.light("sun").id
+    towards = yaw_from_heading(config.direction_from + math.pi)  # rad, ENU: where the light goes
+    e = math.radians(SUN_ELEVATION_DEG)
+    model.light_dir[sun] = (math.cos(e) * math.cos(towards), math.cos(e) * math.sin(towards), -math.sin(e))
+    model.light_diffuse[sun] = SUN_DIFFUSE
+    model.vis.headlight.ambient[:] = HEADLIGHT[0]
+    model.vis.headlight.diffuse[:] = HEADLIGHT[1]
+    model.mat_rgba[model.material("sea").id] = (*[1.0 / TEXTURE_GAIN] * 3, SEA_ALPHA)
+
+
+def paint_the_sea(model, hull_length: float) -> None:
+    """The wave texture of a sea: contrast :data:`TEXTURE_CONTRAST`, gain :data:`TEXTURE_GAIN`.
+
+    Parameters
+    ----------
+    model : mujoco.MjModel
+        The display model.
+    hull_length : float
+        m, the scale of the texture (:func:`sailmujoco.video.water.paint_sea`).
+    """
+    from .water import paint_sea
+
+    paint_sea(model, hull_length, contrast=TEXTURE_CONTRAST, gain=TEXTURE_GAIN)
+
+
 class SeaSurface:
     """The moving sea of a compiled display model: heights and placement set per frame.
 
@@ -182,8 +269,7 @@ class SeaSurface:
         m.geom_pos[self.geom_id, :2] = self.centre
         for geom, (x, y) in zip(self._far, layout.far_offsets(), strict=True):
             m.geom_pos[geom] = (cx + x, cy + y, 0.0)
-        x, y = self.grid()
-        eta = self.window * elevation(self.config, time, x, y)
+        eta = self.window * grid_elevation(self.config, time, cx + self.offsets, cy + self.offsets)
         a = layout.amplitude
         m.hfield_data[self._adr:self._adr + layout.n**2] = ((eta + a) / (2.0 * a)).ravel()
 

@@ -74,7 +74,7 @@ def add_deep_water(spec, depth: float) -> None:
                             contype=0, conaffinity=0, group=1)
 
 
-def paint_sea(model, hull_length: float) -> None:
+def paint_sea(model, hull_length: float, contrast: float = 1.0, gain: float = 1.0) -> None:
     """Give the compiled display model's ``sea`` material the wave texture and its opacity.
 
     Parameters
@@ -83,11 +83,19 @@ def paint_sea(model, hull_length: float) -> None:
         The display model (its ``sea`` texture is RGB, square).
     hull_length : float
         m: one texture tile spans :data:`TILE_HULLS` of them.
+    contrast : float
+        The texture's colours drawn towards their mean: 1 as :func:`wave_texture` makes them,
+        0 one flat colour.
+    gain : float
+        The texture's colours multiplied by this (clipped at white).
     """
     texture = model.texture("sea")
     size, channels = int(model.tex_width[texture.id]), int(model.tex_nchannel[texture.id])
     start = int(model.tex_adr[texture.id])
     pixels = wave_texture(size)
+    if contrast != 1.0 or gain != 1.0:
+        mean = pixels.reshape(-1, 3).mean(axis=0)
+        pixels = np.clip(gain * (mean + contrast * (pixels - mean)), 0, 255).astype(np.uint8)
     if channels == 4:
         pixels = np.concatenate([pixels, np.full((size, size, 1), 255, np.uint8)], axis=2)
     model.tex_data[start:start + pixels.size] = pixels.ravel()
