@@ -35,11 +35,10 @@ from .scenario import runs as scenario_runs
 FETCH = {"saoud_robot": 2_000.0, "wille_yacht": 20_000.0}  # m, the open water upwind of each boat
 FETCH_REASON = {
     "saoud_robot": "a 1.5 m robot sails on a lake: 2 km of open water upwind",
-    "wille_yacht": "a cruising yacht sails along a coast: 20 km of open water upwind "
-                   "(a bay or a sound; the open sea beyond it fully developed)",
+    "wille_yacht": "a cruising yacht sails along a coast: 20 km of a bay or a sound upwind",
 }
 SEA_COMPONENTS = 16  # -, components of each sea (full study)
-SMOKE_COMPONENTS = 8  # -, components of each sea (smoke)
+SMOKE_COMPONENTS = 4  # -, components of each sea (smoke)
 SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
 SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail
 SMOKE_HS = (1.0,)  # m, the smoke pass's one sea

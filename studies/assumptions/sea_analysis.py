@@ -26,16 +26,17 @@ from .scenario import HEEL_HOLDS_DEG, PART_NAMES, RUNS_JOB, SPEED_FLOOR, table1_
 DIFFERENCE = 0.10  # -, a sea changes a metric where |sea - calm| > 10 % of max(|calm|, floor)
 EXPLAINS = 0.5  # -, a switch explains a difference when it removes at least half of it
 ANGLE_FLOOR_DEG = 1.0  # deg, the floor of the angles' differences (roll amplitude, drift, pitch)
-# the metrics of a run holding its heading: name -> (what it is, unit, floor)
+# the metrics of a run holding its heading: name -> (what it is, unit, floor); heel and drift
+# angle as magnitudes
 SAILING = {"speed": ("steady speed", "m/s", SPEED_FLOOR),
-           "heel": ("steady |heel|", "deg", HEEL_HOLDS_DEG),
+           "heel": ("steady heel", "deg", HEEL_HOLDS_DEG),
            "roll": ("roll amplitude", "deg", ANGLE_FLOOR_DEG),
-           "drift": ("|drift angle| (leeway)", "deg", ANGLE_FLOOR_DEG),
+           "drift": ("drift angle (leeway)", "deg", ANGLE_FLOOR_DEG),
            "pitch": ("pitch amplitude", "deg", ANGLE_FLOOR_DEG)}
 # the metrics of a Table 1 run (over its last 50 s)
 TABLE1 = {"roll": ("roll amplitude", "deg", ANGLE_FLOOR_DEG),
           "surge": ("mean surge", "m/s", SPEED_FLOOR),
-          "heel": ("|mean heel|", "deg", HEEL_HOLDS_DEG)}
+          "heel": ("mean heel", "deg", HEEL_HOLDS_DEG)}
 SERIES = {"saoud_robot": "saoud_robot, wind plane", "wille_yacht": "wille_yacht, wind plane",
           "table1": "Wille's roll controller, Table 1", "saoud": "Saoud's optimal sail"}
 

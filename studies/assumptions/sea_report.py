@@ -212,7 +212,7 @@ def _plane_section(r, s: SeaAnalysis) -> None:
         f"Each metric over the steady window (the last third of the run): a difference counts where "
         f"|sea − calm| exceeds {100 * DIFFERENCE:g} % of the calm value, or of the floor where the calm "
         "value is smaller (" + ", ".join(f"{label} {floor:g} {unit}" for label, unit, floor in SAILING.values())
-        + "). The roll amplitude is half the peak-to-peak of the heel over the window. The mechanism "
+        + "; heel and drift angle as magnitudes). The roll amplitude is half the peak-to-peak of the heel over the window. The mechanism "
         "column: the switch that removes most of the largest difference (section \"Where each "
         "difference comes from\").")
     r.table(_plane_rows(s))
@@ -225,7 +225,7 @@ def _series_rows(table: pd.DataFrame, metrics: dict, first: list[str]) -> list[d
     rows = []
     for _, row in table.iterrows():
         out = {c: row[c] for c in first}
-        out["Tp [s]"] = row["tp"]
+        out["Hs [m]"], out["Tp [s]"] = row["hs"], row["tp"]
         for metric, (label, unit, _) in metrics.items():
             out[f"{label} [{unit}]"] = f"{row[f'{metric}_calm']:.2f} → {row[f'{metric}_sea']:.2f}"
         stop = row["stopped"].splitlines()[0] if row["stopped"] else ""
@@ -253,14 +253,14 @@ def _series_sections(r, s: SeaAnalysis) -> None:
         f"Table 1's own wind (U10 {TABLE1_WIND:g} m/s) would raise a fully developed sea of Hs {table1_hs:.2f} m. "
         f"Calm: the Table 1 runs of the table above; each value calm → in the sea, over the last "
         f"{TABLE1_WINDOW:g} s."))
-    r.table(_series_rows(t1, TABLE1, ["sim", "hs"]))
+    r.table(_series_rows(t1, TABLE1, ["sim"]))
     sa = s.tables["saoud"]
     r.section("Saoud's optimal sail in a sea", (
         f"The robot with Saoud's optimal sail (controller ``saoud``) holds its heading north, the wind "
         f"from {sea.SAOUD_WIND_FROM_DEG:g}° (a beam reach) at Saoud's {TRUE_WIND:g} m/s at the sail, in the same seas "
         f"from the wind's bearing. Each value calm → in the sea, over the last third of the run. "
         + _stops(sa)))
-    r.table(_series_rows(sa, SAILING, ["hs"]))
+    r.table(_series_rows(sa, SAILING, []))
     r.figure(SEA_FIGURES["series"], "Roll amplitude of Table 1's runs, and the robot's heel, roll and pitch, "
                                     "against the sea's height")
 
@@ -277,7 +277,7 @@ def _mechanisms_section(r, s: SeaAnalysis) -> None:
         row = {"series": m["series"], "case": m["case"], "metric": f"{m['metric']} [{m['unit']}]",
                "calm → sea": f"{m['calm']:.2f} → {m['sea']:.2f}"}
         for name, _ in sea.MECHANISMS:
-            row[f"{name} off: removes"] = f"{100 * m[f'{name}_removed']:.0f} %" \
+            row[f"`env.{name} = {_off(name)}` removes"] = f"{100 * m[f'{name}_removed']:.0f} %" \
                 if np.isfinite(m[f"{name}_removed"]) else "—"
         row["explained by"] = _named(m)
         rows.append(row)
