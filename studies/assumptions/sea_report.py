@@ -96,15 +96,13 @@ def _series_figure(plt, s: SeaAnalysis, out: Path) -> None:
     for sim, group in t1.groupby("sim"):
         calm = float(group["roll_calm"].iloc[0])
         axes[0].plot([0.0, *group["hs"]], [calm, *group["roll_sea"]], "o-", label=sim)
+    _mark_stops(axes[0], t1)
     axes[0].set_title("Wille's roll controller (Table 1): roll amplitude", fontsize=9)
     sa = s.tables["saoud"]
     for metric in ("roll", "heel", "pitch"):
         axes[1].plot([0.0, *sa["hs"]], [float(sa[f"{metric}_calm"].iloc[0]), *sa[f"{metric}_sea"]], "o-",
                      label=SAILING[metric][0])
-    stopped = sa[sa["status"] != "ok"]
-    if len(stopped):
-        axes[1].scatter(stopped["hs"], stopped["roll_sea"], marker="x", s=80, color="red",
-                        label="stopped early", zorder=3)
+    _mark_stops(axes[1], sa)
     axes[1].set_title("Saoud's optimal sail (robot, beam reach)", fontsize=9)
     for ax in axes:
         ax.set_xlabel("significant wave height Hs [m] (0: calm water)")
@@ -112,6 +110,14 @@ def _series_figure(plt, s: SeaAnalysis, out: Path) -> None:
         ax.legend(fontsize=8)
     fig.suptitle("Fully developed seas of height Hs, from the wind's bearing")
     save_figure(fig, out / SEA_FIGURES["series"])
+
+
+def _mark_stops(ax, table: pd.DataFrame) -> None:
+    """A red cross on the roll amplitude of each run in a sea that stopped early."""
+    stopped = table[table["status"] != "ok"]
+    if len(stopped):
+        ax.scatter(stopped["hs"], stopped["roll_sea"], marker="x", s=80, color="red", label="stopped early",
+                   zorder=3)
 
 
 def summary_sentence(s: SeaAnalysis) -> str:
@@ -159,6 +165,8 @@ def _named(row) -> str:
     if not finite:
         return "no rerun finished"
     best = max(finite, key=finite.get)
+    if finite[best] <= 0.0:
+        return "no single switch explains it (none makes it smaller)"
     return (f"no single switch explains it (the most: `env.{best} = {_off(best)}`, "
             f"{100 * finite[best]:.0f} %)")
 
@@ -283,6 +291,12 @@ def _mechanisms_section(r, s: SeaAnalysis) -> None:
         rows.append(row)
     if rows:
         r.table(rows)
+        idle = [name for name, _ in sea.MECHANISMS
+                if (s.mechanisms[f"{name}_off"] == s.mechanisms["sea"]).all()]
+        if idle:
+            r.paragraph("Switched off, " + ", ".join(f"`env.{n} = {_off(n)}`" for n in idle)
+                        + " leave" + ("s" if len(idle) == 1 else "") + " every metric of these reruns "
+                        "as it is with the switch on, to the bit.")
     else:
         r.paragraph(f"No metric differs by more than {100 * DIFFERENCE:g} %.")
 
