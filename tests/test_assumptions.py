@@ -3,6 +3,7 @@
 import math
 
 import numpy as np
+import pandas as pd
 import pytest
 from conftest import CALM, load
 from test_reports import layout_problems
@@ -166,3 +167,116 @@ def test_study_smoke(tmp_path):
     report = (tmp_path / "report.md").read_text()
     assert layout_problems(report) == []  # title, summary, main table
     assert report.count("\n| ") >= 10 and (tmp_path / "wind_plane.png").stat().st_size > 30_000
+    # the sea: its sections, each with a table, its CSVs, its figures
+    from sailmujoco.studies.assumptions.sea_analysis import SAILING, TABLE1
+
+    sections = ["The sea against calm water: the wind plane", "Wille's roll controller in a sea (Table 1)",
+                "Saoud's optimal sail in a sea", "Where each difference comes from"]
+    at = [report.index(f"\n## {s}\n") for s in sections]
+    assert at == sorted(at) and at[0] > report.index("\n## Wille's eq. 4 as printed\n")
+    for start, end in zip(at, [*at[1:], len(report)], strict=True):
+        assert "\n| " in report[start:end]
+    for name in ("sea_wind_plane.png", "sea_heights.png"):
+        assert (tmp_path / name).stat().st_size > 20_000
+    plane = pd.read_csv(tmp_path / "sea_wind_plane.csv")
+    assert sorted(plane["boat"]) == ["saoud_robot", "wille_yacht"]  # one point each
+    table1, saoud = pd.read_csv(tmp_path / "sea_table1.csv"), pd.read_csv(tmp_path / "sea_saoud.csv")
+    assert len(table1) == 1 and len(saoud) == 1
+    for table, metrics in ((plane, SAILING), (table1, TABLE1), (saoud, SAILING)):
+        for metric in metrics:
+            assert np.isfinite(table[f"{metric}_calm"]).all() and np.isfinite(table[f"{metric}_sea"]).all()
+    # the calm runs of the wind plane in a sea are the study's own as-built runs, to the bit
+    base = pd.read_csv(tmp_path / "wind_plane.csv")
+    base = base[base["config"] == "baseline"]
+    for _, row in plane.iterrows():
+        same = base[(base["boat"] == row["boat"]) & (base["tws"] == row["tws"]) & (base["twa"] == row["twa"])]
+        assert same["steady_speed"].iloc[0] == row["speed_calm"]
+    # a sea of 0.2-0.7 m rolls both boats more than calm water
+    assert (plane["roll_sea"] > plane["roll_calm"]).all()
+    # smoke: the one largest difference is rerun with each mechanism off
+    mechanisms = pd.read_csv(tmp_path / "sea_mechanisms.csv")
+    assert len(mechanisms) == 1 and abs(mechanisms["rel"].iloc[0]) > 0.1
+    assert headline["sea_mechanism_rows"] == 1
+
+
+def test_wind_plane_seas_are_the_fetch_limited_seas_of_each_points_wind():
+    """Every point of the wind plane in a sea: Hs and Tp of the JONSWAP growth laws for the
+    boat's fetch (Shore Protection Manual 1984 eqs. 3-33, 3-34: chi = g F/U^2,
+    g Hs/U^2 = 1.6e-3 chi^(1/2), g Tp/U = 0.2857 chi^(1/3)), each capped at the fully developed
+    Pierson-Moskowitz sea (Hs = 0.21 U19.5^2/g, Tp = 2 pi U19.5/(0.877 g), U19.5 = 1.026 U10),
+    the waves from the wind's bearing; computed here from the formulas."""
+    from sailmujoco.studies.assumptions import sea
+
+    g = 9.81
+    specs = sea.plane_sea_specs(smoke=False)
+    for boat, fetch in sea.FETCH.items():
+        z = specs[(boat, "sea")]["zip"]
+        assert len(z["waves.hs"]) == 30  # the whole wind plane, 5 speeds x 6 angles
+        points = zip(z["task.wind_speed"], z["task.wind_from_deg"], z["waves.hs"], z["waves.tp"],
+                     z["waves.direction_from_deg"], strict=True)
+        for u, wind_from, hs, tp, wave_from in points:
+            chi = g * fetch / u**2
+            u195 = 1.026 * u
+            assert hs == pytest.approx(min(1.6e-3 * chi**0.5 * u**2 / g, 0.21 * u195**2 / g), rel=1e-12)
+            assert tp == pytest.approx(min(0.2857 * chi ** (1 / 3) * u / g, 2 * math.pi * u195 / (0.877 * g)),
+                                       rel=1e-12)
+            assert wave_from == wind_from
+        assert specs[(boat, "sea")]["options"]["waves.spectrum"] == "jonswap"
+        calm = specs[(boat, "calm")]
+        assert not any(key.startswith("waves.") for key in {**calm["options"], **calm["zip"]})
+    # the lake's 2 km fetch limits the robot's sea: at 14 m/s far below full development (4.4 m)
+    robot = specs[("saoud_robot", "sea")]["zip"]
+    assert max(robot["waves.hs"]) == pytest.approx(1.6e-3 * (g * 2000.0 / 14.0**2) ** 0.5 * 14.0**2 / g)
+    assert max(robot["waves.hs"]) < 0.4
+
+
+def test_fully_developed_seas_of_a_height():
+    """A Pierson-Moskowitz sea of height Hs: the wind U19.5 = sqrt(g Hs/0.21) raises it, its peak
+    period 2 pi U19.5/(0.877 g), about 5.0 sqrt(Hs) s (Stewart 2008 eqs. 16.30, 16.33)."""
+    from sailmujoco.studies.assumptions import sea
+
+    for hs in sea.SEA_HS:
+        got_hs, tp = sea.developed_sea(hs)
+        assert got_hs == hs
+        assert tp == pytest.approx(2 * math.pi * math.sqrt(9.81 * hs / 0.21) / (0.877 * 9.81), rel=1e-12)
+        assert tp == pytest.approx(5.0 * math.sqrt(hs), rel=0.01)
+    jobs = sea.table1_sea_jobs(smoke=False)
+    wanted = [(s, h) for s in ("sim1", "sim2", "sim3") for h in sea.SEA_HS]
+    assert [(j["sim"], j["hs"]) for j in jobs] == wanted
+    # Table 1's beam reach: wind from the west, heading north; the waves from the wind
+    assert all(j["run"]["env"]["waves"]["direction_from_deg"] == 270.0 for j in jobs)
+    assert all(j["run"]["env"]["resistance"] == "dsyhs" for j in jobs)  # the boat as built
+
+
+def test_differences_are_relative_to_calm_or_to_the_floor():
+    from sailmujoco.studies.assumptions.sea_analysis import TABLE1, compare
+
+    calm = [{"status": "ok", "stopped": "", "roll": 0.2, "surge": 4.0, "heel": 10.0}]
+    sea_ = [{"status": "stopped", "stopped": "capsized", "roll": 0.5, "surge": 3.0, "heel": 10.5}]
+    row = compare([{"case": "a"}], calm, sea_, TABLE1).iloc[0]
+    assert row["roll_rel"] == pytest.approx(0.3 / 1.0)  # calm 0.2 deg below the 1 deg floor
+    assert row["surge_rel"] == pytest.approx(-0.25) and row["heel_rel"] == pytest.approx(0.05)
+    assert row["status"] == "stopped" and row["stopped"] == "capsized"
+
+
+def test_attribution_names_the_switch_that_removes_the_difference():
+    """A synthetic series: the largest difference beyond 10 % is picked, and the mechanism whose
+    switch brings it back to calm is named; none where no switch removes half of it."""
+    from sailmujoco.studies.assumptions.sea_analysis import attribute, largest_cases
+
+    table = pd.DataFrame({"case": ["a", "b", "c"], "roll_rel": [0.05, 2.0, -0.5],
+                          "speed_rel": [0.01, -0.02, 0.09], "heel_rel": [0.0, 0.0, 0.0],
+                          "drift_rel": [0.0, 0.0, 0.0], "pitch_rel": [0.0, 0.0, 0.0]})
+    assert largest_cases({"saoud": table}, smoke=False) == [("saoud", "roll", 1)]
+    calm, sea_value = 1.0, 3.0  # the roll amplitude, deg
+    named, removed = attribute(calm, sea_value, {"wave_foil_flow": 2.9, "wave_diffraction": 3.1,
+                                                 "wave_damping": 3.0, "wave_pressure_decay": 1.2})
+    assert named == "wave_pressure_decay" and removed["wave_pressure_decay"] == pytest.approx(0.9)
+    assert removed["wave_foil_flow"] == pytest.approx(0.05) and removed["wave_damping"] == 0.0
+    assert removed["wave_diffraction"] == pytest.approx(-0.05)  # switching it off makes it larger
+    # two switches each remove a third: no single one explains the difference
+    named, removed = attribute(calm, sea_value, {"a": 3.0 - 2 / 3, "b": 3.0 - 2 / 3, "c": float("nan")})
+    assert named is None and removed["a"] == pytest.approx(1 / 3)
+    # a falling metric (speed lost in the sea) the same way
+    named, _ = attribute(2.0, 1.0, {"wave_foil_flow": 1.95, "wave_damping": 1.1})
+    assert named == "wave_foil_flow"

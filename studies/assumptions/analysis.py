@@ -17,6 +17,7 @@ from sailmujoco.study import Results
 from ..kit import verdict
 from .episodes import time_constants
 from .scenario import BOATS, BUILT, CONFIGS, PART_NAMES, RUNS_JOB, SPEED_FLOOR, plane_specs, table1_jobs
+from .sea_analysis import SeaAnalysis, analyse_sea
 
 SAILING_SPEED = 0.3  # m/s: the robot "sails" (has a steady apparent wind) above this steady speed
 
@@ -43,6 +44,8 @@ class Analysis:
         ``(resistance, sim) ->`` the numbers of a Wille Table 1 run.
     restoring : dict
         Boat -> the heel reached and the largest errors of eq. 20 and eq. 66.
+    sea : studies.assumptions.sea_analysis.SeaAnalysis or None
+        What a sea does to the boats (None: not analysed).
     """
 
     data: pd.DataFrame
@@ -53,6 +56,7 @@ class Analysis:
     drift: dict
     table1: dict
     restoring: dict
+    sea: SeaAnalysis | None = None
 
 
 def plane_table(specs: dict, tables: list) -> pd.DataFrame:
@@ -180,7 +184,8 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     restoring = restoring_errors(data)
     effects = {(b, c): speed_effects(data, b, c) for b in BOATS for c in CONFIGS
                if c != "baseline" and (data[(data["boat"] == b) & (data["config"] == c)]).size}
-    return Analysis(data, effects, tc, parts["course"], parts["steady"], parts["drift"], table1, restoring)
+    return Analysis(data, effects, tc, parts["course"], parts["steady"], parts["drift"], table1, restoring,
+                    analyse_sea(results, smoke))
 
 
 def effect(analysis: Analysis, boat: str, config: str) -> list:

@@ -1,5 +1,5 @@
-"""Assumption validation, the report: the table of assumptions, the figures, the time constants
-and the cross-check's finding on Wille's eq. 4, as report.md.
+"""Assumption validation, the report: the table of assumptions, the figures, the time constants,
+the cross-check's finding on Wille's eq. 4 and what a sea does to the boats, as report.md.
 """
 
 from __future__ import annotations
@@ -8,6 +8,7 @@ from ..kit import Report
 from .analysis import Analysis
 from .figures import FIGURES
 from .scenario import ABOUT, TITLE
+from .sea_report import sections, summary_sentence
 from .table import COLUMNS, rows
 
 
@@ -23,7 +24,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     """
     table = rows(analysis)
     r = Report(TITLE)
-    r.summary(_summary(table))
+    r.summary(_summary(table) + " " + summary_sentence(analysis.sea))
     r.table(table, COLUMNS)
     r.section("Scenarios", ABOUT)
     r.section("Figures and time constants")
@@ -39,6 +40,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
         "heeled sail's drive, acting high up, turns a boat whose pitch is held to windward; with a "
         "fixed rudder the printed model's heading drifts 33° from the rigid boat's in 60 s of 6 m/s "
         "wind, while the rigid form agrees within 1°.")
+    sections(r, analysis.sea)
     return r.text()
 
 

@@ -1,0 +1,269 @@
+"""Assumption validation, the sea's scenario: what a sea does to the boats, the runs as data.
+
+The papers sail in calm water. Three series measure what a sea changes, each against the same
+run in calm water:
+
+* the wind plane (:func:`plane_sea_specs`): each boat at every point of the study's wind
+  plane, in the fetch-limited JONSWAP sea that point's wind raises
+  (:meth:`sailmujoco.forces.waves.WaveConfig.from_wind`) over the boat's fetch (``FETCH``),
+  the waves from the wind's bearing; the calm runs are the same specs without the sea;
+* Wille's roll controller (:func:`table1_sea_jobs`): Table 1's three simulations in
+  fully developed Pierson-Moskowitz seas of the heights ``SEA_HS`` (:func:`developed_sea`),
+  from the wind's bearing; the calm runs are the study's own Table 1 runs;
+* Saoud's optimal sail (:func:`saoud_sea_specs`): the robot holding its heading on a beam reach
+  in Saoud's wind, in the same seas.
+
+A run that stops early (a capsize) is kept with its reason. What each difference comes from is
+measured by a second pass (:func:`mechanism_spec`, :func:`mechanism_jobs`): the case rerun with
+each of the sea's mechanisms (``MECHANISMS``) switched off in turn.
+"""
+
+from __future__ import annotations
+
+import math
+
+from sailmujoco import constants
+from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK
+from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.study import Runs
+from sailmujoco.suite import TASKS
+
+from ..kit.saoud import wind_speed_10
+from .scenario import BOATS, plane_specs, table1_jobs
+from .scenario import runs as scenario_runs
+
+FETCH = {"saoud_robot": 2_000.0, "wille_yacht": 20_000.0}  # m, the open water upwind of each boat
+FETCH_REASON = {
+    "saoud_robot": "a 1.5 m robot sails on a lake: 2 km of open water upwind",
+    "wille_yacht": "a cruising yacht sails along a coast: 20 km of a bay or a sound upwind",
+}
+SEA_COMPONENTS = 16  # -, components of each sea (full study)
+SMOKE_COMPONENTS = 4  # -, components of each sea (smoke)
+SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
+SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail
+SMOKE_HS = (1.0,)  # m, the smoke pass's one sea
+SMOKE_POINT = (10.0, 60.0)  # (m/s, deg): the one wind-plane point in a sea of the smoke pass
+TRAJECTORY_RATE = 10.0  # Hz: the heel is stored at this rate (the roll amplitude)
+SAOUD_WIND_FROM_DEG = 90.0  # deg, compass: a beam reach, the heading held north
+SAOUD_DURATION = 90.0  # s (smoke: 25 s): longer than the plane's 50 s, a 2 m sea ramps up over 21 s
+SMOKE_DURATION = 25.0  # s
+TABLE1_SEA_SIMS = ("sim1", "sim2", "sim3")
+SMOKE_TABLE1_SIMS = ("sim3",)
+# The sea's mechanisms, each switched off in turn: (physics option, value that switches it off)
+MECHANISMS = (("wave_foil_flow", False), ("wave_diffraction", False), ("wave_damping", "absolute"),
+              ("wave_pressure_decay", False))
+MECHANISM_ON = {"wave_foil_flow": True, "wave_diffraction": True, "wave_damping": "relative",
+                "wave_pressure_decay": True}  # the sea as built (PhysicsOptions' defaults)
+SEA_JOB = "assumptions_sea"  # the job list of Table 1's runs in a sea
+MECHANISM_JOB = "assumptions_sea_mechanisms"  # ... and of their reruns, a mechanism off
+
+
+def developed_sea(hs: float) -> tuple[float, float]:
+    """(Hs m, Tp s) of the fully developed Pierson-Moskowitz sea of height ``hs``.
+
+    The wind that raises it: U19.5 = sqrt(g Hs/0.21) (Stewart 2008 eq. 16.33); its peak period
+    Tp = 2 pi U19.5/(0.877 g) (eq. 16.30), so Tp = 4.99 sqrt(Hs) s.
+
+    Parameters
+    ----------
+    hs : float
+        Significant wave height, m, > 0.
+    """
+    u19_5 = math.sqrt(constants.GRAVITY * hs / PM_HS)
+    return hs, 2.0 * math.pi * u19_5 / (PM_PEAK * constants.GRAVITY)
+
+
+def wind_sea(boat: str, u10: float, n_components: int) -> WaveConfig:
+    """The fetch-limited sea a 10 m wind ``u10`` raises over ``boat``'s fetch.
+
+    Parameters
+    ----------
+    boat : str
+        A boat of ``FETCH``.
+    u10 : float
+        Mean wind speed at 10 m, m/s.
+    n_components : int
+        Components of the sea.
+    """
+    return WaveConfig.from_wind(u10, "fetch_limited", FETCH[boat], n_components=n_components,
+                                seed=SEA_SEED)
+
+
+def _components(smoke: bool) -> int:
+    return SMOKE_COMPONENTS if smoke else SEA_COMPONENTS
+
+
+def _with_trajectory(spec: dict, name: str) -> dict:
+    return {**spec, "name": name, "trajectory_rate": TRAJECTORY_RATE,
+            "options": dict(spec["options"]), "zip": dict(spec["zip"])}
+
+
+def plane_sea_specs(smoke: bool) -> dict:
+    """The wind plane in calm water and in the sea each point's wind raises:
+    ``{(boat, "calm" | "sea"): spec}``, the heel stored as a trajectory.
+
+    Each boat's as-built spec (:func:`.scenario.plane_specs`) with, in a sea, the zip's
+    ``waves.hs``, ``waves.tp`` and ``waves.direction_from_deg`` (the wind's bearing) of
+    :func:`wind_sea` at each point. Smoke: the point ``SMOKE_POINT`` only.
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass.
+    """
+    specs = {}
+    for boat in BOATS:
+        base = plane_specs(smoke)[(boat, "baseline")]
+        calm = _with_trajectory(base, f"{boat}-calm")
+        if smoke:
+            calm["zip"] = {"task.wind_speed": [SMOKE_POINT[0]], "task.wind_from_deg": [SMOKE_POINT[1]]}
+        seas = [wind_sea(boat, u10, _components(smoke)) for u10 in calm["zip"]["task.wind_speed"]]
+        sea = _with_trajectory(calm, f"{boat}-sea")
+        sea["options"].update({"waves.spectrum": "jonswap", "waves.n_components": _components(smoke),
+                               "waves.seed": SEA_SEED})
+        sea["zip"].update({"waves.hs": [w.hs for w in seas], "waves.tp": [w.tp for w in seas],
+                           "waves.direction_from_deg": list(calm["zip"]["task.wind_from_deg"])})
+        specs[(boat, "calm")], specs[(boat, "sea")] = calm, sea
+    return specs
+
+
+def saoud_sea_specs(smoke: bool) -> dict:
+    """Saoud's optimal sail (controller ``saoud``) on the robot, heading held north, beam reach
+    in Saoud's wind (4 m/s at the sail, :func:`studies.kit.saoud.wind_speed_10`), in calm water
+    and in the seas ``SEA_HS``: ``{"calm" | "sea": spec}``.
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass (one sea, 25 s).
+    """
+    duration = SMOKE_DURATION if smoke else SAOUD_DURATION
+    heights = SMOKE_HS if smoke else SEA_HS
+    calm = {"name": "saoud-calm", "boat": "saoud_robot", "task": "heading_hold", "world": "mujoco",
+            "controller": "saoud", "duration": duration, "trajectory_rate": TRAJECTORY_RATE,
+            "options": {"task.gusts": False, "task.wander": False, "task.diagnostics": True,
+                        "task.heading_jitter_deg": 0.0, "task.steady_window": duration / 3,
+                        "task.wind_speed": wind_speed_10(), "task.wind_from_deg": SAOUD_WIND_FROM_DEG},
+            "zip": {}}
+    seas = [developed_sea(hs) for hs in heights]
+    sea = {**calm, "name": "saoud-sea",
+           "options": {**calm["options"], "waves.spectrum": "pm", "waves.n_components": _components(smoke),
+                       "waves.seed": SEA_SEED, "waves.direction_from_deg": SAOUD_WIND_FROM_DEG},
+           "zip": {"waves.hs": [hs for hs, _ in seas], "waves.tp": [tp for _, tp in seas]}}
+    return {"calm": calm, "sea": sea}
+
+
+def table1_wind_from_deg() -> float:
+    """The compass bearing Table 1's wind comes from (the ``beam_reach_roll`` task's), deg."""
+    return math.degrees(TASKS["beam_reach_roll"](seed=0).wind().direction_from) % 360.0
+
+
+def table1_sea_jobs(smoke: bool) -> list[dict]:
+    """Table 1's simulations (as built, :func:`.scenario.table1_jobs`) in the seas ``SEA_HS``
+    from the wind's bearing: the jobs of :func:`studies.kit.wille.table1_simulate`, each with
+    its ``hs``.
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass (sim 3, one sea).
+    """
+    jobs = table1_jobs(smoke)
+    out = []
+    for sim in (SMOKE_TABLE1_SIMS if smoke else TABLE1_SEA_SIMS):
+        for hs in (SMOKE_HS if smoke else SEA_HS):
+            _, tp = developed_sea(hs)
+            waves = {"spectrum": "pm", "hs": hs, "tp": tp, "direction_from_deg": table1_wind_from_deg(),
+                     "n_components": _components(smoke), "seed": SEA_SEED}
+            run = jobs[("dsyhs", sim)]
+            out.append({"run": {**run, "env": {**run["env"], "waves": waves}}, "hs": hs, "sim": sim})
+    return out
+
+
+def table1_sea_run(job: dict) -> dict:
+    """One Table 1 run in a sea (a job of the sweep engine): its numbers
+    (:func:`studies.kit.wille.table1_numbers`), how long it sailed and why it stopped early.
+
+    Parameters
+    ----------
+    job : dict
+        An item of :func:`table1_sea_jobs` or :func:`mechanism_jobs` (``run``: the job of
+        :func:`studies.kit.wille.table1_simulate`).
+    """
+    from ..kit.wille import table1_numbers, table1_simulate
+
+    result = table1_simulate(job["run"])
+    stopped = result["metrics"].get("stopped")
+    return {**table1_numbers(result), "sailed": float(result["trajectory"]["t"].iloc[-1]),
+            "stopped": str(stopped) if stopped else ""}
+
+
+def switched(mechanism: str) -> dict:
+    """The sea's mechanism switches with ``mechanism`` off and the others on.
+
+    Parameters
+    ----------
+    mechanism : str
+        A physics option of ``MECHANISMS``.
+    """
+    return {**MECHANISM_ON, mechanism: dict(MECHANISMS)[mechanism]}
+
+
+def mechanism_spec(spec: dict, cases: list[int]) -> dict:
+    """A sea sweep's runs ``cases`` (indices into its zip) again, each with every mechanism of
+    ``MECHANISMS`` off in turn (``env.`` keys): the runs in the order case by case, mechanism
+    by mechanism.
+
+    Parameters
+    ----------
+    spec : dict
+        A sea spec (:func:`plane_sea_specs`, :func:`saoud_sea_specs`).
+    cases : list of int
+        Its runs to repeat, by their index in the zip.
+    """
+    zipped = {key: [] for key in spec["zip"]}
+    zipped.update({f"env.{name}": [] for name in MECHANISM_ON})
+    for case in cases:
+        for name, _ in MECHANISMS:
+            for key, values in spec["zip"].items():
+                zipped[key].append(values[case])
+            for key, value in switched(name).items():
+                zipped[f"env.{key}"].append(value)
+    return {**spec, "name": f"{spec['name']}-mechanisms", "zip": zipped}
+
+
+def mechanism_jobs(jobs: list[dict], cases: list[int]) -> list[dict]:
+    """Table 1 runs in a sea (:func:`table1_sea_jobs`) ``cases`` again, each mechanism off in
+    turn, in the order case by case, mechanism by mechanism.
+
+    Parameters
+    ----------
+    jobs : list of dict
+        The Table 1 sea jobs.
+    cases : list of int
+        Their indices to repeat.
+    """
+    out = []
+    for case in cases:
+        job = jobs[case]
+        for name, _ in MECHANISMS:
+            run = {**job["run"], "env": {**job["run"]["env"], **switched(name)}}
+            out.append({**job, "run": run, "mechanism": name})
+    return out
+
+
+def runs(smoke: bool) -> Runs:
+    """The study's first pass: its runs (:func:`.scenario.runs`) and the sea's, the wind plane
+    in calm water and in a sea (:func:`plane_sea_specs`), Saoud's optimal sail
+    (:func:`saoud_sea_specs`) and Table 1 in the seas (:func:`table1_sea_jobs`).
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass.
+    """
+    base = scenario_runs(smoke)
+    specs = [*plane_sea_specs(smoke).values(), *saoud_sea_specs(smoke).values()]
+    return Runs(sweeps=base.sweeps + tuple((spec, f"sweeps/{spec['name']}") for spec in specs),
+                jobs={**base.jobs, SEA_JOB: (f"{__package__}.sea:table1_sea_run", table1_sea_jobs(smoke))},
+                label=base.label)
