@@ -46,6 +46,7 @@ import math
 
 from .._jit import kernel
 from .hydrostatics import buoyancy_wrench
+from .lane_math import sincos
 from .wave_pressure import wet_interval
 
 ORDERS = 4  # e^x ~ 1 + x + x^2/2 + x^3/6
@@ -56,37 +57,36 @@ _GAUSS_W = (0.5555555555555556, 0.8888888888888888, 0.5555555555555556)
 _AX, _AY, _AZ = 0, ORDERS, 2 * ORDERS
 _A, _AW, _AA, _ER, _EI, _SR, _SI, _ROWS = (3 * ORDERS + i for i in range(8))
 SCRATCH_ROWS = _ROWS  # scratch rows of the sea array, plus two per grid row
-SMALL_SIZE = 5 * ORDERS + 30  # scratch floats
+SMALL_SIZE = 3 * ORDERS + 6  # scratch floats: the sums, the diffraction's wrench
 
 
 @kernel(inline=True)
 def _setup(sea, dx, dy, nx, ny, decay, sc):
-    """Fill the scratch rows: the sums' coefficients and the phasors at the first station and
-    rows (three sines and cosines per component)."""
+    """Fill the scratch rows: the sums' coefficients and the phasors at the first station, of
+    one x step and at each row (polynomial sines and cosines, :mod:`.lane_math`)."""
+    x0, y0 = -0.5 * (nx - 1) * dx, -0.5 * (ny - 1) * dy  # the first station and row, body x, y
+    on = 1.0 if decay else 0.0  # the orders n >= 1 (all of the vertical force) with the decay
     for j in range(sea.shape[1]):
-        a, omega, k = sea[6, j], sea[1, j], sea[2, j]
-        cb, sb = sea[3, j], sea[4, j]
+        a, k = sea[6, j], sea[2, j]
         kp = a * k
-        for n in range(ORDERS):
-            on = 1.0 if (decay or n == 0) else 0.0
-            sc[_AX + n, j] = on * kp * cb
-            sc[_AY + n, j] = on * kp * sb
-            sc[_AZ + n, j] = kp if decay else 0.0
+        sc[_AX, j] = kp * sea[3, j]
+        sc[_AY, j] = kp * sea[4, j]
+        sc[_AZ, j] = on * kp
+        for n in range(1, ORDERS):
             kp *= k
+            sc[_AX + n, j] = on * kp * sea[3, j]
+            sc[_AY + n, j] = on * kp * sea[4, j]
+            sc[_AZ + n, j] = on * kp
         sc[_A, j] = a
-        sc[_AW, j] = a * omega
-        sc[_AA, j] = a * omega * omega
-        theta = sea[7, j] - 0.5 * (nx - 1) * dx * sea[8, j]  # first station, centre line
-        sc[_ER, j], sc[_EI, j] = math.cos(theta), math.sin(theta)
-        sc[_SR, j], sc[_SI, j] = math.cos(sea[8, j] * dx), math.sin(sea[8, j] * dx)
-        hr, hi = math.cos(0.5 * sea[9, j] * dy), math.sin(0.5 * sea[9, j] * dy)
-        yr, yi = 1.0, 0.0  # conj(h)^(ny - 1): the first row's phasor, e^(i kappa_y y_0)
-        for _ in range(ny - 1):
-            yr, yi = yr * hr + yi * hi, yi * hr - yr * hi
-        sr, si = hr * hr - hi * hi, 2.0 * hr * hi  # h^2: one row's step
-        for p in range(ny):
-            sc[_ROWS + 2 * p, j], sc[_ROWS + 2 * p + 1, j] = yr, yi
-            yr, yi = yr * sr - yi * si, yr * si + yi * sr
+        sc[_AW, j] = a * sea[1, j]
+        sc[_AA, j] = a * sea[1, j] * sea[1, j]
+    for j in range(sea.shape[1]):
+        sc[_ER, j], sc[_EI, j] = sincos(sea[7, j] + x0 * sea[8, j])  # first station, centre line
+        sc[_SR, j], sc[_SI, j] = sincos(sea[8, j] * dx)
+    for p in range(ny):
+        y = y0 + p * dy
+        for j in range(sea.shape[1]):
+            sc[_ROWS + 2 * p, j], sc[_ROWS + 2 * p + 1, j] = sincos(sea[9, j] * y)
 
 
 @kernel(reassociate=True)
@@ -125,52 +125,38 @@ def _cell_sums(sc, kappa_y, p, offset, sums):
 
 
 @kernel(inline=True)
-def _column_dynamic(sums, h_stretched, r22, lo, hi, rga, moments, force):
-    """The dynamic force on one column's wet part (world) and its sum of axial centroid times
-    force (for the moment) into ``force`` (6,).
+def _column_dynamic(sums, h_stretched, r22, lo, hi, rga):
+    """The dynamic force on one column's wet part (world), and its sum of axial centroid times
+    force (for the moment): (fx, fy, fz, gx, gy, gz).
 
     J_n / n! = integral of z_s^n / n! and Z_n / n! = integral of zeta z_s^n / n! along the wet
-    axis (``moments`` receives them, rows J then Z) by 3-point Gauss, exact for the
-    polynomials of degree <= 4 they integrate; then each force is sum_n J_n / n! times its
-    sum over components (:func:`_cell_sums`).
+    axis by 3-point Gauss, exact for the polynomials of degree <= 4 they integrate; then each
+    force is sum_n J_n / n! times its sum over components (:func:`_cell_sums`, ORDERS = 4).
     """
     half, mid = 0.5 * (hi - lo), 0.5 * (hi + lo)
-    for n in range(2 * ORDERS):
-        moments[n] = 0.0
+    j0 = j1 = j2 = j3 = z0 = z1 = z2 = z3 = 0.0
     for g in range(3):
         zeta = mid + half * _GAUSS_X[g]
         z_s = h_stretched + r22 * zeta
-        term = half * _GAUSS_W[g] * rga  # w z_s^n / n!
-        for n in range(ORDERS):
-            moments[n] += term
-            moments[ORDERS + n] += term * zeta
-            term *= z_s / (n + 1)
-    fx = fy = fz = gx = gy = gz = 0.0
-    for n in range(ORDERS):
-        j_n, z_n = moments[n], moments[ORDERS + n]
-        fx += j_n * sums[n]
-        fy += j_n * sums[ORDERS + n]
-        fz -= j_n * sums[2 * ORDERS + n]
-        gx += z_n * sums[n]
-        gy += z_n * sums[ORDERS + n]
-        gz -= z_n * sums[2 * ORDERS + n]
-    force[0], force[1], force[2], force[3], force[4], force[5] = fx, fy, fz, gx, gy, gz
-
-
-@kernel(inline=True)
-def _add_moment(dyn, rot, x, y, f):
-    """Add the column's world force f[0:3] and its moment about CO to ``dyn``: the lever R (x, y, 0)
-    to the axis, R e_z along it times the axial moments f[3:6]."""
-    rx = rot[0, 0] * x + rot[0, 1] * y
-    ry = rot[1, 0] * x + rot[1, 1] * y
-    rz = rot[2, 0] * x + rot[2, 1] * y
-    ax, ay, az = rot[0, 2], rot[1, 2], rot[2, 2]
-    dyn[0] += f[0]
-    dyn[1] += f[1]
-    dyn[2] += f[2]
-    dyn[3] += ry * f[2] - rz * f[1] + ay * f[5] - az * f[4]
-    dyn[4] += rz * f[0] - rx * f[2] + az * f[3] - ax * f[5]
-    dyn[5] += rx * f[1] - ry * f[0] + ax * f[4] - ay * f[3]
+        t0 = half * _GAUSS_W[g] * rga  # w z_s^n / n!
+        t1 = t0 * z_s
+        t2 = t1 * (z_s / 2.0)
+        t3 = t2 * (z_s / 3.0)
+        j0 += t0
+        j1 += t1
+        j2 += t2
+        j3 += t3
+        z0 += t0 * zeta
+        z1 += t1 * zeta
+        z2 += t2 * zeta
+        z3 += t3 * zeta
+    fx = j0 * sums[0] + j1 * sums[1] + j2 * sums[2] + j3 * sums[3]
+    fy = j0 * sums[4] + j1 * sums[5] + j2 * sums[6] + j3 * sums[7]
+    fz = -(j0 * sums[8] + j1 * sums[9] + j2 * sums[10] + j3 * sums[11])
+    gx = z0 * sums[0] + z1 * sums[1] + z2 * sums[2] + z3 * sums[3]
+    gy = z0 * sums[4] + z1 * sums[5] + z2 * sums[6] + z3 * sums[7]
+    gz = -(z0 * sums[8] + z1 * sums[9] + z2 * sums[10] + z3 * sums[11])
+    return fx, fy, fz, gx, gy, gz
 
 
 @kernel(reassociate=True)
@@ -204,29 +190,72 @@ def _add_diffraction(dyn_b, rot, x, share, added, acc_w):
 
 
 @kernel(inline=True)
-def _add_part(pos, rot, columns, part, eta, rate, sums, rg, tally, moments, force, dyn):
-    """One column of the grid in the sea: its change of wet volume and first moment against
-    calm water (``tally`` 0-3), its waterplane tallies for the water's heave and pitch rates
-    (4-8: area, area x, area x^2, area rate, area x rate) and its dynamic force into ``dyn``."""
-    area, x, y = columns[2, part], columns[0, part], columns[1, part]
-    tally[4] += area
-    tally[5] += area * x
-    tally[6] += area * x * x
-    tally[7] += area * rate
-    tally[8] += area * x * rate
-    r22 = rot[2, 2]
-    h = pos[2] + rot[2, 0] * x + rot[2, 1] * y
-    lo0, hi0 = wet_interval(h, r22, columns[3, part], columns[4, part], 0.0)
-    lo, hi = wet_interval(h, r22, columns[3, part], columns[4, part], eta)
+def _part_in_sea(h, r22, z_bottom, z_top, area, eta, sums, rga):
+    """One column of the grid in the sea: (dV, dQz, fx, fy, fz, gx, gy, gz), its change of wet
+    volume and of that volume's first moment along body z against calm water, and its dynamic
+    force (:func:`_column_dynamic`, zero when dry)."""
+    lo0, hi0 = wet_interval(h, r22, z_bottom, z_top, 0.0)
+    lo, hi = wet_interval(h, r22, z_bottom, z_top, eta)
     dv0 = area * max(hi0 - lo0, 0.0)
     dv = area * max(hi - lo, 0.0)
-    tally[0] += dv - dv0
-    tally[1] += (dv - dv0) * x
-    tally[2] += (dv - dv0) * y
-    tally[3] += dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
-    if hi > lo:
-        _column_dynamic(sums, h - eta, r22, lo, hi, rg * area, moments, force)
-        _add_moment(dyn, rot, x, y, force)
+    dqz = dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
+    if hi <= lo:
+        return dv - dv0, dqz, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
+    fx, fy, fz, gx, gy, gz = _column_dynamic(sums, h - eta, r22, lo, hi, rga * area)
+    return dv - dv0, dqz, fx, fy, fz, gx, gy, gz
+
+
+@kernel(inline=True)
+def _grid_sums(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, added, diffraction, rg, sums,
+               dyn_b):
+    """Walk the grid (module docstring): the diffraction force into the body-frame ``dyn_b``;
+    returns the change of wet volume and of its first moment (V, Qx, Qy, Qz), the dynamic
+    force and moment about CO (world) and the waterplane's tallies (area, area x, area x^2,
+    area rate, area x rate)."""
+    vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
+    s_a = s_ax = s_axx = s_r = s_rx = 0.0
+    ax, ay, az = rot[0, 2], rot[1, 2], rot[2, 2]  # the columns' axis, world
+    rows_y0 = -0.5 * (ny - 1) * dy  # body y of the first row's centre
+    for i in range(nx):
+        if diffraction:
+            _add_diffraction(dyn_b, rot, (i - 0.5 * (nx - 1)) * dx, columns[5, i], added,
+                             _station_acceleration(sc, sea, decay_exp[i]))
+        for p in range(ny):
+            c = 2 * (i * ny + p)
+            if columns[2, c] <= 0.0 and columns[2, c + 1] <= 0.0:
+                continue
+            at = c if columns[2, c] > 0.0 else c + 1  # the phases: at the canoe part's centre
+            eta, rate = _cell_sums(sc, sea[9], p, columns[1, at] - rows_y0 - p * dy, sums)
+            for part in range(c, c + 2):
+                area, x, y = columns[2, part], columns[0, part], columns[1, part]
+                if area <= 0.0:
+                    continue
+                s_a += area
+                s_ax += area * x
+                s_axx += area * x * x
+                s_r += area * rate
+                s_rx += area * x * rate
+                h = pos[2] + rot[2, 0] * x + rot[2, 1] * y
+                dv, dqz, fx, fy, fz, gx, gy, gz = _part_in_sea(h, az, columns[3, part], columns[4, part],
+                                                               area, eta, sums, rg)
+                vol += dv
+                qx += dv * x
+                qy += dv * y
+                qz += dqz
+                rx = rot[0, 0] * x + rot[0, 1] * y  # the lever R (x, y, 0); R e_z along the axis
+                ry = rot[1, 0] * x + rot[1, 1] * y
+                rz = rot[2, 0] * x + rot[2, 1] * y
+                fwx += fx
+                fwy += fy
+                fwz += fz
+                mwx += ry * fz - rz * fy + ay * gz - az * gy
+                mwy += rz * fx - rx * fz + az * gx - ax * gz
+                mwz += rx * fy - ry * fx + ax * gy - ay * gx
+        for j in range(sea.shape[1]):  # the next station: times the x step
+            er, ei = sc[_ER, j], sc[_EI, j]
+            sc[_ER, j] = er * sc[_SR, j] - ei * sc[_SI, j]
+            sc[_EI, j] = er * sc[_SI, j] + ei * sc[_SR, j]
+    return (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx)
 
 
 @kernel
@@ -271,38 +300,15 @@ def hull_sea_wrench(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, flota
         Receives the water's vertical velocity at the centre of flotation (m/s) and the rate of
         its surface's slope along body x (rad/s, bow up positive).
     """
-    m = sea.shape[1]
     _setup(sea, dx, dy, nx, ny, decay, sc)
-    small[5 * ORDERS:] = 0.0
-    sums, moments, force = small[0:3 * ORDERS], small[3 * ORDERS:5 * ORDERS], small[5 * ORDERS:5 * ORDERS + 6]
-    acc, dyn = small[5 * ORDERS + 6:5 * ORDERS + 9], small[5 * ORDERS + 9:5 * ORDERS + 15]  # dyn: world
-    dyn_b, tally = small[5 * ORDERS + 15:5 * ORDERS + 21], small[5 * ORDERS + 21:5 * ORDERS + 30]
-    shares = columns[5]
-    rows_y0 = -0.5 * (ny - 1) * dy  # body y of the first row's centre
-    for i in range(nx):
-        if diffraction:
-            acc[0], acc[1], acc[2] = _station_acceleration(sc, sea, decay_exp[i])
-            _add_diffraction(dyn_b, rot, (i - 0.5 * (nx - 1)) * dx, shares[i], added, acc)
-        for p in range(ny):
-            c = 2 * (i * ny + p)
-            if columns[2, c] <= 0.0 and columns[2, c + 1] <= 0.0:
-                continue
-            at = c if columns[2, c] > 0.0 else c + 1  # the phases: at the canoe part's centre
-            eta, rate = _cell_sums(sc, sea[9], p, columns[1, at] - rows_y0 - p * dy, sums)
-            for part in range(c, c + 2):
-                if columns[2, part] > 0.0:
-                    _add_part(pos, rot, columns, part, eta, rate, sums, rho * g, tally, moments,
-                              force, dyn)
-        for j in range(m):  # the next station: times the x step
-            er, ei = sc[_ER, j], sc[_EI, j]
-            sc[_ER, j] = er * sc[_SR, j] - ei * sc[_SI, j]
-            sc[_EI, j] = er * sc[_SI, j] + ei * sc[_SR, j]
-    buoyancy_wrench(tally[0], tally[1], tally[2], tally[3], rot, rho, g, out)
+    sums, dyn_b = small[0:3 * ORDERS], small[3 * ORDERS:3 * ORDERS + 6]
+    dyn_b[:] = 0.0
+    (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx) = _grid_sums(
+        pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, added, diffraction, rho * g, sums, dyn_b)
+    buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
     for row in range(3):  # world -> body: R^T
-        out[row] += rot[0, row] * dyn[0] + rot[1, row] * dyn[1] + rot[2, row] * dyn[2] + dyn_b[row]
-        out[3 + row] += (rot[0, row] * dyn[3] + rot[1, row] * dyn[4] + rot[2, row] * dyn[5]
-                         + dyn_b[3 + row])
-    s_a, s_ax, s_axx, s_r, s_rx = tally[4], tally[5], tally[6], tally[7], tally[8]
+        out[row] += rot[0, row] * fwx + rot[1, row] * fwy + rot[2, row] * fwz + dyn_b[row]
+        out[3 + row] += rot[0, row] * mwx + rot[1, row] * mwy + rot[2, row] * mwz + dyn_b[3 + row]
     x_mean = s_ax / s_a
     slope_rate = (s_rx - x_mean * s_r) / (s_axx - x_mean * s_ax)
     water[0] = s_r / s_a + slope_rate * (flotation_x - x_mean)

@@ -9,7 +9,8 @@ phase phi_j (rad) of :func:`sailmujoco.forces.waves.components`. :func:`sea_stag
 6-10 at every call: the ramped amplitude r(t) a_j, the phase theta_j at CO, and the body-frame
 wavevector (kappa_x, kappa_y, kappa_z)_j, the phase's change per metre along each body axis
 (k_j (cos beta_j, sin beta_j) . the horizontal part of that axis in the world), so that the
-phase at a body point (x, y, z) is theta_j + kappa_x x + kappa_y y + kappa_z z.
+phase at a body point (x, y, z) is theta_j + kappa_x x + kappa_y y + kappa_z z. Rows 11 and 12
+are :func:`foil_water_velocity`'s scratch.
 
 A calm sea is
 the array of shape (SEA_ROWS, 0): the kernel then runs calm water's arithmetic untouched.
@@ -26,10 +27,13 @@ import numpy as np
 from .._jit import kernel
 from ..hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
 from .boat_parameters import P_SEA_BLOCK
+from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
 from .waves import RAMP_PERIODS, WaveConfig, components
 
-SEA_ROWS = 11  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kappa_x, kappa_y, kappa_z
+SEA_ROWS = 13  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kappa_x, kappa_y, kappa_z;
+#                a foil's phasor (cos, sin)
+_M1, _M2, _M3, _M4, _M5, _M6, _M7 = (1.0 / math.factorial(n + 1) for n in range(1, 8))  # 1/(n+1)!
 # The sea's mechanisms (physics options, sailmujoco.options.ForceSwitches), each packed as 1.0 (on)
 # or 0.0 in this order after the ramp in the sea's block of P (forces/boat_parameters.py,
 # P_SEA_BLOCK); wave_damping packs 1.0 for "relative":
@@ -170,7 +174,7 @@ def sea_stage(t, duration, pos, rot, sea):
         sea[10, j] = k * (cb * rot[0, 2] + sb * rot[1, 2])
 
 
-@kernel
+@kernel(reassociate=True)
 def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
     """The water's velocity at a foil, body frame: the current plus the orbital velocity
     averaged over the foil's span.
@@ -179,9 +183,10 @@ def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
     are those at (x, 0, z) (the span's horizontal offset at a heel is left out); each
     component's speed a_j omega_j e^(k_j z_s) is averaged over the span's stretched heights
     z_s (:func:`sailmujoco.forces.waves.orbital_velocity`; z_s = min(z - eta, 0), eta at the
-    foil): exactly, e^(k z_top) (1 - e^(-k d)) / (k d) for a span reaching from z_top down over
-    the height d, which is the limit of many points along the span (the keel's flow falls to
-    about 0.45 of its top value down a 1.3 m span in a 10 m wave).
+    foil): exactly, (e^(k z_top) - e^(k z_bottom)) / (k d) for a span reaching from z_top down
+    over the height d, which is the limit of many points along the span (the keel's flow falls
+    to about 0.45 of its top value down a 1.3 m span in a 10 m wave). The phasors go through
+    the sea's rows 11 and 12 (:data:`SEA_ROWS`).
 
     Parameters
     ----------
@@ -201,22 +206,26 @@ def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
         Receives the water's velocity, body frame, m/s.
     """
     m = sea.shape[1]
-    phase = np.empty((2, m))
+    for j in range(m):
+        sea[11, j], sea[12, j] = sincos(sea[7, j] + sea[8, j] * x + sea[10, j] * z)
     eta = 0.0
     for j in range(m):
-        theta = sea[7, j] + sea[8, j] * x + sea[10, j] * z
-        phase[0, j], phase[1, j] = math.cos(theta), math.sin(theta)
-        eta += sea[6, j] * phase[0, j]
+        eta += sea[6, j] * sea[11, j]
     height = rot[2, 2] * span  # the span's world height
     z_top = min(pos[2] + rot[2, 0] * x + rot[2, 2] * (z + 0.5 * span) - eta, 0.0)
     ue, un, uz = 0.0, 0.0, 0.0
     for j in range(m):
-        q = sea[2, j] * height
-        mean = 1.0 - q * (0.5 - q / 6.0) if q < 1e-4 else -math.expm1(-q) / q
-        speed = sea[6, j] * sea[1, j] * math.exp(sea[2, j] * z_top) * mean
-        horizontal = speed * phase[0, j]
+        k = sea[2, j]
+        q = k * height
+        top = exp(k * z_top)
+        # the span's mean of e^(k z_s) / e^(k z_top) = (1 - e^(-q)) / q; its series below q = 0.05
+        # (the difference of exponentials would lose digits there)
+        series = 1.0 - q * (_M1 - q * (_M2 - q * (_M3 - q * (_M4 - q * (_M5 - q * (_M6 - q * _M7))))))
+        mean = top * series if q < 0.05 else (top - exp(k * (z_top - height))) / q
+        speed = sea[6, j] * sea[1, j] * mean
+        horizontal = speed * sea[11, j]
         ue += horizontal * sea[3, j]
         un += horizontal * sea[4, j]
-        uz += speed * phase[1, j]
+        uz += speed * sea[12, j]
     for i in range(3):
         out[i] = current_b[i] + rot[0, i] * ue + rot[1, i] * un + rot[2, i] * uz
