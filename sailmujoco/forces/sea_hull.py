@@ -46,8 +46,8 @@ import math
 
 from .._jit import kernel
 from .hydrostatics import buoyancy_wrench
+from ..hull_grid import GRID_ROWS, GRID_STATIONS
 from .lane_math import sincos
-from .wave_pressure import wet_interval
 
 ORDERS = 4  # e^x ~ 1 + x + x^2/2 + x^3/6
 _GAUSS_X = (-0.7745966692414834, 0.0, 0.7745966692414834)  # 3-point Gauss-Legendre on [-1, 1]
@@ -57,7 +57,8 @@ _GAUSS_W = (0.5555555555555556, 0.8888888888888888, 0.5555555555555556)
 _AX, _AY, _AZ = 0, ORDERS, 2 * ORDERS
 _A, _AW, _AA, _ER, _EI, _SR, _SI, _ROWS = (3 * ORDERS + i for i in range(8))
 SCRATCH_ROWS = _ROWS  # scratch rows of the sea array, plus two per grid row
-SMALL_SIZE = 3 * ORDERS + 6  # scratch floats: the sums, the diffraction's wrench
+CELL_ROWS = 2 + 3 * ORDERS  # per grid column: eta, d eta / dt, the Froude-Krylov sums
+SMALL_SIZE = 6 + CELL_ROWS * 2 * GRID_STATIONS * GRID_ROWS  # scratch floats: the diffraction's wrench, the cells'
 
 
 @kernel(inline=True)
@@ -83,17 +84,20 @@ def _setup(sea, dx, dy, nx, ny, decay, sc):
     for j in range(sea.shape[1]):
         sc[_ER, j], sc[_EI, j] = sincos(sea[7, j] + x0 * sea[8, j])  # first station, centre line
         sc[_SR, j], sc[_SI, j] = sincos(sea[8, j] * dx)
-    for p in range(ny):
-        y = y0 + p * dy
+    for p in range((ny + 1) // 2):  # the rows lie in mirror pairs about the centre line
+        y, mirror = y0 + p * dy, ny - 1 - p
         for j in range(sea.shape[1]):
-            sc[_ROWS + 2 * p, j], sc[_ROWS + 2 * p + 1, j] = sincos(sea[9, j] * y)
+            c, s = sincos(sea[9, j] * y)
+            sc[_ROWS + 2 * p, j], sc[_ROWS + 2 * p + 1, j] = c, s
+            sc[_ROWS + 2 * mirror, j], sc[_ROWS + 2 * mirror + 1, j] = c, -s
 
 
 @kernel(reassociate=True)
-def _cell_sums(sc, kappa_y, p, offset, sums):
+def _cell_sums(sc, kappa_y, p, offset, cs, c):
     """Sum over components at one cell (station phasor times row p's, moved by ``offset`` along
     body y to the column's centre to first order, e^(i kappa_y offset) ~ 1 + i kappa_y offset):
-    eta, d eta / dt and the ORDERS x 3 Froude-Krylov sums, into ``sums``."""
+    eta, d eta / dt and the ORDERS x 3 Froude-Krylov sums, into rows 0-13 of ``cs``' columns c
+    and c + 1 (the cell's two parts)."""
     eta = 0.0
     rate = 0.0
     yr_row, yi_row = _ROWS + 2 * p, _ROWS + 2 * p + 1
@@ -118,20 +122,22 @@ def _cell_sums(sc, kappa_y, p, offset, sums):
         s9 += sc[_AZ + 1, j] * pr
         s10 += sc[_AZ + 2, j] * pr
         s11 += sc[_AZ + 3, j] * pr
-    sums[0], sums[1], sums[2], sums[3] = s0, s1, s2, s3
-    sums[4], sums[5], sums[6], sums[7] = s4, s5, s6, s7
-    sums[8], sums[9], sums[10], sums[11] = s8, s9, s10, s11
-    return eta, rate
+    for col in range(c, c + 2):
+        cs[0, col], cs[1, col] = eta, rate
+        cs[2, col], cs[3, col], cs[4, col], cs[5, col] = s0, s1, s2, s3
+        cs[6, col], cs[7, col], cs[8, col], cs[9, col] = s4, s5, s6, s7
+        cs[10, col], cs[11, col], cs[12, col], cs[13, col] = s8, s9, s10, s11
 
 
 @kernel(inline=True)
-def _column_dynamic(sums, h_stretched, r22, lo, hi, rga):
+def _column_dynamic(cs, k, h_stretched, r22, lo, hi, rga):
     """The dynamic force on one column's wet part (world), and its sum of axial centroid times
     force (for the moment): (fx, fy, fz, gx, gy, gz).
 
     J_n / n! = integral of z_s^n / n! and Z_n / n! = integral of zeta z_s^n / n! along the wet
     axis by 3-point Gauss, exact for the polynomials of degree <= 4 they integrate; then each
-    force is sum_n J_n / n! times its sum over components (:func:`_cell_sums`, ORDERS = 4).
+    force is sum_n J_n / n! times its sum over components (column k of ``cs``, rows 2-13:
+    :func:`_cell_sums`, ORDERS = 4).
     """
     half, mid = 0.5 * (hi - lo), 0.5 * (hi + lo)
     j0 = j1 = j2 = j3 = z0 = z1 = z2 = z3 = 0.0
@@ -150,12 +156,12 @@ def _column_dynamic(sums, h_stretched, r22, lo, hi, rga):
         z1 += t1 * zeta
         z2 += t2 * zeta
         z3 += t3 * zeta
-    fx = j0 * sums[0] + j1 * sums[1] + j2 * sums[2] + j3 * sums[3]
-    fy = j0 * sums[4] + j1 * sums[5] + j2 * sums[6] + j3 * sums[7]
-    fz = -(j0 * sums[8] + j1 * sums[9] + j2 * sums[10] + j3 * sums[11])
-    gx = z0 * sums[0] + z1 * sums[1] + z2 * sums[2] + z3 * sums[3]
-    gy = z0 * sums[4] + z1 * sums[5] + z2 * sums[6] + z3 * sums[7]
-    gz = -(z0 * sums[8] + z1 * sums[9] + z2 * sums[10] + z3 * sums[11])
+    fx = j0 * cs[2, k] + j1 * cs[3, k] + j2 * cs[4, k] + j3 * cs[5, k]
+    fy = j0 * cs[6, k] + j1 * cs[7, k] + j2 * cs[8, k] + j3 * cs[9, k]
+    fz = -(j0 * cs[10, k] + j1 * cs[11, k] + j2 * cs[12, k] + j3 * cs[13, k])
+    gx = z0 * cs[2, k] + z1 * cs[3, k] + z2 * cs[4, k] + z3 * cs[5, k]
+    gy = z0 * cs[6, k] + z1 * cs[7, k] + z2 * cs[8, k] + z3 * cs[9, k]
+    gz = -(z0 * cs[10, k] + z1 * cs[11, k] + z2 * cs[12, k] + z3 * cs[13, k])
     return fx, fy, fz, gx, gy, gz
 
 
@@ -190,31 +196,10 @@ def _add_diffraction(dyn_b, rot, x, share, added, acc_w):
 
 
 @kernel(inline=True)
-def _part_in_sea(h, r22, z_bottom, z_top, area, eta, sums, rga):
-    """One column of the grid in the sea: (dV, dQz, fx, fy, fz, gx, gy, gz), its change of wet
-    volume and of that volume's first moment along body z against calm water, and its dynamic
-    force (:func:`_column_dynamic`, zero when dry)."""
-    lo0, hi0 = wet_interval(h, r22, z_bottom, z_top, 0.0)
-    lo, hi = wet_interval(h, r22, z_bottom, z_top, eta)
-    dv0 = area * max(hi0 - lo0, 0.0)
-    dv = area * max(hi - lo, 0.0)
-    dqz = dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
-    if hi <= lo:
-        return dv - dv0, dqz, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0
-    fx, fy, fz, gx, gy, gz = _column_dynamic(sums, h - eta, r22, lo, hi, rga * area)
-    return dv - dv0, dqz, fx, fy, fz, gx, gy, gz
-
-
-@kernel(inline=True)
-def _grid_sums(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, added, diffraction, rg, sums,
-               dyn_b):
-    """Walk the grid (module docstring): the diffraction force into the body-frame ``dyn_b``;
-    returns the change of wet volume and of its first moment (V, Qx, Qy, Qz), the dynamic
-    force and moment about CO (world) and the waterplane's tallies (area, area x, area x^2,
-    area rate, area x rate)."""
-    vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
-    s_a = s_ax = s_axx = s_r = s_rx = 0.0
-    ax, ay, az = rot[0, 2], rot[1, 2], rot[2, 2]  # the columns' axis, world
+def _grid_phases(sea, decay_exp, sc, columns, rot, dx, dy, nx, ny, added, diffraction, cs, dyn_b):
+    """Walk the grid's stations and rows: each cell's sums over components into ``cs``
+    (:func:`_cell_sums`; zeros for a cell outside the deck) and, with ``diffraction``, each
+    station's diffraction force into the body-frame wrench ``dyn_b``."""
     rows_y0 = -0.5 * (ny - 1) * dy  # body y of the first row's centre
     for i in range(nx):
         if diffraction:
@@ -223,38 +208,68 @@ def _grid_sums(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, added, dif
         for p in range(ny):
             c = 2 * (i * ny + p)
             if columns[2, c] <= 0.0 and columns[2, c + 1] <= 0.0:
+                for row in range(CELL_ROWS):
+                    cs[row, c] = cs[row, c + 1] = 0.0
                 continue
             at = c if columns[2, c] > 0.0 else c + 1  # the phases: at the canoe part's centre
-            eta, rate = _cell_sums(sc, sea[9], p, columns[1, at] - rows_y0 - p * dy, sums)
-            for part in range(c, c + 2):
-                area, x, y = columns[2, part], columns[0, part], columns[1, part]
-                if area <= 0.0:
-                    continue
-                s_a += area
-                s_ax += area * x
-                s_axx += area * x * x
-                s_r += area * rate
-                s_rx += area * x * rate
-                h = pos[2] + rot[2, 0] * x + rot[2, 1] * y
-                dv, dqz, fx, fy, fz, gx, gy, gz = _part_in_sea(h, az, columns[3, part], columns[4, part],
-                                                               area, eta, sums, rg)
-                vol += dv
-                qx += dv * x
-                qy += dv * y
-                qz += dqz
-                rx = rot[0, 0] * x + rot[0, 1] * y  # the lever R (x, y, 0); R e_z along the axis
-                ry = rot[1, 0] * x + rot[1, 1] * y
-                rz = rot[2, 0] * x + rot[2, 1] * y
-                fwx += fx
-                fwy += fy
-                fwz += fz
-                mwx += ry * fz - rz * fy + ay * gz - az * gy
-                mwy += rz * fx - rx * fz + az * gx - ax * gz
-                mwz += rx * fy - ry * fx + ax * gy - ay * gx
+            _cell_sums(sc, sea[9], p, columns[1, at] - rows_y0 - p * dy, cs, c)
         for j in range(sea.shape[1]):  # the next station: times the x step
             er, ei = sc[_ER, j], sc[_EI, j]
             sc[_ER, j] = er * sc[_SR, j] - ei * sc[_SI, j]
             sc[_EI, j] = er * sc[_SI, j] + ei * sc[_SR, j]
+
+
+@kernel(reassociate=True)
+def _parts_wrench(pos, rot, columns, cs, rg):
+    """Each column of the grid in the sea (one loop over the columns, on vector lanes): its
+    change of wet volume and first moment against calm water, its dynamic force
+    (:func:`_column_dynamic`) and moment about CO, and the waterplane's tallies. Returns
+    (V, Qx, Qy, Qz, world force (3), world moment (3), area, area x, area x^2, area rate,
+    area x rate).
+
+    Each column's wet part is cut where its axis, at world height h + r22 z, meets the
+    surface: as :func:`sailmujoco.forces.wave_pressure.wet_interval`, with r22 kept at least
+    1e-12 from zero (a column lying flat is then wet or dry whole, as there).
+    """
+    r22 = rot[2, 2]
+    if abs(r22) < 1e-12:
+        r22 = 1e-12 if r22 >= 0.0 else -1e-12
+    inverse = 1.0 / r22
+    upright = r22 > 0.0
+    ax, ay, az = rot[0, 2], rot[1, 2], rot[2, 2]  # the columns' axis, world
+    vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
+    s_a = s_ax = s_axx = s_r = s_rx = 0.0
+    for k in range(columns.shape[1]):
+        x, y, area, z_bottom, z_top = columns[0, k], columns[1, k], columns[2, k], columns[3, k], columns[4, k]
+        eta, rate = cs[0, k], cs[1, k]
+        s_a += area
+        s_ax += area * x
+        s_axx += area * x * x
+        s_r += area * rate
+        s_rx += area * x * rate
+        h = pos[2] + rot[2, 0] * x + rot[2, 1] * y
+        zw0, zw = -h * inverse, (eta - h) * inverse  # where the axis meets z = 0 and eta
+        lo0 = z_bottom if upright else max(z_bottom, zw0)
+        hi0 = min(z_top, zw0) if upright else z_top
+        lo = z_bottom if upright else max(z_bottom, zw)
+        hi = min(z_top, zw) if upright else z_top
+        dv0 = area * max(hi0 - lo0, 0.0)
+        dv = area * max(hi - lo, 0.0)
+        vol += dv - dv0
+        qx += (dv - dv0) * x
+        qy += (dv - dv0) * y
+        qz += dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
+        wet = 1.0 if hi > lo else 0.0
+        fx, fy, fz, gx, gy, gz = _column_dynamic(cs, k, h - eta, r22, lo, hi, rg * area * wet)
+        rx = rot[0, 0] * x + rot[0, 1] * y  # the lever R (x, y, 0); R e_z along the axis
+        ry = rot[1, 0] * x + rot[1, 1] * y
+        rz = rot[2, 0] * x + rot[2, 1] * y
+        fwx += fx
+        fwy += fy
+        fwz += fz
+        mwx += ry * fz - rz * fy + ay * gz - az * gy
+        mwy += rz * fx - rx * fz + az * gx - ax * gz
+        mwz += rx * fy - ry * fx + ax * gy - ay * gx
     return (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx)
 
 
@@ -301,10 +316,13 @@ def hull_sea_wrench(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, flota
         its surface's slope along body x (rad/s, bow up positive).
     """
     _setup(sea, dx, dy, nx, ny, decay, sc)
-    sums, dyn_b = small[0:3 * ORDERS], small[3 * ORDERS:3 * ORDERS + 6]
+    dyn_b = small[0:6]
     dyn_b[:] = 0.0
-    (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx) = _grid_sums(
-        pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, added, diffraction, rho * g, sums, dyn_b)
+    parts = columns.shape[1]
+    cs = small[6:6 + CELL_ROWS * parts].reshape((CELL_ROWS, parts))
+    _grid_phases(sea, decay_exp, sc, columns, rot, dx, dy, nx, ny, added, diffraction, cs, dyn_b)
+    (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx) = _parts_wrench(
+        pos, rot, columns, cs, rho * g)
     buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
     for row in range(3):  # world -> body: R^T
         out[row] += rot[0, row] * fwx + rot[1, row] * fwy + rot[2, row] * fwz + dyn_b[row]
