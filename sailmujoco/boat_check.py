@@ -74,8 +74,13 @@ class BoatCheck:
     vanishing_heel : float
         Angle of vanishing stability (rad): where GZ falls through zero; pi when it stays
         positive to inverted.
-    roll_period, heave_period, pitch_period : float
-        Natural periods, s.
+    roll_period : float
+        Natural roll period of the free-floating boat, roll coupled with sway
+        (:func:`natural_periods`), s.
+    roll_period_uncoupled : float
+        Roll alone about the CG, the sway added mass left out, 2 pi sqrt((I_G + A44) / C44), s.
+    heave_period, pitch_period : float
+        Natural periods of heave and pitch, s.
     wind : float
         True wind speed of the speed runs, m/s.
     duration : float
@@ -106,6 +111,7 @@ class BoatCheck:
     gz_max_heel: float
     vanishing_heel: float
     roll_period: float
+    roll_period_uncoupled: float
     heave_period: float
     pitch_period: float
     wind: float
@@ -136,8 +142,12 @@ class BoatCheck:
             f"GZ            max {self.gz_max:.3f} m at {deg(self.gz_max_heel):.0f} deg heel; "
             f"vanishing stability {vanishing}"
             + (f" ({self.figure})" if self.figure else ""),
-            f"periods       roll {self.roll_period:.2f} s, heave {self.heave_period:.2f} s, "
-            f"pitch {self.pitch_period:.2f} s  (T = 2 pi sqrt((I + A) / C))",
+            f"periods       roll {self.roll_period:.2f} s, the free boat's: roll with sway "
+            "(T = 2 pi sqrt((I_G + A44 + z_G^2 m A22 / (m + A22)) / C44))",
+            f"              roll {self.roll_period_uncoupled:.2f} s if it rolled alone about its "
+            "CG, no sway added mass (T = 2 pi sqrt((I_G + A44) / C44))",
+            f"              heave {self.heave_period:.2f} s, pitch {self.pitch_period:.2f} s "
+            "(T = 2 pi sqrt((I + A) / C))",
             f"steady speed  in {self.wind:g} m/s true wind ({SPEED_CONTROLLER} sail law + heading "
             f"rudder; mean of the last {polar.STEADY_WINDOW_S:g} s of {self.duration:g} s runs):",
         ]
@@ -156,10 +166,13 @@ def check_boat(path_or_params, wind: float = 6.0, out=None, *, twa_deg=DEFAULT_T
                duration: float = SPEED_RUN_S, log=None) -> BoatCheck:
     """Check a boat: hydrostatics, GZ curve, natural periods and steady speeds.
 
-    The natural periods are those of an undamped mass on a spring, T = 2 pi sqrt((I + A) / C),
-    with I the rigid-body mass or inertia, A the added mass (-Z_wdot, -K_pdot, -M_qdot) and C
-    the hydrostatic stiffness: heave C33 = rho g A_wp; roll C44 = rho g V GM_t; pitch
-    C55 = rho g V GM_L (V = m / rho, the hull's GM at the boat's CG).
+    The natural periods are undamped (:func:`natural_periods`): heave and pitch those of a
+    mass on a spring, T = 2 pi sqrt((I + A) / C), with I the rigid-body mass or inertia, A the
+    added mass (-Z_wdot, -M_qdot) and C the hydrostatic stiffness: heave C33 = rho g A_wp;
+    pitch C55 = rho g V GM_L (V = m / rho, the hull's GM at the boat's CG). Roll, with
+    C44 = rho g V GM_t, is coupled with the free sway through the CG's height z_G above CO:
+    T4 = 2 pi sqrt((I_G + A44 + z_G^2 m A22 / (m + A22)) / C44); the uncoupled
+    2 pi sqrt((I_G + A44) / C44) is reported beside it.
 
     Parameters
     ----------
@@ -258,26 +271,43 @@ def _hydrostatics(p: BoatParams) -> dict:
 
 
 def natural_periods(p: BoatParams) -> dict:
-    """Undamped natural periods (s) of roll, heave and pitch, T = 2 pi sqrt((I + A) / C).
+    """Undamped natural periods (s) of roll, heave and pitch of the free-floating boat.
+
+    Heave and pitch are those of a mass on a spring, T = 2 pi sqrt((I + A) / C). Roll is
+    coupled with sway: the added mass acts at CO (where the mass matrix holds it), the CG
+    sits z_G below or above it, and sway has no spring. With q = (sway of CO, roll), the mass
+    matrix about CO is [[m + A22, -m z_G], [-m z_G, I_G + m z_G^2 + A44]] and the only
+    stiffness is C44 in roll; eliminating the free sway leaves::
+
+        T4 = 2 pi sqrt((I_G + A44 + z_G^2 m A22 / (m + A22)) / C44)
+
+    (``roll_period``). The boat rolls about a point between its CG and CO: the water's sway
+    inertia A22 resists the CG's sideways swing. ``roll_period_uncoupled`` is roll alone about
+    the CG, 2 pi sqrt((I_G + A44) / C44), the spring-mass form, which leaves that out.
 
     Parameters
     ----------
     p : BoatParams
-        The boat: rigid-body inertia, added mass (SNAME, <= 0), hull and CG.
+        The boat: rigid-body inertia about the CG, added mass (SNAME, <= 0) about CO, hull
+        and CG.
 
     Returns
     -------
     dict
-        ``roll_period``, ``heave_period``, ``pitch_period``.
+        ``roll_period``, ``roll_period_uncoupled``, ``heave_period``, ``pitch_period``.
     """
     h, a = p.hull, p.added_mass_diagonal
     weight = p.rho_water * GRAVITY * p.displaced_volume  # rho g V
-    stiffness = {"roll": weight * hull_geometry.gm_transverse(h, p.cg_z),  # C44 = rho g V GM_t
-                 "heave": p.rho_water * GRAVITY * hull_geometry.waterplane_area(h),  # C33
-                 "pitch": weight * hull_geometry.gm_longitudinal(h, p.cg_z)}  # C55 = rho g V GM_L
-    inertia = {"roll": p.inertia[0] + a[3], "heave": p.mass + a[2], "pitch": p.inertia[1] + a[4]}
-    return {f"{k}_period": (2.0 * math.pi * math.sqrt(inertia[k] / stiffness[k])
-                            if stiffness[k] > 0 else math.inf) for k in stiffness}
+    c44 = weight * hull_geometry.gm_transverse(h, p.cg_z)  # C44 = rho g V GM_t
+    sway = p.cg_z**2 * p.mass * a[1] / (p.mass + a[1])  # z_G^2 m A22 / (m + A22), kg m^2
+    springs = {"roll_period": (p.inertia[0] + a[3] + sway, c44),
+               "roll_period_uncoupled": (p.inertia[0] + a[3], c44),
+               "heave_period": (p.mass + a[2],  # C33 = rho g A_wp
+                                p.rho_water * GRAVITY * hull_geometry.waterplane_area(h)),
+               "pitch_period": (p.inertia[1] + a[4],  # C55 = rho g V GM_L
+                                weight * hull_geometry.gm_longitudinal(h, p.cg_z))}
+    return {k: 2.0 * math.pi * math.sqrt(i / c) if c > 0 else math.inf
+            for k, (i, c) in springs.items()}
 
 
 def steady_speeds(boat, p: BoatParams, wind: float, twa_deg, duration: float, folder) -> tuple:

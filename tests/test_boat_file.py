@@ -196,16 +196,21 @@ def test_check_gz_slope_is_gm_and_the_periods_are_spring_mass(checks, name):
     assert c.gz[one_deg] / math.sin(c.heel[one_deg]) == pytest.approx(p.gm_t, rel=2e-3)
     assert c.heel[-1] == pytest.approx(math.pi) and c.gz_max == c.gz.max()
     weight = RHO * GRAVITY * p.mass / RHO  # rho g V
-    roll = 2 * math.pi * math.sqrt((p.inertia[0] - p.added_mass[3]) / (weight * p.gm_t))
+    alone = 2 * math.pi * math.sqrt((p.inertia[0] - p.added_mass[3]) / (weight * p.gm_t))
+    # free sway: eliminate the sway of CO from [[m + A22, -m z_G], [-m z_G, I_G + m z_G^2 + A44]]
+    a22 = -p.added_mass[1]
+    roll = 2 * math.pi * math.sqrt((p.inertia[0] - p.added_mass[3]
+                                    + p.cg_z**2 * p.mass * a22 / (p.mass + a22)) / (weight * p.gm_t))
     heave = 2 * math.pi * math.sqrt((p.mass - p.added_mass[2])
                                     / (RHO * GRAVITY * 4 / 3 * p.hull.half_beam * p.hull.length))
     pitch = 2 * math.pi * math.sqrt((p.inertia[1] - p.added_mass[4]) / (weight * c.gm_l))
     assert c.roll_period == pytest.approx(roll, rel=1e-9)
+    assert c.roll_period_uncoupled == pytest.approx(alone, rel=1e-9)
     assert c.heave_period == pytest.approx(heave, rel=1e-12)
     assert c.pitch_period == pytest.approx(pitch, rel=1e-12)
-    # the 6-DOF roll model's own frequency, where the boat computes it from its mass and GM_t
+    # eq. 19's omega_roll_n, where the boat computes it from its mass and GM_t: roll alone
     if name != "wille_yacht":  # (the yacht's is the paper's 2.4 rad/s)
-        assert 2 * math.pi / p.roll_frequency == pytest.approx(c.roll_period, rel=0.08)
+        assert 2 * math.pi / p.roll_frequency == pytest.approx(c.roll_period_uncoupled, rel=0.08)
 
 
 def test_check_vanishing_stability_is_where_gz_changes_sign(checks):
@@ -226,6 +231,8 @@ def test_check_speeds_and_the_figure(checks):
         assert c.figure.name == "gz.png" and c.figure.stat().st_size > 10_000
         text = c.text()
         assert f"displacement  {p.mass:.6g} kg" in text and "TWA    90 deg" in text
+        assert f"roll {c.roll_period:.2f} s, the free boat's" in text
+        assert f"roll {c.roll_period_uncoupled:.2f} s if it rolled alone" in text
 
 
 def test_a_heavier_boat_floats_deeper_by_its_extra_volume_over_the_waterplane(tmp_path):
