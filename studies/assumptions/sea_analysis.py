@@ -42,11 +42,11 @@ HEADING_LOST_DEG = 10.0  # deg, a run whose heading error RMS over its window ex
 # angle as magnitudes
 SAILING = {"speed": ("steady speed", "m/s", SPEED_FLOOR),
            "heel": ("steady heel", "deg", HEEL_HOLDS_DEG),
-           "roll_sd": ("roll, the heel's standard deviation", "deg", ANGLE_FLOOR_DEG),
+           "roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
            "drift": ("drift angle (leeway)", "deg", ANGLE_FLOOR_DEG),
            "pitch": ("pitch amplitude", "deg", ANGLE_FLOOR_DEG)}
 # the metrics of a Table 1 run (over its last 50 s)
-TABLE1 = {"roll_sd": ("roll, the heel's standard deviation", "deg", ANGLE_FLOOR_DEG),
+TABLE1 = {"roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
           "surge": ("mean surge", "m/s", SPEED_FLOOR),
           "heel": ("mean heel", "deg", HEEL_HOLDS_DEG)}
 SERIES = {"saoud_robot": "saoud_robot, wind plane", "wille_yacht": "wille_yacht, wind plane",

@@ -14,6 +14,7 @@ import pandas as pd
 
 from sailmujoco import constants
 from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK, U19_5_PER_U10, fully_developed_sea
+from sailmujoco.forces.waves import BAND
 
 from ..kit import save_figure, setup_matplotlib
 from ..kit.saoud import TRUE_WIND
@@ -84,6 +85,13 @@ def headline(analysis) -> dict:
     return out
 
 
+def _span(values, fmt: str = "{:.2f}", scale: float = 1.0) -> str:
+    """:func:`.kit.verdict.value_range`, one value where both ends read the same."""
+    text = value_range(values, scale, fmt)
+    low, _, high = text.partition(" … ")
+    return low if low == high else text
+
+
 def _kept(table: pd.DataFrame) -> pd.DataFrame:
     """The cases where calm and sea runs keep their heading."""
     return table[table["lost_heading"] == ""]
@@ -98,9 +106,10 @@ def _mark_lost(plt, ax, table: pd.DataFrame) -> None:
     speeds, angles = sorted(set(table["tws"])), sorted(set(table["twa"]))
     for _, row in table[table["lost_heading"] != ""].iterrows():
         i, j = speeds.index(row["tws"]), angles.index(row["twa"])
-        ax.add_patch(plt.Rectangle((j - 0.5, i - 0.5), 1.0, 1.0, fill=False, edgecolor="red", hatch="//",
-                                   linewidth=1.5))
-        ax.text(j, i - 0.32, f"lost: {row['lost_heading']}", ha="center", va="center", color="red", fontsize=6)
+        ax.add_patch(plt.Rectangle((j - 0.45, i - 0.45), 0.9, 0.9, fill=False, edgecolor="red", hatch="//",
+                                   linewidth=1.5, alpha=0.6))
+        ax.text(j, i - 0.3, f"lost: {row['lost_heading']}", ha="center", va="center", color="red", fontsize=7,
+                bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1.0})
 
 
 def _plane_figure(plt, s: SeaAnalysis, out: Path) -> None:
@@ -115,8 +124,8 @@ def _plane_figure(plt, s: SeaAnalysis, out: Path) -> None:
                 "deg")
         for ax in axes[row]:
             _mark_lost(plt, ax, table)
-    fig.suptitle("What the sea a wind raises does over the wind plane (× = no data; red hatch: the calm or "
-                 f"sea run lost its heading, heading error RMS > {HEADING_LOST_DEG:g}°)")
+    fig.suptitle("What the sea a wind raises does over the wind plane (× = no data)\nred hatch: the calm or "
+                 f"sea run lost its heading (heading error RMS > {HEADING_LOST_DEG:g}°)")
     save_figure(fig, out / SEA_FIGURES["plane"])
 
 
@@ -268,8 +277,9 @@ def _plane_section(r, s: SeaAnalysis) -> None:
     r.table(_plane_rows(s))
     r.paragraph(" ".join(f"{boat}: {_stops(s.tables[boat])} {_lost_list(s.tables[boat])}"
                          for boat in ("saoud_robot", "wille_yacht")))
-    r.figure(SEA_FIGURES["plane"], "Steady speed in the sea against calm water, and the roll amplitude "
-                                   "in the sea, over true wind angle × true wind speed")
+    r.figure(SEA_FIGURES["plane"], "Steady speed in the sea against calm water, and the roll (the heel's "
+                                   "standard deviation) in the sea, over true wind angle × true wind speed; "
+                                   "hatched: a case that lost its heading")
 
 
 ROLL_TEXT = (
@@ -398,22 +408,26 @@ def _resonance_section(r, s: SeaAnalysis) -> None:
         f"period, g T4²/2π, are {robot['wavelength']:.1f} m long for the robot "
         f"({robot['wavelength'] / robot['length']:.1f} hull lengths) and {yacht['wavelength']:.1f} m for the "
         f"yacht ({yacht['wavelength'] / yacht['length']:.1f}). Sailing Saoud's beam reach in the seas, the "
-        f"robot's heel swings at a mean zero-up-crossing period of {value_range(sa['roll_period_sea'], fmt='{:.2f}')} s, "
-        "a little longer than T4 (the sailing boat's roll is damped by keel, rudder and sail, and the slope "
-        "spectrum falls with frequency, both of which move the response below the undamped resonance): "
-        f"waves {value_range(waves, fmt='{:.1f}')} m long, "
-        f"{value_range(waves / robot['length'], fmt='{:.1f}')} hull lengths, the short waves of the spectrum's "
+        f"robot's heel swings at a mean zero-up-crossing period of {_span(sa['roll_period_sea'])} s, "
+        f"{_span(sa['roll_period_sea'] / robot['t4'])} T4 (the sailing boat's roll is damped by keel, rudder and "
+        "sail, and the slope spectrum falls with frequency: both move the response below the undamped "
+        f"resonance): waves {_span(waves, '{:.1f}')} m long, "
+        f"{_span(waves / robot['length'], '{:.1f}')} hull lengths, the short waves of the spectrum's "
         "tail, where the long-wave model (a hull short against the wave it rides) is at the edge of its "
         "validity. A Pierson-Moskowitz sea has S(ω) = (5/16) Hs² ωp⁴ ω⁻⁵ exp(−1.25 (ωp/ω)⁴); with "
         "Tp = 4.99 Hs^½ the product Hs² ωp⁴ is the same for every height, so above the peak the spectrum "
         "and the slope spectrum (ω²/g)² S(ω) do not depend on Hs, and each of these seas is as steep as the "
         f"others. At the robot's roll frequency the slope spectrum is "
-        f"({value_range(seas['slope_density'], 1e3, '{:.2f}')}) × 10⁻³ rad² s in the three seas and the RMS slope of the simulated components (0.5-5 ωp) "
-        f"{value_range(seas['rms_slope'], fmt='{:.1f}')}°; the robot's roll is "
-        f"{value_range(sa['roll_sd_sea'], fmt='{:.1f}')}° in each. The yacht's resonance lies near the "
+        f"{_span(seas['slope_density'], scale=1e3)} × 10⁻³ rad² s in the three seas and the RMS slope of the "
+        f"simulated components ({BAND[0]:g}-{BAND[1]:g} ωp) {_span(seas['rms_slope'], '{:.1f}')}°; the robot's "
+        f"roll σ is {_span(sa['roll_sd_sea'], '{:.1f}')}° in the seas run (" + ", ".join(
+            f"Hs {row['hs']:g} m: {row['roll_sd_sea']:.1f}°" for _, row in sa.iterrows()) + "). The yacht's resonance lies near the "
         "smallest sea's peak: Tp/T4 = " + ", ".join(f"{row['tp_over_t4']:.2f} at Hs {row['hs']:g} m"
                                                     for _, row in seas.iterrows())
-        + f"; the heel of Table 1's runs in the seas swings at {value_range(t1['roll_period_sea'], fmt='{:.2f}')} s."))
+        + f"; the heel of Table 1's runs in the seas swings at {_span(t1['roll_period_sea'])} s, "
+        f"{_span(t1['roll_period_sea'] / yacht['t4'])} T4, and their roll σ is " + ", ".join(
+            f"{row['sim']} Hs {row['hs']:g} m: {row['roll_sd_sea']:.1f}° ({row['roll_sd_calm']:.1f}° calm)"
+            for _, row in t1.iterrows()) + "."))
     r.table([{"Hs [m]": f"{row['hs']:g}", "Tp [s]": f"{row['tp']:.2f}", "yacht Tp/T4": f"{row['tp_over_t4']:.2f}",
               "robot ω4/ωp": f"{row['omega4_over_omegap']:.2f}",
               "slope spectrum at the robot's ω4 [rad² s]": f"{row['slope_density']:.2e}",
