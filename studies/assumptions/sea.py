@@ -29,7 +29,7 @@ import numpy as np
 
 from sailmujoco import constants
 from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK
-from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
 from sailmujoco.study import Runs
 from sailmujoco.suite import TASKS
 
@@ -42,7 +42,7 @@ FETCH_REASON = {
     "saoud_robot": "a 1.5 m robot sails on a lake: 2 km of open water upwind",
     "wille_yacht": "a cruising yacht sails along a coast: 20 km of a bay or a sound upwind",
 }
-SEA_COMPONENTS = 16  # -, components of each sea (full study)
+SEA_COMPONENTS = N_COMPONENTS  # -, components of each sea (full study): the kernel's default
 SMOKE_COMPONENTS = 4  # -, components of each sea (smoke)
 SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
 SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail

@@ -407,7 +407,7 @@ def _resonance_section(r, s: SeaAnalysis) -> None:
         f"{robot['t4']:.2f} s for the robot and {yacht['t4']:.2f} s for the yacht; deep-water waves of that "
         f"period, g T4²/2π, are {robot['wavelength']:.1f} m long for the robot "
         f"({robot['wavelength'] / robot['length']:.1f} hull lengths) and {yacht['wavelength']:.1f} m for the "
-        f"yacht ({yacht['wavelength'] / yacht['length']:.1f}). Sailing Saoud's beam reach in the seas, the "
+        f"yacht ({yacht['wavelength'] / yacht['length']:.1f} hull lengths). Sailing Saoud's beam reach in the seas, the "
         f"robot's heel swings at a mean zero-up-crossing period of {_span(sa['roll_period_sea'])} s, "
         f"{_span(sa['roll_period_sea'] / robot['t4'])} T4 (the sailing boat's roll is damped by keel, rudder and "
         "sail, and the slope spectrum falls with frequency: both move the response below the undamped "
@@ -418,7 +418,7 @@ def _resonance_section(r, s: SeaAnalysis) -> None:
         "Tp = 4.99 Hs^½ the product Hs² ωp⁴ is the same for every height, so above the peak the spectrum "
         "and the slope spectrum (ω²/g)² S(ω) do not depend on Hs, and each of these seas is as steep as the "
         f"others. At the robot's roll frequency the slope spectrum is "
-        f"{_span(seas['slope_density'], scale=1e3)} × 10⁻³ rad² s in the three seas and the RMS slope of the "
+        f"({_span(seas['slope_density'], scale=1e3)}) × 10⁻³ rad² s in the three seas and the RMS slope of the "
         f"simulated components ({BAND[0]:g}-{BAND[1]:g} ωp) {_span(seas['rms_slope'], '{:.1f}')}°; the robot's "
         f"roll σ is {_span(sa['roll_sd_sea'], '{:.1f}')}° in the seas run (" + ", ".join(
             f"Hs {row['hs']:g} m: {row['roll_sd_sea']:.1f}°" for _, row in sa.iterrows()) + "). The yacht's resonance lies near the "
