@@ -102,13 +102,15 @@ def _pivot(table: pd.DataFrame, column: str) -> pd.DataFrame:
 
 
 def _mark_lost(plt, ax, table: pd.DataFrame) -> None:
-    """A red hatched frame and the word "lost" on each cell whose calm or sea run lost its heading."""
+    """A red hatched frame and "lost: calm | sea | both" on each cell whose calm or sea run lost
+    its heading."""
     speeds, angles = sorted(set(table["tws"])), sorted(set(table["twa"]))
     for _, row in table[table["lost_heading"] != ""].iterrows():
         i, j = speeds.index(row["tws"]), angles.index(row["twa"])
         ax.add_patch(plt.Rectangle((j - 0.45, i - 0.45), 0.9, 0.9, fill=False, edgecolor="red", hatch="//",
                                    linewidth=1.5, alpha=0.6))
-        ax.text(j, i - 0.3, f"lost: {row['lost_heading']}", ha="center", va="center", color="red", fontsize=7,
+        which = "both" if row["lost_heading"] == "calm, sea" else row["lost_heading"]
+        ax.text(j, i - 0.3, f"lost: {which}", ha="center", va="center", color="red", fontsize=7,
                 bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1.0})
 
 
@@ -210,14 +212,17 @@ def _named(row) -> str:
     finite = {k: v for k, v in removed.items() if np.isfinite(v)}
     if row["mechanism"]:
         name = row["mechanism"]
-        return f"`env.{name} = {_off(name)}` removes {100 * removed[name]:.0f} %"
+        return f"`env.{name} = {_off(name)}` removes {_percent(removed[name])}"
     if not finite:
         return "every rerun stalled" if all(row[f"{n}_stalled"] for n in removed) else "no rerun finished"
     best = max(finite, key=finite.get)
     if finite[best] <= 0.0:
         return "no single switch explains it (none makes it smaller)"
-    return (f"no single switch explains it (the most: `env.{best} = {_off(best)}`, "
-            f"{100 * finite[best]:.0f} %)")
+    return f"no single switch explains it (the most: `env.{best} = {_off(best)}`, {_percent(finite[best])})"
+
+
+def _percent(share: float) -> str:
+    return f"{round(100.0 * share)} %"  # an int: no "-0 %"
 
 
 def _off(name: str) -> str:
@@ -231,7 +236,7 @@ def _plane_rows(s: SeaAnalysis) -> list[dict]:
         t = _kept(s.tables[boat])
         for metric, (label, unit, _) in SAILING.items():
             rel = t[f"{metric}_rel"].to_numpy(dtype=float)
-            top = t.loc[np.nanargmax(np.abs(rel))] if np.isfinite(rel).any() else None
+            top = t.iloc[np.nanargmax(np.abs(rel))] if np.isfinite(rel).any() else None
             rows.append({
                 "boat": boat, "metric": f"{label} [{unit}]",
                 "calm": value_range(t[f"{metric}_calm"], fmt="{:.2f}"),
@@ -291,8 +296,9 @@ ROLL_TEXT = (
 
 def _lost_text() -> str:
     return (f"A run whose heading error RMS over the window exceeds {HEADING_LOST_DEG:g}° lost its heading "
-            "(it turned head to wind and stalled, or bore away): the difference of such a case compares a "
-            "boat sailing its course with one that is not, and is marked, not counted.")
+            "(it turned head to wind and stalled, bore away, or yawed that far about its course): the "
+            "difference of such a case compares a boat sailing its course with one that is not, and is "
+            "marked, not counted.")
 
 
 def _lost_list(table: pd.DataFrame) -> str:
@@ -368,7 +374,7 @@ def _mechanisms_section(r, s: SeaAnalysis) -> None:
                "calm → sea": f"{m['calm']:.2f} → {m['sea']:.2f}"}
         for name, _ in sea.MECHANISMS:
             row[f"`env.{name} = {_off(name)}` removes"] = "stalled" if m[f"{name}_stalled"] else (
-                f"{100 * m[f'{name}_removed']:.0f} %" if np.isfinite(m[f"{name}_removed"]) else "—")
+                _percent(m[f"{name}_removed"]) if np.isfinite(m[f"{name}_removed"]) else "—")
         row["explained by"] = _named(m)
         rows.append(row)
     if rows:
