@@ -171,7 +171,8 @@ def test_study_smoke(tmp_path):
     from sailmujoco.studies.assumptions.sea_analysis import SAILING, TABLE1
 
     sections = ["The sea against calm water: the wind plane", "Wille's roll controller in a sea (Table 1)",
-                "Saoud's optimal sail in a sea", "Where each difference comes from"]
+                "Saoud's optimal sail in a sea", "Why a sea rolls the boats",
+                "Where each difference comes from"]
     at = [report.index(f"\n## {s}\n") for s in sections]
     assert at == sorted(at) and at[0] > report.index("\n## Wille's eq. 4 as printed\n")
     for start, end in zip(at, [*at[1:], len(report)], strict=True):
@@ -191,8 +192,15 @@ def test_study_smoke(tmp_path):
     for _, row in plane.iterrows():
         same = base[(base["boat"] == row["boat"]) & (base["tws"] == row["tws"]) & (base["twa"] == row["twa"])]
         assert same["steady_speed"].iloc[0] == row["speed_calm"]
+    # the calm Table 1 run of the sea's series is the study's own, to the bit
+    assert table1["surge_calm"].iloc[0] == headline["table1_sim3_dsyhs_surge"]
     # a sea of 0.2-0.7 m rolls both boats more than calm water
-    assert (plane["roll_sea"] > plane["roll_calm"]).all()
+    assert (plane["roll_sd_sea"] > plane["roll_sd_calm"]).all()
+    # every run's heading error is measured, and a case is lost where one exceeds the threshold
+    for table in (plane, table1, saoud):
+        rms = table[["heading_rms_calm", "heading_rms_sea"]].to_numpy()
+        assert np.isfinite(rms).all() and (rms >= 0.0).all()
+        assert (table["lost_heading"].notna() == (rms > 10.0).any(axis=1)).all()  # "" reads as NaN
     # smoke: the one largest difference is rerun with each mechanism off
     mechanisms = pd.read_csv(tmp_path / "sea_mechanisms.csv")
     assert len(mechanisms) == 1 and abs(mechanisms["rel"].iloc[0]) > 0.1
@@ -251,12 +259,61 @@ def test_fully_developed_seas_of_a_height():
 def test_differences_are_relative_to_calm_or_to_the_floor():
     from sailmujoco.studies.assumptions.sea_analysis import TABLE1, compare
 
-    calm = [{"status": "ok", "stopped": "", "roll": 0.2, "surge": 4.0, "heel": 10.0}]
-    sea_ = [{"status": "stopped", "stopped": "capsized", "roll": 0.5, "surge": 3.0, "heel": 10.5}]
+    calm = [{"status": "ok", "stopped": "", "roll_sd": 0.2, "surge": 4.0, "heel": 10.0, "heading_rms": 2.0}]
+    sea_ = [{"status": "stopped", "stopped": "capsized", "roll_sd": 0.5, "surge": 3.0, "heel": 10.5,
+             "heading_rms": 12.0}]
     row = compare([{"case": "a"}], calm, sea_, TABLE1).iloc[0]
-    assert row["roll_rel"] == pytest.approx(0.3 / 1.0)  # calm 0.2 deg below the 1 deg floor
+    assert row["roll_sd_rel"] == pytest.approx(0.3 / 1.0)  # calm 0.2 deg below the 1 deg floor
     assert row["surge_rel"] == pytest.approx(-0.25) and row["heel_rel"] == pytest.approx(0.05)
     assert row["status"] == "stopped" and row["stopped"] == "capsized"
+    assert row["lost_heading"] == "sea"  # 12 deg RMS beyond 10 deg, 2 deg within
+
+
+def test_window_statistics_of_a_known_signal():
+    """A sine of amplitude A and period T about a mean heel, sampled at 10 Hz: its standard
+    deviation is A/sqrt(2) whatever the window, its zero-up-crossing period T; a constant
+    heading error e has RMS |e|; only the last ``window`` seconds count."""
+    from sailmujoco.studies.assumptions.sea import window_statistics
+
+    t = np.arange(0.0, 100.0, 0.1)
+    a, period = math.radians(6.0), 1.7
+    heel = math.radians(5.0) + a * np.sin(2 * math.pi * t / period + 0.3)
+    error = np.where(t < 50.0, 1.0, math.radians(-4.0))  # 1 rad off before the window
+    for window in (20.0, 40.0):
+        stats = window_statistics(t, heel, error, window)
+        assert stats["roll_sd"] == pytest.approx(6.0 / math.sqrt(2.0), rel=0.01)
+        assert stats["roll_period"] == pytest.approx(period, rel=0.01)
+        assert stats["heading_rms"] == pytest.approx(4.0, rel=1e-12)
+
+
+def test_roll_period_with_sway_free_is_the_free_decay_period():
+    """T4 = 2 pi sqrt((I_xx + A44 + z_G^2 m A22/(m + A22)) / (rho g V GM)) against the period
+    of the 6-DOF boat's free roll decay from 5 deg (MuJoCo, every force on, no sail force)."""
+    from sailmujoco.studies.assumptions.episodes import time_constants
+    from sailmujoco.studies.assumptions.sea_analysis import roll_period_sway_free
+
+    measured = time_constants()
+    for boat in ("saoud_robot", "wille_yacht"):
+        assert roll_period_sway_free(boat) == pytest.approx(measured[boat]["roll_period"], rel=0.03), boat
+
+
+def test_developed_seas_are_equally_steep():
+    """Pierson-Moskowitz seas with Tp = 4.99 sqrt(Hs): Hs^2 omega_p^4 is the same for every Hs,
+    so the slope variance, the integral of (omega^2/g)^2 S(omega) over the simulated band
+    0.5-5 omega_p, is too; the components' RMS slope against that integral (trapezoid rule)."""
+    from sailmujoco.studies.assumptions import sea
+    from sailmujoco.studies.assumptions.sea_analysis import roll_resonance
+
+    g = 9.81
+    seas = roll_resonance(32)["seas"]
+    for _, row in seas.iterrows():
+        wp = 2 * math.pi / row["tp"]
+        w = np.linspace(0.5 * wp, 5.0 * wp, 20001)
+        slope = (w**2 / g) ** 2 * 5 / 16 * row["hs"] ** 2 * wp**4 * w**-5 * np.exp(-1.25 * (wp / w) ** 4)
+        variance = float(np.sum(0.5 * (slope[1:] + slope[:-1]) * np.diff(w)))
+        assert row["rms_slope"] == pytest.approx(math.degrees(math.atan(math.sqrt(variance))), rel=0.05)
+    assert seas["rms_slope"].max() - seas["rms_slope"].min() < 1e-9
+    assert list(seas["hs"]) == list(sea.SEA_HS)
 
 
 def test_attribution_names_the_switch_that_removes_the_difference():
@@ -264,10 +321,12 @@ def test_attribution_names_the_switch_that_removes_the_difference():
     switch brings it back to calm is named; none where no switch removes half of it."""
     from sailmujoco.studies.assumptions.sea_analysis import attribute, largest_cases
 
-    table = pd.DataFrame({"case": ["a", "b", "c"], "roll_rel": [0.05, 2.0, -0.5],
-                          "speed_rel": [0.01, -0.02, 0.09], "heel_rel": [0.0, 0.0, 0.0],
-                          "drift_rel": [0.0, 0.0, 0.0], "pitch_rel": [0.0, 0.0, 0.0]})
-    assert largest_cases({"saoud": table}, smoke=False) == [("saoud", "roll", 1)]
+    table = pd.DataFrame({"case": ["a", "b", "c", "d"], "roll_sd_rel": [0.05, 2.0, -0.5, 9.0],
+                          "speed_rel": [0.01, -0.02, 0.09, 3.0], "heel_rel": [0.0, 0.0, 0.0, 0.0],
+                          "drift_rel": [0.0, 0.0, 0.0, 0.0], "pitch_rel": [0.0, 0.0, 0.0, 0.0],
+                          "lost_heading": ["", "", "", "calm"]})
+    # case d lost its heading: left out, though its differences are the largest
+    assert largest_cases({"saoud": table}, smoke=False) == [("saoud", "roll_sd", 1)]
     calm, sea_value = 1.0, 3.0  # the roll amplitude, deg
     named, removed = attribute(calm, sea_value, {"wave_foil_flow": 2.9, "wave_diffraction": 3.1,
                                                  "wave_damping": 3.0, "wave_pressure_decay": 1.2})

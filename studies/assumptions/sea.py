@@ -9,11 +9,14 @@ run in calm water:
   the waves from the wind's bearing; the calm runs are the same specs without the sea;
 * Wille's roll controller (:func:`table1_sea_jobs`): Table 1's three simulations in
   fully developed Pierson-Moskowitz seas of the heights ``SEA_HS`` (:func:`developed_sea`),
-  from the wind's bearing; the calm runs are the study's own Table 1 runs;
+  from the wind's bearing; the calm runs (:func:`table1_calm_jobs`) are the study's own Table 1
+  runs again, their heel and heading kept;
 * Saoud's optimal sail (:func:`saoud_sea_specs`): the robot holding its heading on a beam reach
   in Saoud's wind, in the same seas.
 
-A run that stops early (a capsize) is kept with its reason. What each difference comes from is
+A run that stops early (a capsize) is kept with its reason. Each run's roll is the standard
+deviation of its heel over the measured window and its heading error the RMS over the same
+window (:func:`window_statistics`). What each difference comes from is
 measured by a second pass (:func:`mechanism_spec`, :func:`mechanism_jobs`): the case rerun with
 each of the sea's mechanisms (``MECHANISMS``) switched off in turn.
 """
@@ -22,9 +25,11 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from sailmujoco import constants
 from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK
-from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
 from sailmujoco.study import Runs
 from sailmujoco.suite import TASKS
 
@@ -37,13 +42,13 @@ FETCH_REASON = {
     "saoud_robot": "a 1.5 m robot sails on a lake: 2 km of open water upwind",
     "wille_yacht": "a cruising yacht sails along a coast: 20 km of a bay or a sound upwind",
 }
-SEA_COMPONENTS = 16  # -, components of each sea (full study)
+SEA_COMPONENTS = N_COMPONENTS  # -, components of each sea (full study): the kernel's default
 SMOKE_COMPONENTS = 4  # -, components of each sea (smoke)
 SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
 SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail
 SMOKE_HS = (1.0,)  # m, the smoke pass's one sea
 SMOKE_POINT = (10.0, 60.0)  # (m/s, deg): the one wind-plane point in a sea of the smoke pass
-TRAJECTORY_RATE = 10.0  # Hz: the heel is stored at this rate (the roll amplitude)
+TRAJECTORY_RATE = 10.0  # Hz: heel and heading are stored at this rate (the roll and the heading error)
 SAOUD_WIND_FROM_DEG = 90.0  # deg, compass: a beam reach, the heading held north
 SAOUD_DURATION = 90.0  # s (smoke: 25 s): longer than the plane's 50 s, a 2 m sea ramps up over 21 s
 SMOKE_DURATION = 25.0  # s
@@ -55,6 +60,7 @@ MECHANISMS = (("wave_foil_flow", False), ("wave_diffraction", False), ("wave_dam
 MECHANISM_ON = {"wave_foil_flow": True, "wave_diffraction": True, "wave_damping": "relative",
                 "wave_pressure_decay": True}  # the sea as built (PhysicsOptions' defaults)
 SEA_JOB = "assumptions_sea"  # the job list of Table 1's runs in a sea
+CALM_JOB = "assumptions_sea_calm"  # ... of the same runs in calm water (the heel kept)
 MECHANISM_JOB = "assumptions_sea_mechanisms"  # ... and of their reruns, a mechanism off
 
 
@@ -158,6 +164,55 @@ def table1_wind_from_deg() -> float:
     return math.degrees(TASKS["beam_reach_roll"](seed=0).wind().direction_from) % 360.0
 
 
+def window_statistics(t, heel, heading_error, window: float) -> dict:
+    """The roll and the heading over a run's last ``window`` seconds.
+
+    ``roll_sd``: the heel's standard deviation about its mean, deg (stable in a random sea,
+    where the peak-to-peak is an extreme value that grows with the window's length);
+    ``heading_rms``: the heading error's RMS, deg; ``roll_period``: the heel's mean
+    zero-up-crossing period about its mean, s (NaN with fewer than two up-crossings).
+
+    Parameters
+    ----------
+    t : array_like
+        Sample times, s.
+    heel : array_like
+        Heel at those times, rad.
+    heading_error : array_like
+        Heading minus the heading to hold, wrapped to [-pi, pi], rad.
+    window : float
+        The window's length, s.
+    """
+    t, heel, error = (np.asarray(v, dtype=float) for v in (t, heel, heading_error))
+    late = t >= (t[-1] if t.size else 0.0) - window
+    if late.sum() < 4:
+        return {"roll_sd": math.nan, "heading_rms": math.nan, "roll_period": math.nan}
+    t, heel = t[late], heel[late] - np.mean(heel[late])
+    up = t[1:][(heel[:-1] < 0.0) & (heel[1:] >= 0.0)]
+    return {"roll_sd": math.degrees(float(np.std(heel))),
+            "heading_rms": math.degrees(float(np.sqrt(np.mean(error[late] ** 2)))),
+            "roll_period": float(np.mean(np.diff(up))) if up.size > 1 else math.nan}
+
+
+def table1_heading() -> float:
+    """The compass heading Table 1's runs hold (the ``beam_reach_roll`` task's), rad."""
+    return TASKS["beam_reach_roll"](seed=0).desired_heading
+
+
+def table1_calm_jobs(smoke: bool) -> list[dict]:
+    """Table 1's simulations of :func:`table1_sea_jobs` in calm water (the study's own runs,
+    :func:`.scenario.table1_jobs`), as jobs of :func:`table1_sea_run` with ``hs`` 0.
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass (sim 3).
+    """
+    jobs = table1_jobs(smoke)
+    return [{"run": jobs[("dsyhs", sim)], "hs": 0.0, "sim": sim}
+            for sim in (SMOKE_TABLE1_SIMS if smoke else TABLE1_SEA_SIMS)]
+
+
 def table1_sea_jobs(smoke: bool) -> list[dict]:
     """Table 1's simulations (as built, :func:`.scenario.table1_jobs`) in the seas ``SEA_HS``
     from the wind's bearing: the jobs of :func:`studies.kit.wille.table1_simulate`, each with
@@ -181,20 +236,24 @@ def table1_sea_jobs(smoke: bool) -> list[dict]:
 
 
 def table1_sea_run(job: dict) -> dict:
-    """One Table 1 run in a sea (a job of the sweep engine): its numbers
-    (:func:`studies.kit.wille.table1_numbers`), how long it sailed and why it stopped early.
+    """One Table 1 run in a sea or in calm water (a job of the sweep engine): its numbers
+    (:func:`studies.kit.wille.table1_numbers`), its roll and heading over the same window
+    (:func:`window_statistics`), how long it sailed and why it stopped early.
 
     Parameters
     ----------
     job : dict
-        An item of :func:`table1_sea_jobs` or :func:`mechanism_jobs` (``run``: the job of
-        :func:`studies.kit.wille.table1_simulate`).
+        An item of :func:`table1_sea_jobs`, :func:`table1_calm_jobs` or :func:`mechanism_jobs`
+        (``run``: the job of :func:`studies.kit.wille.table1_simulate`).
     """
-    from ..kit.wille import table1_numbers, table1_simulate
+    from ..kit.wille import TABLE1_WINDOW, table1_numbers, table1_simulate
 
     result = table1_simulate(job["run"])
     stopped = result["metrics"].get("stopped")
-    return {**table1_numbers(result), "sailed": float(result["trajectory"]["t"].iloc[-1]),
+    traj = result["trajectory"]
+    error = [math.remainder(math.radians(h) - table1_heading(), 2.0 * math.pi) for h in traj["heading_deg"]]
+    stats = window_statistics(traj["t"], np.radians(traj["heel_deg"]), error, TABLE1_WINDOW)
+    return {**table1_numbers(result), **stats, "sailed": float(traj["t"].iloc[-1]),
             "stopped": str(stopped) if stopped else ""}
 
 
@@ -255,7 +314,8 @@ def mechanism_jobs(jobs: list[dict], cases: list[int]) -> list[dict]:
 def runs(smoke: bool) -> Runs:
     """The study's first pass: its runs (:func:`.scenario.runs`) and the sea's, the wind plane
     in calm water and in a sea (:func:`plane_sea_specs`), Saoud's optimal sail
-    (:func:`saoud_sea_specs`) and Table 1 in the seas (:func:`table1_sea_jobs`).
+    (:func:`saoud_sea_specs`) and Table 1 in the seas (:func:`table1_sea_jobs`) and in calm
+    water (:func:`table1_calm_jobs`).
 
     Parameters
     ----------
@@ -265,5 +325,6 @@ def runs(smoke: bool) -> Runs:
     base = scenario_runs(smoke)
     specs = [*plane_sea_specs(smoke).values(), *saoud_sea_specs(smoke).values()]
     return Runs(sweeps=base.sweeps + tuple((spec, f"sweeps/{spec['name']}") for spec in specs),
-                jobs={**base.jobs, SEA_JOB: (f"{__package__}.sea:table1_sea_run", table1_sea_jobs(smoke))},
+                jobs={**base.jobs, SEA_JOB: (f"{__package__}.sea:table1_sea_run", table1_sea_jobs(smoke)),
+                      CALM_JOB: (f"{__package__}.sea:table1_sea_run", table1_calm_jobs(smoke))},
                 label=base.label)

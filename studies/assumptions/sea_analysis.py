@@ -3,11 +3,16 @@ metric, and what each difference beyond ``DIFFERENCE`` comes from.
 
 A difference is relative to the calm value or, where that is smaller than the metric's floor
 (the boat as good as upright, still or level), to the floor: (sea - calm) / max(|calm|, floor).
-For every series and metric whose difference goes beyond ``DIFFERENCE`` somewhere, the case
-where it is largest is rerun with each of the sea's mechanisms off in turn
-(:data:`.sea.MECHANISMS`): the share of the difference a switch removes is
-1 - (switched - calm)/(sea - calm), and the mechanism whose switch removes at least
-``EXPLAINS`` of it, the most of them, explains it (:func:`attribute`).
+The roll of a run is the heel's standard deviation over its window (in a random sea the
+peak-to-peak is an extreme value that grows with the window). A run whose heading error RMS
+over the window exceeds ``HEADING_LOST_DEG`` has lost its heading (it turned head to wind and
+stalled, or bore away): its case's difference is not the sea's effect on a boat that holds its
+course, and the attribution leaves it out. For every series and metric whose difference goes
+beyond ``DIFFERENCE`` in a case where both runs keep their heading, the case where it is
+largest is rerun with each of the sea's mechanisms off in turn (:data:`.sea.MECHANISMS`): the
+share of the difference a switch removes is 1 - (switched - calm)/(sea - calm), and the
+mechanism whose switch removes at least ``EXPLAINS`` of it, the most of them, explains it
+(:func:`attribute`); a switched run that loses its heading is reported as stalled.
 """
 
 from __future__ import annotations
@@ -18,23 +23,30 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
+from sailmujoco import constants
+from sailmujoco.forces.wave_spectra import pierson_moskowitz
+from sailmujoco.forces.waves import WaveConfig, components
+from sailmujoco.hull import gm_transverse
+from sailmujoco.params import get_boat
 from sailmujoco.study import Results, Runs
+from sailmujoco.suite import TASKS
 
 from . import sea
-from .scenario import HEEL_HOLDS_DEG, PART_NAMES, RUNS_JOB, SPEED_FLOOR, table1_jobs
+from .scenario import HEEL_HOLDS_DEG, SPEED_FLOOR
 
 DIFFERENCE = 0.10  # -, a sea changes a metric where |sea - calm| > 10 % of max(|calm|, floor)
 EXPLAINS = 0.5  # -, a switch explains a difference when it removes at least half of it
-ANGLE_FLOOR_DEG = 1.0  # deg, the floor of the angles' differences (roll amplitude, drift, pitch)
+ANGLE_FLOOR_DEG = 1.0  # deg, the floor of the angles' differences (roll, drift, pitch)
+HEADING_LOST_DEG = 10.0  # deg, a run whose heading error RMS over its window exceeds it lost its heading
 # the metrics of a run holding its heading: name -> (what it is, unit, floor); heel and drift
 # angle as magnitudes
 SAILING = {"speed": ("steady speed", "m/s", SPEED_FLOOR),
            "heel": ("steady heel", "deg", HEEL_HOLDS_DEG),
-           "roll": ("roll amplitude", "deg", ANGLE_FLOOR_DEG),
+           "roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
            "drift": ("drift angle (leeway)", "deg", ANGLE_FLOOR_DEG),
            "pitch": ("pitch amplitude", "deg", ANGLE_FLOOR_DEG)}
 # the metrics of a Table 1 run (over its last 50 s)
-TABLE1 = {"roll": ("roll amplitude", "deg", ANGLE_FLOOR_DEG),
+TABLE1 = {"roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
           "surge": ("mean surge", "m/s", SPEED_FLOOR),
           "heel": ("mean heel", "deg", HEEL_HOLDS_DEG)}
 SERIES = {"saoud_robot": "saoud_robot, wind plane", "wille_yacht": "wille_yacht, wind plane",
@@ -49,15 +61,22 @@ class SeaAnalysis:
     ----------
     tables : dict
         Series (a key of ``SERIES``) -> one row per case: its sea, status, the reason it
-        stopped, and per metric ``<m>_calm``, ``<m>_sea``, ``<m>_change`` (sea - calm) and
-        ``<m>_rel`` (the change over max(|calm|, floor)).
+        stopped, per metric ``<m>_calm``, ``<m>_sea``, ``<m>_change`` (sea - calm) and
+        ``<m>_rel`` (the change over max(|calm|, floor)), the heading error RMS
+        ``heading_rms_calm``, ``heading_rms_sea`` (deg), the heel's period in the sea
+        ``roll_period_sea`` (s) and ``lost_heading`` (the runs that lost it: "", "calm",
+        "sea" or "calm, sea").
     mechanisms : pandas.DataFrame
         One row per series and metric beyond ``DIFFERENCE``: its largest case, the value with
-        each mechanism off, the share each switch removes and the mechanism named.
+        each mechanism off, the share each switch removes (NaN where the switched run
+        stalled, ``<mechanism>_stalled``) and the mechanism named.
+    resonance : dict
+        :func:`roll_resonance`: each boat's roll period and the seas' slopes.
     """
 
     tables: dict
     mechanisms: pd.DataFrame
+    resonance: dict
 
 
 def metrics_of(series: str) -> dict:
@@ -72,10 +91,11 @@ def metrics_of(series: str) -> dict:
 
 
 def sailing_values(record: dict) -> dict:
-    """A heading-hold run's metrics (``SAILING``, angles in degrees), status and cost.
+    """A heading-hold run's metrics (``SAILING``, angles in degrees), status, cost, heading
+    error RMS and heel period.
 
-    The roll amplitude is half the peak-to-peak of the heel stored in the run's trajectory
-    over its steady window.
+    Roll, heading error and the heel's period come from the heel and heading stored in the
+    run's trajectory over its steady window (:func:`.sea.window_statistics`).
 
     Parameters
     ----------
@@ -83,31 +103,34 @@ def sailing_values(record: dict) -> dict:
         The run's record (:meth:`sailmujoco.study.Results.records`).
     """
     m = record.get("metrics") or {}
-    window = record["task_options"]["steady_window"]
+    options = record["task_options"]
     trajectory = record.get("trajectory") or []
-    heel = [s["heel"] for s in trajectory if s["t"] >= trajectory[-1]["t"] - window] if trajectory else []
+    held = TASKS[record["task"]](seed=0, **options).desired_heading
+    stats = sea.window_statistics([s["t"] for s in trajectory], [s["heel"] for s in trajectory],
+                                  [math.remainder(s["heading"] - held, 2.0 * math.pi) for s in trajectory],
+                                  options["steady_window"])
     nan = float("nan")
-    return {"status": record["status"],
+    return {"status": record["status"], **stats,
             "stopped": str(record.get("error") or "") if record["status"] != "ok" else "",
             "wall_time": record.get("wall_time", nan),
             "speed": m.get("steady_speed", nan),
             "heel": abs(math.degrees(m.get("steady_heel", nan))),
-            "roll": math.degrees(0.5 * (max(heel) - min(heel))) if heel else nan,
             "drift": abs(math.degrees(m.get("drift_angle", nan))),
             "pitch": math.degrees(m.get("pitch_amplitude", nan))}
 
 
 def table1_values(numbers: dict) -> dict:
-    """A Table 1 run's metrics (``TABLE1``) and status.
+    """A Table 1 run's metrics (``TABLE1``), status, heading error RMS and heel period.
 
     Parameters
     ----------
     numbers : dict
-        :func:`studies.kit.wille.table1_numbers` of the run (with ``stopped`` where it stopped).
+        :func:`.sea.table1_sea_run` of the run.
     """
     stopped = numbers.get("stopped", "")
     return {"status": "stopped" if stopped else "ok", "stopped": stopped,
-            "roll": numbers["roll_amplitude"], "surge": numbers["mean_surge"],
+            "roll_sd": numbers["roll_sd"], "heading_rms": numbers["heading_rms"],
+            "roll_period": numbers["roll_period"], "surge": numbers["mean_surge"],
             "heel": abs(numbers["mean_heel"])}
 
 
@@ -126,9 +149,21 @@ def relative(change: float, calm: float, floor: float) -> float:
     return change / max(abs(calm), floor)
 
 
+def lost_heading(values: dict) -> bool:
+    """Whether a run lost its heading: its heading error RMS beyond ``HEADING_LOST_DEG``.
+
+    Parameters
+    ----------
+    values : dict
+        The run's values (:func:`sailing_values`, :func:`table1_values`; no ``heading_rms``:
+        kept).
+    """
+    return bool(values.get("heading_rms", 0.0) > HEADING_LOST_DEG)
+
+
 def compare(keys: list[dict], calm: list[dict], seas: list[dict], metrics: dict) -> pd.DataFrame:
     """One row per case: its keys, the sea run's status, each metric calm, in a sea, the change
-    and the relative change.
+    and the relative change, the heading error RMS of both runs and which lost its heading.
 
     Parameters
     ----------
@@ -142,8 +177,11 @@ def compare(keys: list[dict], calm: list[dict], seas: list[dict], metrics: dict)
     """
     rows = []
     for key, c, s in zip(keys, calm, seas, strict=True):
-        row = {**key, "status": s["status"], "stopped": s["stopped"],
-               "calm_status": c["status"]}
+        nan = float("nan")
+        row = {**key, "status": s["status"], "stopped": s["stopped"], "calm_status": c["status"],
+               "heading_rms_calm": c.get("heading_rms", nan), "heading_rms_sea": s.get("heading_rms", nan),
+               "roll_period_sea": s.get("roll_period", nan),
+               "lost_heading": ", ".join(k for k, v in (("calm", c), ("sea", s)) if lost_heading(v))}
         if "wall_time" in s:
             row["wall_time_calm"], row["wall_time_sea"] = c["wall_time"], s["wall_time"]
         for name, (_, _, floor) in metrics.items():
@@ -186,20 +224,22 @@ def first_pass(results: Results, smoke: bool) -> dict:
             for h, t in zip(z["waves.hs"], z["waves.tp"], strict=True)]
     calm = _sweep_values(results, saoud["calm"]) * len(keys)
     tables["saoud"] = compare(keys, calm, _sweep_values(results, saoud["sea"]), SAILING)
-    calm_numbers = dict(zip(table1_jobs(smoke), results.jobs[RUNS_JOB][len(PART_NAMES):], strict=True))
+    calm_numbers = {j["sim"]: n for j, n in zip(sea.table1_calm_jobs(smoke), results.jobs[sea.CALM_JOB],
+                                                 strict=True)}
     jobs = sea.table1_sea_jobs(smoke)
     keys = [{"case": f"{j['sim']}, Hs {j['hs']:g} m", "sim": j["sim"], "hs": j["hs"],
              "tp": j["run"]["env"]["waves"]["tp"], "wave_from_deg": j["run"]["env"]["waves"]["direction_from_deg"],
              "n_components": j["run"]["env"]["waves"]["n_components"]}
             for j in jobs]
-    calm = [table1_values(calm_numbers[("dsyhs", j["sim"])]) for j in jobs]
+    calm = [table1_values(calm_numbers[j["sim"]]) for j in jobs]
     tables["table1"] = compare(keys, calm, [table1_values(n) for n in results.jobs[sea.SEA_JOB]], TABLE1)
     return tables
 
 
 def largest_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
     """(series, metric, case index) of every series and metric whose difference goes beyond
-    ``DIFFERENCE``: the case where it is largest. Smoke: only the largest of all.
+    ``DIFFERENCE`` in a case where calm and sea runs keep their heading: the case where it is
+    largest. Smoke: only the largest of all.
 
     Parameters
     ----------
@@ -212,7 +252,8 @@ def largest_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
     for series, table in tables.items():
         for metric in metrics_of(series):
             rel = table[f"{metric}_rel"].abs().to_numpy(dtype=float)
-            rel = np.where(np.isfinite(rel), rel, -1.0)
+            kept = table["lost_heading"].eq("").to_numpy() if "lost_heading" in table else True
+            rel = np.where(np.isfinite(rel) & kept, rel, -1.0)
             if rel.size and rel.max() > DIFFERENCE:
                 out.append((series, metric, int(np.argmax(rel)), float(rel.max())))
     if smoke and out:
@@ -287,6 +328,26 @@ def attribute(calm: float, sea_value: float, switched: dict, share: float = EXPL
     return (best if finite[best] >= share else None), removed
 
 
+def lost_cases(tables: dict) -> pd.DataFrame:
+    """The cases whose calm or sea run lost its heading (left out of the attribution): series,
+    case, which runs, their heading error RMS (deg) and steady speed or mean surge (m/s).
+
+    Parameters
+    ----------
+    tables : dict
+        Series -> its table (:func:`first_pass`).
+    """
+    rows = []
+    for series, table in tables.items():
+        speed = "surge" if series == "table1" else "speed"
+        for _, row in table[table["lost_heading"] != ""].iterrows():
+            rows.append({"series": SERIES[series], "case": row["case"], "lost": row["lost_heading"],
+                         "heading_rms_calm": row["heading_rms_calm"], "heading_rms_sea": row["heading_rms_sea"],
+                         "speed_calm": row[f"{speed}_calm"], "speed_sea": row[f"{speed}_sea"]})
+    return pd.DataFrame(rows, columns=["series", "case", "lost", "heading_rms_calm", "heading_rms_sea",
+                                       "speed_calm", "speed_sea"])
+
+
 def _switched_values(results: Results, series: str, cases: list, smoke: bool) -> dict:
     """(case, mechanism) -> the case's values with that mechanism off."""
     if series == "table1":
@@ -301,7 +362,8 @@ def _switched_values(results: Results, series: str, cases: list, smoke: bool) ->
 
 def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
     """The mechanisms' table: for each series and metric beyond ``DIFFERENCE``, its largest
-    case, the metric with each mechanism off, the share each removes and the one named.
+    case, the metric with each mechanism off, the share each removes (NaN where the switched
+    run lost its heading: ``<mechanism>_stalled``) and the one named.
 
     Parameters
     ----------
@@ -319,8 +381,11 @@ def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
     for series, metric, case in selected:
         row_in = tables[series].iloc[case]
         calm, sea_value = float(row_in[f"{metric}_calm"]), float(row_in[f"{metric}_sea"])
-        values = {name: float(switched[series][(case, name)][metric]) for name, _ in sea.MECHANISMS}
-        named, removed = attribute(calm, sea_value, values)
+        runs = {name: switched[series][(case, name)] for name, _ in sea.MECHANISMS}
+        values = {name: float(run[metric]) for name, run in runs.items()}
+        stalled = {name: lost_heading(run) for name, run in runs.items()}
+        named, removed = attribute(calm, sea_value,
+                                   {n: (math.nan if stalled[n] else v) for n, v in values.items()})
         label, unit, _ = metrics_of(series)[metric]
         row = {"series": SERIES[series], "case": row_in["case"], "metric": label, "unit": unit,
                "status": row_in["status"], "calm": calm, "sea": sea_value,
@@ -328,9 +393,63 @@ def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
         for name, _ in sea.MECHANISMS:
             row[f"{name}_off"] = values[name]
             row[f"{name}_removed"] = removed[name]
+            row[f"{name}_stalled"] = stalled[name]
         row["mechanism"] = named or ""
         rows.append(row)
     return pd.DataFrame(rows)
+
+
+def roll_period_sway_free(boat: str) -> float:
+    """A boat's undamped roll period with sway free, s (the hull's roll and sway coupled through
+    the CG's height; the same equation as the boat check's roll period with the sway term).
+
+    T4 = 2 pi sqrt((I_xx,G + A44 + z_G^2 m A22/(m + A22)) / (rho g V GM)), with z_G the CG's
+    height above the waterline, A22, A44 the sway and roll added mass (SNAME -Y_vdot,
+    -K_pdot) and GM the hull's transverse metacentric height.
+
+    Parameters
+    ----------
+    boat : str
+        A registered boat.
+    """
+    p = get_boat(boat)
+    a = p.added_mass_diagonal
+    inertia = p.inertia[0] + a[3] + p.cg_z**2 * p.mass * a[1] / (p.mass + a[1])  # kg m^2
+    stiffness = p.rho_water * constants.GRAVITY * p.displaced_volume * gm_transverse(p.hull, p.cg_z)  # N m/rad
+    return 2.0 * math.pi * math.sqrt(inertia / stiffness)
+
+
+def roll_resonance(n_components: int) -> dict:
+    """Why a sea rolls the boats: each boat's roll period and the waves it meets, and the
+    fully developed seas ``SEA_HS``' slopes.
+
+    ``boats``: one row per boat, ``t4`` (:func:`roll_period_sway_free`, s), ``wavelength``
+    (deep-water waves of that period, g T4^2/(2 pi), m), ``length`` (the hull's, m).
+    ``seas``: one row per Hs of :data:`.sea.SEA_HS`, ``tp`` (s), ``tp_over_t4`` (the yacht's),
+    ``omega4_over_omegap`` (the robot's roll frequency over the sea's peak), ``slope_density`` (the wave slope spectrum (omega^2/g)^2 S(omega) at the robot's roll
+    frequency, rad^2 s) and ``rms_slope`` (the RMS slope of the sea's ``n_components``
+    components, sqrt(sum (a_i k_i)^2 / 2), deg).
+
+    Parameters
+    ----------
+    n_components : int
+        Components of the seas, as the runs draw them (seed :data:`.sea.SEA_SEED`).
+    """
+    g = constants.GRAVITY
+    boats = pd.DataFrame([{"boat": b, "t4": roll_period_sway_free(b),
+                           "wavelength": g * roll_period_sway_free(b) ** 2 / (2.0 * math.pi),
+                           "length": get_boat(b).hull.length} for b in sea.FETCH])
+    t4 = dict(zip(boats["boat"], boats["t4"], strict=True))
+    omega = 2.0 * math.pi / t4["saoud_robot"]
+    rows = []
+    for hs in sea.SEA_HS:
+        _, tp = sea.developed_sea(hs)
+        comp = components(WaveConfig(spectrum="pm", hs=hs, tp=tp, n_components=n_components, seed=sea.SEA_SEED))
+        rows.append({"hs": hs, "tp": tp, "tp_over_t4": tp / t4["wille_yacht"],
+                     "omega4_over_omegap": omega * tp / (2.0 * math.pi),
+                     "slope_density": (omega**2 / g) ** 2 * float(pierson_moskowitz(omega, hs, tp)),
+                     "rms_slope": math.degrees(math.atan(math.sqrt(0.5 * float(np.sum((comp.amplitude * comp.k) ** 2)))))})
+    return {"boats": boats, "seas": pd.DataFrame(rows)}
 
 
 def analyse_sea(results: Results, smoke: bool) -> SeaAnalysis:
@@ -344,4 +463,4 @@ def analyse_sea(results: Results, smoke: bool) -> SeaAnalysis:
         The study's short pass.
     """
     tables = first_pass(results, smoke)
-    return SeaAnalysis(tables, attribution(results, tables, smoke))
+    return SeaAnalysis(tables, attribution(results, tables, smoke), roll_resonance(sea.SEA_COMPONENTS))
