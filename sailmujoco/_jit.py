@@ -19,8 +19,9 @@ from pathlib import Path
 import numba
 
 _PACKAGE = Path(__file__).resolve().parent
-_SOURCES = sorted([_PACKAGE / "_jit.py", *(_PACKAGE / "forces").glob("*.py"),
-                   *(_PACKAGE / "reference").glob("*.py")])  # the paper worlds' kernels call forces/
+_SOURCES = sorted([_PACKAGE / "_jit.py", _PACKAGE / "hull_grid.py", *(_PACKAGE / "forces").glob("*.py"),
+                   *(_PACKAGE / "reference").glob("*.py")])  # the paper worlds' kernels call forces/;
+# the kernels freeze hull_grid.py's grid size into the sea's scratch size
 
 
 def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:

@@ -12,13 +12,12 @@ its deck's widest half-breadth k b0, holds up to two vertical columns (rows 2c a
 ``columns`` for cell c = i ny + p), split where the waterline's edge b(x_i) crosses it
 (:class:`sailmujoco.hull.HullShape`):
 
-* the canoe body's part, |y| < b(x): its area the overlap's integral over the cell's length
-  (64 sub-stations), so that the grid's waterplane is the hull's and the waves' change of
-  buoyancy, rho g times the waterplane's integral of eta, is right to first order; its bottom
-  the half-ellipse section's at the station and the overlap's centre y_c;
-* the flared topside's part, b(x) < |y| < k b(x) (none for vertical sides), its area the same
-  integral: its bottom the topside's height at its centre, dry in calm water until a crest or
-  a heel reaches it;
+* the canoe body's part, |y| < b(x_i): its area dx times the overlap, so the grid's waterplane
+  is the hull's up to the midpoint rule along x and the waves' change of buoyancy, rho g times
+  the waterplane's integral of eta, is right to first order; its bottom the half-ellipse
+  section's at the overlap's centre y_c;
+* the flared topside's part, b(x_i) < |y| < k b(x_i) (none for vertical sides): its bottom the
+  topside's height at its centre, dry in calm water until a crest or a heel reaches it;
 * both have the deck as their top, their lever arm at (x_i, y_c) and share the cell's phases,
   taken at the canoe part's centre (the flare part's own offset, tenths of a metre, is left
   out of its phase).
@@ -34,7 +33,7 @@ import numpy as np
 
 from .hull import HullShape
 
-GRID_STATIONS = 6  # cells along the hull (error against the fine columns: docs/physics.md)
+GRID_STATIONS = 8  # cells along the hull (error against the fine columns: docs/physics.md)
 GRID_ROWS = 4  # cells across the deck
 
 
@@ -76,15 +75,6 @@ def _fullness(h: HullShape, x):
     return 1.0 - (2.0 * x / h.length) ** 2
 
 
-_SUBSTATIONS = (np.arange(64) + 0.5) / 64 - 0.5  # a cell's length in 64 parts, over dx
-
-
-def _overlap(lo, hi, band_lo, band_hi) -> float:
-    """The mean over the cell's length of the overlap of [lo, hi] with [band_lo, band_hi] (one
-    band per sub-station), m."""
-    return float(np.mean(np.clip(np.minimum(hi, band_hi) - np.maximum(lo, band_lo), 0.0, None)))
-
-
 def hull_grid(h: HullShape, nx: int = GRID_STATIONS, ny: int = GRID_ROWS) -> HullGrid:
     """The hull's columns on a regular nx x ny grid (module docstring).
 
@@ -103,25 +93,21 @@ def hull_grid(h: HullShape, nx: int = GRID_STATIONS, ny: int = GRID_ROWS) -> Hul
     for i, x in enumerate(grid.stations):
         f = _fullness(h, x)
         b, t = h.half_beam * f, h.canoe_draft * f
-        b_sub = h.half_beam * _fullness(h, x + dx * _SUBSTATIONS)  # across the cell's length
         for p, y in enumerate(grid.rows):
             lo, hi = y - 0.5 * dy, y + 0.5 * dy
             c = 2 * (i * ny + p)
             canoe = (max(lo, -b), min(hi, b))
-            area = dx * _overlap(lo, hi, -b_sub, b_sub)
-            if canoe[1] > canoe[0] and area > 0.0:
+            if canoe[1] > canoe[0]:
                 yc = 0.5 * (canoe[0] + canoe[1])
                 depth = t * np.sqrt(max(1.0 - (yc / b) ** 2, 0.0))
-                cols[:, c] = (x, yc, area, -depth, h.freeboard)
+                cols[:, c] = (x, yc, dx * (canoe[1] - canoe[0]), -depth, h.freeboard)
             side = 1.0 if y > 0.0 else -1.0  # the flare band on the cell's side
             band = sorted((side * b, side * b * h.flare))
             flare = (max(lo, band[0]), min(hi, band[1]))
-            area = dx * _overlap(lo, hi, np.minimum(side * b_sub, side * b_sub * h.flare),
-                                 np.maximum(side * b_sub, side * b_sub * h.flare))
-            if h.flare > 1.0 and flare[1] > flare[0] and area > 0.0:
+            if h.flare > 1.0 and flare[1] > flare[0]:
                 yc = 0.5 * (flare[0] + flare[1])
                 bottom = h.freeboard * (abs(yc) - b) / ((h.flare - 1.0) * b)
-                cols[:, c + 1] = (x, yc, area, bottom, h.freeboard)
+                cols[:, c + 1] = (x, yc, dx * (flare[1] - flare[0]), bottom, h.freeboard)
     return grid
 
 

@@ -286,17 +286,6 @@ def test_window_statistics_of_a_known_signal():
         assert stats["heading_rms"] == pytest.approx(4.0, rel=1e-12)
 
 
-def test_roll_period_with_sway_free_is_the_free_decay_period():
-    """T4 = 2 pi sqrt((I_xx + A44 + z_G^2 m A22/(m + A22)) / (rho g V GM)) against the period
-    of the 6-DOF boat's free roll decay from 5 deg (MuJoCo, every force on, no sail force)."""
-    from sailmujoco.studies.assumptions.episodes import time_constants
-    from sailmujoco.studies.assumptions.sea_analysis import roll_period_sway_free
-
-    measured = time_constants()
-    for boat in ("saoud_robot", "wille_yacht"):
-        assert roll_period_sway_free(boat) == pytest.approx(measured[boat]["roll_period"], rel=0.03), boat
-
-
 def test_developed_seas_are_equally_steep():
     """Pierson-Moskowitz seas with Tp = 4.99 sqrt(Hs): Hs^2 omega_p^4 is the same for every Hs,
     so the slope variance, the integral of (omega^2/g)^2 S(omega) over the simulated band

@@ -42,11 +42,9 @@ the damping it has in calm water; added resistance in waves; green water; the se
 
 from __future__ import annotations
 
-import math
-
 from .._jit import kernel
-from .hydrostatics import buoyancy_wrench
 from ..hull_grid import GRID_ROWS, GRID_STATIONS
+from .hydrostatics import buoyancy_wrench
 from .lane_math import sincos
 
 ORDERS = 4  # e^x ~ 1 + x + x^2/2 + x^3/6
@@ -58,7 +56,7 @@ _AX, _AY, _AZ = 0, ORDERS, 2 * ORDERS
 _A, _AW, _AA, _ER, _EI, _SR, _SI, _ROWS = (3 * ORDERS + i for i in range(8))
 SCRATCH_ROWS = _ROWS  # scratch rows of the sea array, plus two per grid row
 CELL_ROWS = 2 + 3 * ORDERS  # per grid column: eta, d eta / dt, the Froude-Krylov sums
-SMALL_SIZE = 6 + CELL_ROWS * 2 * GRID_STATIONS * GRID_ROWS  # scratch floats: the diffraction's wrench, the cells'
+SMALL_SIZE = 6 + CELL_ROWS * 2 * GRID_STATIONS * GRID_ROWS  # scratch: the diffraction's wrench, the cells
 
 
 @kernel(inline=True)
@@ -240,7 +238,8 @@ def _parts_wrench(pos, rot, columns, cs, rg):
     vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
     s_a = s_ax = s_axx = s_r = s_rx = 0.0
     for k in range(columns.shape[1]):
-        x, y, area, z_bottom, z_top = columns[0, k], columns[1, k], columns[2, k], columns[3, k], columns[4, k]
+        x, y, area = columns[0, k], columns[1, k], columns[2, k]
+        z_bottom, z_top = columns[3, k], columns[4, k]
         eta, rate = cs[0, k], cs[1, k]
         s_a += area
         s_ax += area * x

@@ -24,9 +24,9 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import constants
+from sailmujoco.boat_check import natural_periods
 from sailmujoco.forces.wave_spectra import pierson_moskowitz
 from sailmujoco.forces.waves import WaveConfig, components
-from sailmujoco.hull import gm_transverse
 from sailmujoco.params import get_boat
 from sailmujoco.study import Results, Runs
 from sailmujoco.suite import TASKS
@@ -399,31 +399,11 @@ def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
     return pd.DataFrame(rows)
 
 
-def roll_period_sway_free(boat: str) -> float:
-    """A boat's undamped roll period with sway free, s (the hull's roll and sway coupled through
-    the CG's height; the same equation as the boat check's roll period with the sway term).
-
-    T4 = 2 pi sqrt((I_xx,G + A44 + z_G^2 m A22/(m + A22)) / (rho g V GM)), with z_G the CG's
-    height above the waterline, A22, A44 the sway and roll added mass (SNAME -Y_vdot,
-    -K_pdot) and GM the hull's transverse metacentric height.
-
-    Parameters
-    ----------
-    boat : str
-        A registered boat.
-    """
-    p = get_boat(boat)
-    a = p.added_mass_diagonal
-    inertia = p.inertia[0] + a[3] + p.cg_z**2 * p.mass * a[1] / (p.mass + a[1])  # kg m^2
-    stiffness = p.rho_water * constants.GRAVITY * p.displaced_volume * gm_transverse(p.hull, p.cg_z)  # N m/rad
-    return 2.0 * math.pi * math.sqrt(inertia / stiffness)
-
-
 def roll_resonance(n_components: int) -> dict:
     """Why a sea rolls the boats: each boat's roll period and the waves it meets, and the
     fully developed seas ``SEA_HS``' slopes.
 
-    ``boats``: one row per boat, ``t4`` (:func:`roll_period_sway_free`, s), ``wavelength``
+    ``boats``: one row per boat, ``t4`` (the roll period with sway free, :func:`sailmujoco.boat_check.natural_periods`, s), ``wavelength``
     (deep-water waves of that period, g T4^2/(2 pi), m), ``length`` (the hull's, m).
     ``seas``: one row per Hs of :data:`.sea.SEA_HS`, ``tp`` (s), ``tp_over_t4`` (the yacht's),
     ``omega4_over_omegap`` (the robot's roll frequency over the sea's peak), ``slope_density`` (the wave slope spectrum (omega^2/g)^2 S(omega) at the robot's roll
@@ -436,8 +416,9 @@ def roll_resonance(n_components: int) -> dict:
         Components of the seas, as the runs draw them (seed :data:`.sea.SEA_SEED`).
     """
     g = constants.GRAVITY
-    boats = pd.DataFrame([{"boat": b, "t4": roll_period_sway_free(b),
-                           "wavelength": g * roll_period_sway_free(b) ** 2 / (2.0 * math.pi),
+    t4 = {b: natural_periods(get_boat(b))["roll_period"] for b in sea.FETCH}
+    boats = pd.DataFrame([{"boat": b, "t4": t4[b],
+                           "wavelength": g * t4[b] ** 2 / (2.0 * math.pi),
                            "length": get_boat(b).hull.length} for b in sea.FETCH])
     t4 = dict(zip(boats["boat"], boats["t4"], strict=True))
     omega = 2.0 * math.pi / t4["saoud_robot"]
