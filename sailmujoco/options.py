@@ -36,6 +36,11 @@ foils                "finite", "paper"       --   finite-wing lift slope and 3-D
                                                   eq. 23 on the 2-D table
 keel_downwash        True, False             --   the keel's downwash at the rudder
 windage              True, False             --   air drag of topsides and mast
+wave_hull            True, False             --   in a sea, the waves' forces on the hull
+                                                  (their pressure, diffraction and the
+                                                  damping relative to the water); False:
+                                                  the hull in still water, the sea at the
+                                                  foils alone
 wave_foil_flow       True, False             --   in a sea, the waves' orbital velocity in the
                                                   keel's and rudder's flow; False: the foils
                                                   in still water (or the current)
@@ -163,9 +168,10 @@ class ForceSwitches:
         The keel's downwash at the rudder.
     windage : bool
         Air drag of topsides and mast.
-    wave_foil_flow, wave_diffraction, wave_pressure_decay : bool
-        The sea's mechanisms (in calm water they change nothing): the orbital velocity at the
-        foils; the long-wave diffraction force; the dynamic pressure's decay with depth
+    wave_hull, wave_foil_flow, wave_diffraction, wave_pressure_decay : bool
+        The sea's mechanisms (in calm water they change nothing): the waves' forces on the
+        hull (False: the hull in still water); the orbital velocity at the foils; the
+        long-wave diffraction force; the dynamic pressure's decay with depth
         (docs/physics.md, "The boat in the sea").
     wave_damping : {"relative", "absolute"}
         In a sea, heave and pitch damping on the motion relative to the water, or on the
@@ -186,6 +192,7 @@ class ForceSwitches:
     foils: Foils = "finite"
     keel_downwash: bool = True
     windage: bool = True
+    wave_hull: bool = True
     wave_foil_flow: bool = True
     wave_diffraction: bool = True
     wave_damping: WaveDamping = "relative"
@@ -209,7 +216,7 @@ class PhysicsOptions(ForceSwitches):
         As :class:`ForceSwitches`.
     keel_downwash, windage : bool
         As :class:`ForceSwitches`.
-    wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay
+    wave_hull, wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay
         As :class:`ForceSwitches`.
     sail_mode : {"actuated", "sheeted"}
         The sail command: an angle in rad, or a sheet length in m.

@@ -19,7 +19,7 @@ DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics=
                 sail=True, keel=True, rudder=True, damping=True, added_mass=True,
                 sail_tangential=True, added_mass_coupling="manoeuvring", vertical_damping="world",
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
-                keel_downwash=True, windage=True, wave_foil_flow=True, wave_diffraction=True,
+                keel_downwash=True, windage=True, wave_hull=True, wave_foil_flow=True, wave_diffraction=True,
                 wave_damping="relative", wave_pressure_decay=True, boat_options={}, waves=None)
 
 

@@ -68,6 +68,20 @@ def test_the_compiled_step_is_the_python_step_in_a_sea(boat):
     assert np.array_equal(compiled, reference)
 
 
+@pytest.mark.parametrize("boat", BOATS)
+def test_the_hull_and_the_foils_are_the_seas_only_ways_into_the_boat(boat):
+    """With the waves' forces on the hull and the orbital flow at the foils both off, the boat
+    in a sea is the calm boat to the bit; with either on, it is not."""
+    sea = WaveConfig(hs=0.3 * get_boat(boat).hull.length / 8.8, tp=4.0, seed=2, n_components=30)
+    calm = _trajectory(boat, steps=60)
+    off = ForceSwitches(wave_hull=False, wave_foil_flow=False)
+    neither = _trajectory(boat, steps=60, waves=sea, forces=off)
+    assert np.array_equal(neither, calm)
+    for path in ("wave_hull", "wave_foil_flow"):
+        alone = _trajectory(boat, steps=60, waves=sea, forces=ForceSwitches(**{path: False}))
+        assert np.all(np.isfinite(alone)) and not np.allclose(alone, calm)
+
+
 def _natural_periods(boat):
     p = get_boat(boat)
     h = p.hull

@@ -128,6 +128,7 @@ from .sea_kernels import (
     SB_DX,
     SB_DY,
     SB_FOIL_FLOW,
+    SB_HULL,
     SB_NX,
     SB_NY,
     SB_PRESSURE_DECAY,
@@ -404,7 +405,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     water_dz, water_dpitch = 0.0, 0.0  # the water's heave and pitch rates at the hull (a sea)
     if mode == 2.0:
         diag[D_SUBMERGED] = geometric_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
-        if waves:  # + the sea's part, on the coarse grid (forces/sea_hull.py)
+        if waves and P[sb + SB_HULL] > 0.0:  # + the sea's part, on the coarse grid (forces/sea_hull.py)
             added[0], added[1], added[2] = P[P_A1], P[P_A2], P[P_A3]
             nx, ny = int(P[sb + SB_NX]), int(P[sb + SB_NY])
             hull_sea_wrench(qpos[0:3], R, sea, sea[SEA_ROWS:SEA_ROWS + nx], sea[SEA_ROWS + nx:], grid,

@@ -36,10 +36,11 @@ SEA_ROWS = 13  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kapp
 _M1, _M2, _M3, _M4, _M5, _M6, _M7 = (1.0 / math.factorial(n + 1) for n in range(1, 8))  # 1/(n+1)!
 # The sea's mechanisms (physics options, sailmujoco.options.ForceSwitches), each packed as 1.0 (on)
 # or 0.0 in this order after the ramp in the sea's block of P (forces/boat_parameters.py,
-# P_SEA_BLOCK); wave_damping packs 1.0 for "relative":
-SEA_SWITCHES = ("wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
-SB_RAMP, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(5)
-SB_DX, SB_DY, SB_NX, SB_NY = range(5, 9)  # the hull's grid (sailmujoco/hull_grid.py): steps, counts
+# P_SEA_BLOCK); wave_damping packs 1.0 for "relative". wave_hull and wave_foil_flow split the
+# sea's paths into the boat (the hull's, the foils'); the other three refine the hull's:
+SEA_SWITCHES = ("wave_hull", "wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
+SB_RAMP, SB_HULL, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(6)
+SB_DX, SB_DY, SB_NX, SB_NY = range(6, 10)  # the hull's grid (sailmujoco/hull_grid.py): steps, counts
 
 
 def check_sea(config, dofs: int) -> None:
@@ -110,7 +111,7 @@ def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> n
     P[block + SB_NX], P[block + SB_NY] = grid.nx, grid.ny
     for k, name in enumerate(SEA_SWITCHES):
         value = getattr(switches, name)
-        P[block + SB_FOIL_FLOW + k] = float(value is True or value == "relative")
+        P[block + SB_HULL + k] = float(value is True or value == "relative")
     return np.ascontiguousarray(out)
 
 
