@@ -312,7 +312,7 @@ def test_attribution_names_the_switch_that_removes_the_difference():
 
     table = pd.DataFrame({"case": ["a", "b", "c", "d"], "roll_sd_rel": [0.05, 2.0, -0.5, 9.0],
                           "speed_rel": [0.01, -0.02, 0.09, 3.0], "heel_rel": [0.0, 0.0, 0.0, 0.0],
-                          "drift_rel": [0.0, 0.0, 0.0, 0.0], "pitch_rel": [0.0, 0.0, 0.0, 0.0],
+                          "drift_rel": [0.0, 0.0, 0.0, 0.0], "pitch_sd_rel": [0.0, 0.0, 0.0, 0.0],
                           "lost_heading": ["", "", "", "calm"]})
     # case d lost its heading: left out, though its differences are the largest
     assert largest_cases({"saoud": table}, smoke=False) == [("saoud", "roll_sd", 1)]
@@ -328,3 +328,27 @@ def test_attribution_names_the_switch_that_removes_the_difference():
     # a falling metric (speed lost in the sea) the same way
     named, _ = attribute(2.0, 1.0, {"wave_foil_flow": 1.95, "wave_damping": 1.1})
     assert named == "wave_foil_flow"
+
+
+def test_a_difference_takes_the_path_whose_switch_removes_it():
+    """The sea's two paths (hull, foils): the one whose switch removes at least half of a
+    difference is the path it takes; where that path's rerun lost its heading, the other path's
+    switch removing at most half means the lost one alone makes at least half (both off is the
+    calm boat); where neither removes half, each path alone makes more than half."""
+    from sailmujoco.studies.assumptions import sea_mechanisms
+    from sailmujoco.studies.assumptions.sea_analysis import _path_alone
+
+    nan = float("nan")
+    fine = {"wave_hull": False, "wave_foil_flow": False}
+    assert _path_alone({"wave_hull": nan, "wave_foil_flow": 0.05}, {**fine, "wave_hull": True}) == "wave_hull"
+    assert _path_alone({"wave_hull": nan, "wave_foil_flow": 0.7}, {**fine, "wave_hull": True}) is None
+    assert _path_alone({"wave_hull": 0.3, "wave_foil_flow": 0.2}, fine) is None  # nothing lost
+
+    def row(mechanism, hull, foils, stalled=False):
+        return {"mechanism": mechanism, "wave_hull_removed": hull, "wave_foil_flow_removed": foils,
+                "wave_hull_stalled": stalled, "wave_foil_flow_stalled": False}
+
+    assert sea_mechanisms.path_of(row("wave_hull", 0.9, 0.1)) == "hull"
+    assert sea_mechanisms.path_of(row("wave_foil_flow", 0.2, 1.1)) == "foils"
+    assert sea_mechanisms.path_of(row("", 0.3, 0.2)) == "either"
+    assert sea_mechanisms.path_of(row("", nan, 0.8, stalled=True)) == "stalled"

@@ -216,7 +216,7 @@ def _trajectory_sample(observation) -> dict:
     ts = observation["true_state"]
     return {"t": float(ts["time"]), "x": float(observation["position"][0]),
             "y": float(observation["position"][1]), "heading": float(observation["heading"]),
-            "heel": float(observation["heel"]), "u": float(ts["u"])}
+            "heel": float(observation["heel"]), "pitch": float(ts["pitch"]), "u": float(ts["u"])}
 
 
 # ----------------------------------------------------------------------------- study jobs

@@ -37,7 +37,7 @@ KEYS = {  # a sweep file's top-level keys, what each holds (``sweep --help`` lis
     "duration": "simulated seconds per run (default: the task's)",
     "seeds": "list of seeds, each a run of every combination (default [0])",
     "metrics": "the task's metrics to keep in the table (default: all of them)",
-    "trajectory_rate": "Hz: also store x, y, heading, heel, u at this rate in each run's record",
+    "trajectory_rate": "Hz: also store x, y, heading, heel, pitch, u at this rate in each run's record",
     "options": "table: 'namespace.name' = value, the same for every run",
     "grid": "table: 'namespace.name' = [values], every combination of the axes",
     "zip": "table: 'namespace.name' = [values], equal lengths, taken together, crossed with the grid",

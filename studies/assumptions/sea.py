@@ -48,17 +48,26 @@ SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
 SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail
 SMOKE_HS = (1.0,)  # m, the smoke pass's one sea
 SMOKE_POINT = (10.0, 60.0)  # (m/s, deg): the one wind-plane point in a sea of the smoke pass
-TRAJECTORY_RATE = 10.0  # Hz: heel and heading are stored at this rate (the roll and the heading error)
+TRAJECTORY_RATE = 10.0  # Hz: heel, pitch and heading are stored at this rate (roll, pitch, heading error)
 SAOUD_WIND_FROM_DEG = 90.0  # deg, compass: a beam reach, the heading held north
 SAOUD_DURATION = 90.0  # s (smoke: 25 s): longer than the plane's 50 s, a 2 m sea ramps up over 21 s
 SMOKE_DURATION = 25.0  # s
 TABLE1_SEA_SIMS = ("sim1", "sim2", "sim3")
 SMOKE_TABLE1_SIMS = ("sim3",)
-# The sea's mechanisms, each switched off in turn: (physics option, value that switches it off)
-MECHANISMS = (("wave_foil_flow", False), ("wave_diffraction", False), ("wave_damping", "absolute"),
-              ("wave_pressure_decay", False))
-MECHANISM_ON = {"wave_foil_flow": True, "wave_diffraction": True, "wave_damping": "relative",
+# The sea's mechanisms, each switched off in turn: (physics option, value that switches it off).
+# The first two are the sea's two paths into the boat (both off: the calm boat, to the bit);
+# the others refine the hull's path.
+MECHANISMS = (("wave_hull", False), ("wave_foil_flow", False), ("wave_diffraction", False),
+              ("wave_damping", "absolute"), ("wave_pressure_decay", False))
+PATHS = ("wave_hull", "wave_foil_flow")
+MECHANISM_ON = {"wave_hull": True, "wave_foil_flow": True, "wave_diffraction": True, "wave_damping": "relative",
                 "wave_pressure_decay": True}  # the sea as built (PhysicsOptions' defaults)
+MECHANISM_NAMES = {  # what each switch takes out, in words
+    "wave_hull": "the waves' forces on the hull",
+    "wave_foil_flow": "the orbital flow at the keel and rudder",
+    "wave_diffraction": "the hull's diffraction force",
+    "wave_damping": "heave and pitch damping relative to the water",
+    "wave_pressure_decay": "the wave pressure's decay with depth"}
 SEA_JOB = "assumptions_sea"  # the job list of Table 1's runs in a sea
 CALM_JOB = "assumptions_sea_calm"  # ... of the same runs in calm water (the heel kept)
 MECHANISM_JOB = "assumptions_sea_mechanisms"  # ... and of their reruns, a mechanism off
@@ -164,13 +173,14 @@ def table1_wind_from_deg() -> float:
     return math.degrees(TASKS["beam_reach_roll"](seed=0).wind().direction_from) % 360.0
 
 
-def window_statistics(t, heel, heading_error, window: float) -> dict:
-    """The roll and the heading over a run's last ``window`` seconds.
+def window_statistics(t, heel, heading_error, window: float, pitch=None) -> dict:
+    """The roll, the pitch and the heading over a run's last ``window`` seconds.
 
     ``roll_sd``: the heel's standard deviation about its mean, deg (stable in a random sea,
     where the peak-to-peak is an extreme value that grows with the window's length);
     ``heading_rms``: the heading error's RMS, deg; ``roll_period``: the heel's mean
-    zero-up-crossing period about its mean, s (NaN with fewer than two up-crossings).
+    zero-up-crossing period about its mean, s (NaN with fewer than two up-crossings);
+    ``pitch_sd``: the pitch's standard deviation, deg, where ``pitch`` is given.
 
     Parameters
     ----------
@@ -182,16 +192,21 @@ def window_statistics(t, heel, heading_error, window: float) -> dict:
         Heading minus the heading to hold, wrapped to [-pi, pi], rad.
     window : float
         The window's length, s.
+    pitch : array_like, optional
+        Pitch at those times, rad.
     """
     t, heel, error = (np.asarray(v, dtype=float) for v in (t, heel, heading_error))
     late = t >= (t[-1] if t.size else 0.0) - window
+    out = {"pitch_sd": math.nan} if pitch is not None else {}
     if late.sum() < 4:
-        return {"roll_sd": math.nan, "heading_rms": math.nan, "roll_period": math.nan}
+        return {"roll_sd": math.nan, "heading_rms": math.nan, "roll_period": math.nan, **out}
+    if pitch is not None:
+        out["pitch_sd"] = math.degrees(float(np.std(np.asarray(pitch, dtype=float)[late])))
     t, heel = t[late], heel[late] - np.mean(heel[late])
     up = t[1:][(heel[:-1] < 0.0) & (heel[1:] >= 0.0)]
     return {"roll_sd": math.degrees(float(np.std(heel))),
             "heading_rms": math.degrees(float(np.sqrt(np.mean(error[late] ** 2)))),
-            "roll_period": float(np.mean(np.diff(up))) if up.size > 1 else math.nan}
+            "roll_period": float(np.mean(np.diff(up))) if up.size > 1 else math.nan, **out}
 
 
 def table1_heading() -> float:

@@ -10,9 +10,12 @@ stalled, or bore away): its case's difference is not the sea's effect on a boat 
 course, and the attribution leaves it out. For every series and metric whose difference goes
 beyond ``DIFFERENCE`` in a case where both runs keep their heading, the case where it is
 largest is rerun with each of the sea's mechanisms off in turn (:data:`.sea.MECHANISMS`): the
-share of the difference a switch removes is 1 - (switched - calm)/(sea - calm), and the
-mechanism whose switch removes at least ``EXPLAINS`` of it, the most of them, explains it
-(:func:`attribute`); a switched run that loses its heading is reported as stalled.
+share of the difference a switch removes is 1 - (switched - calm)/(sea - calm). The sea reaches
+the boat by two paths, the hull and the foils (:data:`.sea.PATHS`; both off, the calm boat to
+the bit): the path whose switch removes at least ``EXPLAINS`` of the difference, the more of
+the two, is the one it takes, and the refinement of the hull's path whose switch removes at
+least that much, the most, the part of the hull's physics it comes from (:func:`attribute`).
+A switched run that loses its heading is reported as stalled.
 """
 
 from __future__ import annotations
@@ -44,7 +47,7 @@ SAILING = {"speed": ("steady speed", "m/s", SPEED_FLOOR),
            "heel": ("steady heel", "deg", HEEL_HOLDS_DEG),
            "roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
            "drift": ("drift angle (leeway)", "deg", ANGLE_FLOOR_DEG),
-           "pitch": ("pitch amplitude", "deg", ANGLE_FLOOR_DEG)}
+           "pitch_sd": ("pitch σ (the pitch's standard deviation)", "deg", ANGLE_FLOOR_DEG)}
 # the metrics of a Table 1 run (over its last 50 s)
 TABLE1 = {"roll_sd": ("roll σ (the heel's standard deviation)", "deg", ANGLE_FLOOR_DEG),
           "surge": ("mean surge", "m/s", SPEED_FLOOR),
@@ -69,7 +72,8 @@ class SeaAnalysis:
     mechanisms : pandas.DataFrame
         One row per series and metric beyond ``DIFFERENCE``: its largest case, the value with
         each mechanism off, the share each switch removes (NaN where the switched run
-        stalled, ``<mechanism>_stalled``) and the mechanism named.
+        stalled, ``<mechanism>_stalled``), the path named and the hull's refinement named
+        (:func:`attribution`).
     resonance : dict
         :func:`roll_resonance`: each boat's roll period and the seas' slopes.
     """
@@ -94,8 +98,8 @@ def sailing_values(record: dict) -> dict:
     """A heading-hold run's metrics (``SAILING``, angles in degrees), status, cost, heading
     error RMS and heel period.
 
-    Roll, heading error and the heel's period come from the heel and heading stored in the
-    run's trajectory over its steady window (:func:`.sea.window_statistics`).
+    Roll, pitch, heading error and the heel's period come from the heel, pitch and heading
+    stored in the run's trajectory over its steady window (:func:`.sea.window_statistics`).
 
     Parameters
     ----------
@@ -108,15 +112,14 @@ def sailing_values(record: dict) -> dict:
     held = TASKS[record["task"]](seed=0, **options).desired_heading
     stats = sea.window_statistics([s["t"] for s in trajectory], [s["heel"] for s in trajectory],
                                   [math.remainder(s["heading"] - held, 2.0 * math.pi) for s in trajectory],
-                                  options["steady_window"])
+                                  options["steady_window"], [s["pitch"] for s in trajectory])
     nan = float("nan")
     return {"status": record["status"], **stats,
             "stopped": str(record.get("error") or "") if record["status"] != "ok" else "",
             "wall_time": record.get("wall_time", nan),
             "speed": m.get("steady_speed", nan),
             "heel": abs(math.degrees(m.get("steady_heel", nan))),
-            "drift": abs(math.degrees(m.get("drift_angle", nan))),
-            "pitch": math.degrees(m.get("pitch_amplitude", nan))}
+            "drift": abs(math.degrees(m.get("drift_angle", nan)))}
 
 
 def table1_values(numbers: dict) -> dict:
@@ -236,6 +239,14 @@ def first_pass(results: Results, smoke: bool) -> dict:
     return tables
 
 
+def _kept_differences(table: pd.DataFrame, metric: str) -> np.ndarray:
+    """|relative change| of ``metric`` per case, -1 where it is not finite or a run lost its
+    heading."""
+    rel = table[f"{metric}_rel"].abs().to_numpy(dtype=float)
+    kept = table["lost_heading"].eq("").to_numpy() if "lost_heading" in table else True
+    return np.where(np.isfinite(rel) & kept, rel, -1.0)
+
+
 def largest_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
     """(series, metric, case index) of every series and metric whose difference goes beyond
     ``DIFFERENCE`` in a case where calm and sea runs keep their heading: the case where it is
@@ -251,9 +262,7 @@ def largest_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
     out = []
     for series, table in tables.items():
         for metric in metrics_of(series):
-            rel = table[f"{metric}_rel"].abs().to_numpy(dtype=float)
-            kept = table["lost_heading"].eq("").to_numpy() if "lost_heading" in table else True
-            rel = np.where(np.isfinite(rel) & kept, rel, -1.0)
+            rel = _kept_differences(table, metric)
             if rel.size and rel.max() > DIFFERENCE:
                 out.append((series, metric, int(np.argmax(rel)), float(rel.max())))
     if smoke and out:
@@ -261,13 +270,30 @@ def largest_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
     return [item[:3] for item in out]
 
 
+def differing_cases(tables: dict, smoke: bool) -> list[tuple[str, str, int]]:
+    """(series, metric, case index) of every difference beyond ``DIFFERENCE`` in a case where
+    calm and sea runs keep their heading, series by series, metric by metric. Smoke: the
+    largest of all only (:func:`largest_cases`).
+
+    Parameters
+    ----------
+    tables : dict
+        Series -> its table (:func:`first_pass`).
+    smoke : bool
+        The study's short pass.
+    """
+    if smoke:
+        return largest_cases(tables, smoke)
+    return [(series, metric, int(case)) for series, table in tables.items() for metric in metrics_of(series)
+            for case in np.flatnonzero(_kept_differences(table, metric) > DIFFERENCE)]
+
+
 def _cases_by_series(selected: list) -> dict:
+    """Series -> its cases of ``selected``, each once, in ascending order."""
     out = {}
     for series, _, case in selected:
-        out.setdefault(series, [])
-        if case not in out[series]:
-            out[series].append(case)
-    return out
+        out.setdefault(series, set()).add(case)
+    return {series: sorted(cases) for series, cases in out.items()}
 
 
 def _mechanism_sources(smoke: bool) -> dict:
@@ -278,7 +304,8 @@ def _mechanism_sources(smoke: bool) -> dict:
 
 
 def mechanism_runs(results: Results, smoke: bool) -> Runs:
-    """The second pass: each largest case (:func:`largest_cases`) with each mechanism off in turn.
+    """The second pass: each case with a difference (:func:`differing_cases`) with each
+    mechanism off in turn.
 
     Parameters
     ----------
@@ -287,7 +314,7 @@ def mechanism_runs(results: Results, smoke: bool) -> Runs:
     smoke : bool
         The study's short pass.
     """
-    by_series = _cases_by_series(largest_cases(first_pass(results, smoke), smoke))
+    by_series = _cases_by_series(differing_cases(first_pass(results, smoke), smoke))
     sources = _mechanism_sources(smoke)
     sweeps = tuple((spec, f"sweeps/{spec['name']}") for spec in
                    (sea.mechanism_spec(sources[s], cases) for s, cases in by_series.items() if s in sources))
@@ -360,10 +387,25 @@ def _switched_values(results: Results, series: str, cases: list, smoke: bool) ->
             for j, name in enumerate(names)}
 
 
+def _path_alone(removed: dict, stalled: dict) -> str | None:
+    """The path whose switched rerun lost its heading, where the other path's switch removes at
+    most 1 - ``EXPLAINS`` of the difference: with both paths off the boat is the calm boat, so
+    the stalled one alone makes at least ``EXPLAINS`` of it. None otherwise."""
+    lost = [name for name in sea.PATHS if stalled[name]]
+    if len(lost) != 1:
+        return None
+    other = next(name for name in sea.PATHS if name != lost[0])
+    return lost[0] if math.isfinite(removed[other]) and removed[other] <= 1.0 - EXPLAINS else None
+
+
 def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
-    """The mechanisms' table: for each series and metric beyond ``DIFFERENCE``, its largest
-    case, the metric with each mechanism off, the share each removes (NaN where the switched
-    run lost its heading: ``<mechanism>_stalled``) and the one named.
+    """The mechanisms' table: each difference beyond ``DIFFERENCE`` (:func:`differing_cases`;
+    ``largest``: the largest of its series and metric), the metric with each mechanism off, the share each removes (NaN where the switched
+    run lost its heading: ``<mechanism>_stalled``), the path it takes (``mechanism``: the one of
+    :data:`.sea.PATHS` that :func:`attribute` names or, where one path's rerun lost its heading,
+    :func:`_path_alone`; ``path_alone`` then) and the refinement of the hull's path
+    that explains it (``refinement``: :func:`attribute` over the other switches), each "" when
+    none does.
 
     Parameters
     ----------
@@ -374,7 +416,8 @@ def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
     smoke : bool
         The study's short pass.
     """
-    selected = largest_cases(tables, smoke)
+    selected = differing_cases(tables, smoke)
+    largest = set(largest_cases(tables, smoke))
     by_series = _cases_by_series(selected)
     switched = {s: _switched_values(results, s, cases, smoke) for s, cases in by_series.items()}
     rows = []
@@ -384,17 +427,22 @@ def attribution(results: Results, tables: dict, smoke: bool) -> pd.DataFrame:
         runs = {name: switched[series][(case, name)] for name, _ in sea.MECHANISMS}
         values = {name: float(run[metric]) for name, run in runs.items()}
         stalled = {name: lost_heading(run) for name, run in runs.items()}
-        named, removed = attribute(calm, sea_value,
-                                   {n: (math.nan if stalled[n] else v) for n, v in values.items()})
+        kept = {n: (math.nan if stalled[n] else v) for n, v in values.items()}
+        path, removed = attribute(calm, sea_value, {n: kept[n] for n in sea.PATHS})
+        path, alone = path or _path_alone(removed, stalled), not path
+        refinement, finer = attribute(calm, sea_value, {n: v for n, v in kept.items() if n not in sea.PATHS})
+        removed.update(finer)
         label, unit, _ = metrics_of(series)[metric]
         row = {"series": SERIES[series], "case": row_in["case"], "metric": label, "unit": unit,
                "status": row_in["status"], "calm": calm, "sea": sea_value,
-               "change": sea_value - calm, "rel": float(row_in[f"{metric}_rel"])}
+               "change": sea_value - calm, "rel": float(row_in[f"{metric}_rel"]),
+               "largest": (series, metric, case) in largest}
         for name, _ in sea.MECHANISMS:
             row[f"{name}_off"] = values[name]
             row[f"{name}_removed"] = removed[name]
             row[f"{name}_stalled"] = stalled[name]
-        row["mechanism"] = named or ""
+        row["mechanism"], row["refinement"] = path or "", refinement or ""
+        row["path_alone"] = bool(path) and alone
         rows.append(row)
     return pd.DataFrame(rows)
 

@@ -25,15 +25,13 @@ from .figures import heatmap
 from .figures import write as write_figures
 from .sea_analysis import (
     DIFFERENCE,
-    EXPLAINS,
     HEADING_LOST_DEG,
     SAILING,
-    SERIES,
     TABLE1,
     SeaAnalysis,
-    lost_cases,
     metrics_of,
 )
+from .sea_mechanisms import PATH_WORDS, mechanism_text, mechanisms_section, paths
 from .table import headline as table_headline
 
 SEA_FILES = {"saoud_robot": "sea_wind_plane.csv", "table1": "sea_table1.csv", "saoud": "sea_saoud.csv",
@@ -82,6 +80,9 @@ def headline(analysis) -> dict:
         out[f"sea_{series}_stopped"] = int((table["status"] != "ok").sum())
         out[f"sea_{series}_lost_heading"] = int((table["lost_heading"] != "").sum())
     out["sea_mechanism_rows"] = len(analysis.sea.mechanisms)
+    taken = paths(analysis.sea)
+    for path in PATH_WORDS:
+        out[f"sea_differences_by_{path}"] = taken.count(path)
     return out
 
 
@@ -140,15 +141,17 @@ def _series_figure(plt, s: SeaAnalysis, out: Path) -> None:
     _mark_stops(axes[0], t1)
     axes[0].set_title("Wille's roll controller (Table 1): roll, the heel's SD", fontsize=9)
     sa = s.tables["saoud"]
-    for metric in ("roll_sd", "heel", "pitch"):
+    for metric in ("roll_sd", "heel", "pitch_sd"):
         axes[1].plot([0.0, *sa["hs"]], [float(sa[f"{metric}_calm"].iloc[0]), *sa[f"{metric}_sea"]], "o-",
-                     label=SAILING[metric][0])
+                     label=SAILING[metric][0].split(" (")[0])
     _mark_stops(axes[1], sa)
     axes[1].set_title("Saoud's optimal sail (robot, beam reach)", fontsize=9)
     for ax in axes:
         ax.set_xlabel("significant wave height Hs [m] (0: calm water)")
         ax.set_ylabel("[deg]")
-        ax.legend(fontsize=8)
+    axes[0].legend(fontsize=8)
+    # below the axes: the three lines and the marks leave no corner free
+    axes[1].legend(fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.18), ncol=4)
     fig.suptitle("Fully developed seas of height Hs, from the wind's bearing")
     save_figure(fig, out / SEA_FIGURES["series"])
 
@@ -167,8 +170,8 @@ def _mark_stops(ax, table: pd.DataFrame) -> None:
 
 
 def summary_sentence(s: SeaAnalysis) -> str:
-    """One sentence for the summary: the speed change over the wind plane, the roll, the stops
-    and the cases that lost their heading.
+    """One sentence for the summary: the speed change over the wind plane, the roll, the stops,
+    the cases that lost their heading and the paths the differences take.
 
     Parameters
     ----------
@@ -180,12 +183,17 @@ def summary_sentence(s: SeaAnalysis) -> str:
     stopped = sum(int((t["status"] != "ok").sum()) for t in s.tables.values())
     lost = sum(int((t["lost_heading"] != "").sum()) for t in s.tables.values())
     runs = sum(len(t) for t in s.tables.values())
-    return (f"In a sea (section \"The sea against calm water\"), the steady speed changes by "
-            f"{value_range(kept['speed_rel'], 100, '{:+.0f}')} % over the wind plane where the boat keeps "
-            f"its heading, and the roll (the heel's standard deviation) reaches "
-            f"{value_range(plane['roll_sd_sea'], fmt='{:.1f}').split(' … ')[-1]}°; "
-            f"{stopped} of {runs} runs in a sea stopped early and {lost} of {runs} cases lost their heading "
-            f"in calm water or in the sea.")
+    taken = paths(s)
+    stops = f"{stopped} of {runs} runs in a sea stopped early, " if stopped else ""
+    return (f"In a sea, the steady speed changes by {value_range(kept['speed_rel'], 100, '{:+.0f}')} % where "
+            f"the boat keeps its heading and the roll σ reaches "
+            f"{value_range(plane['roll_sd_sea'], fmt='{:.1f}').split(' … ')[-1]}°; {stops}"
+            f"{lost} of {runs} cases lost their heading; of {len(taken)} differences beyond "
+            f"{100 * DIFFERENCE:g} %, " + ", ".join(
+                f"{taken.count(p)} come by {PATH_WORDS[p]}" if p != "stalled"
+                else f"{taken.count(p)} not attributed (a rerun lost its heading)"
+                for p in PATH_WORDS if taken.count(p))
+            + " (sections \"The sea against calm water\", \"Where each difference comes from\").")
 
 
 def _stops(table: pd.DataFrame) -> str:
@@ -195,39 +203,6 @@ def _stops(table: pd.DataFrame) -> str:
     return f"{len(stopped)} of {len(table)} runs in a sea stopped early: " + "; ".join(
         f"{row['case']}: {row['stopped'].splitlines()[0] if row['stopped'] else row['status']}"
         for _, row in stopped.iterrows()) + "."
-
-
-def _mechanism_text(s: SeaAnalysis, series: str, metric: str) -> str:
-    m = s.mechanisms
-    if m.empty:
-        return "—"
-    row = m[(m["series"] == SERIES[series]) & (m["metric"] == metrics_of(series)[metric][0])]
-    if row.empty:
-        return "—"
-    return _named(row.iloc[0])
-
-
-def _named(row) -> str:
-    removed = {name: row[f"{name}_removed"] for name, _ in sea.MECHANISMS}
-    finite = {k: v for k, v in removed.items() if np.isfinite(v)}
-    if row["mechanism"]:
-        name = row["mechanism"]
-        return f"`env.{name} = {_off(name)}` removes {_percent(removed[name])}"
-    if not finite:
-        return "every rerun stalled" if all(row[f"{n}_stalled"] for n in removed) else "no rerun finished"
-    best = max(finite, key=finite.get)
-    if finite[best] <= 0.0:
-        return "no single switch explains it (none makes it smaller)"
-    return f"no single switch explains it (the most: `env.{best} = {_off(best)}`, {_percent(finite[best])})"
-
-
-def _percent(share: float) -> str:
-    return f"{round(100.0 * share)} %"  # an int: no "-0 %"
-
-
-def _off(name: str) -> str:
-    value = dict(sea.MECHANISMS)[name]
-    return f'"{value}"' if isinstance(value, str) else str(value).lower()
 
 
 def _plane_rows(s: SeaAnalysis) -> list[dict]:
@@ -245,7 +220,7 @@ def _plane_rows(s: SeaAnalysis) -> list[dict]:
                 f"beyond ±{100 * DIFFERENCE:g} %": f"{int((np.abs(rel) > DIFFERENCE).sum())} of {len(t)}"
                 + f" ({len(s.tables[boat]) - len(t)} lost their heading)",
                 "largest": "—" if top is None else f"{100 * top[f'{metric}_rel']:+.0f} % at {top['case']}",
-                "mechanism": _mechanism_text(s, boat, metric)})
+                "the sea's path, each difference": mechanism_text(s, boat, metric)})
     return rows
 
 
@@ -276,8 +251,9 @@ def _plane_section(r, s: SeaAnalysis) -> None:
         f"|sea − calm| exceeds {100 * DIFFERENCE:g} % of the calm value, or of the floor where the calm "
         "value is smaller (" + ", ".join(f"{label} {floor:g} {unit}" for label, unit, floor in SAILING.values())
         + "; heel and drift angle as magnitudes). " + ROLL_TEXT + " " + _lost_text() + " The table's "
-        "ranges and counts are over the cases where both runs keep their heading. The mechanism "
-        "column: the switch that removes most of the largest difference (section \"Where each "
+        "ranges and counts are over the cases where both runs keep their heading. The last "
+        "column: how many of those differences the waves' forces on the hull explain, how many the "
+        "orbital flow at the foils, and how many either path makes alone (section \"Where each "
         "difference comes from\").")
     r.table(_plane_rows(s))
     r.paragraph(" ".join(f"{boat}: {_stops(s.tables[boat])} {_lost_list(s.tables[boat])}"
@@ -359,47 +335,6 @@ def _series_sections(r, s: SeaAnalysis) -> None:
                                     "heel, roll and pitch, against the sea's height")
 
 
-def _mechanisms_section(r, s: SeaAnalysis) -> None:
-    names = ", ".join(f"`env.{name} = {_off(name)}`" for name, _ in sea.MECHANISMS)
-    r.section("Where each difference comes from", (
-        f"For every series and metric with a difference beyond {100 * DIFFERENCE:g} %, the case where it "
-        f"is largest is run again with each of the sea's mechanisms off in turn ({names}). The share "
-        "of the difference a switch removes is 1 − (switched − calm)/(sea − calm); the switch that "
-        f"removes the most, and at least {100 * EXPLAINS:g} %, names the mechanism. Only cases where "
-        "the calm run, the run in the sea and every switched run keep their heading are attributed: a "
-        "switched run that loses it is marked stalled, its share not counted."))
-    rows = []
-    for _, m in s.mechanisms.iterrows():
-        row = {"series": m["series"], "case": m["case"], "metric": f"{m['metric']} [{m['unit']}]",
-               "calm → sea": f"{m['calm']:.2f} → {m['sea']:.2f}"}
-        for name, _ in sea.MECHANISMS:
-            row[f"`env.{name} = {_off(name)}` removes"] = "stalled" if m[f"{name}_stalled"] else (
-                _percent(m[f"{name}_removed"]) if np.isfinite(m[f"{name}_removed"]) else "—")
-        row["explained by"] = _named(m)
-        rows.append(row)
-    if rows:
-        r.table(rows)
-        idle = [name for name, _ in sea.MECHANISMS
-                if (s.mechanisms[f"{name}_off"] == s.mechanisms["sea"]).all()]
-        if idle:
-            r.paragraph("Switched off, " + ", ".join(f"`env.{n} = {_off(n)}`" for n in idle)
-                        + " leave" + ("s" if len(idle) == 1 else "") + " every metric of these reruns "
-                        "as it is with the switch on, to the bit.")
-    else:
-        r.paragraph(f"No metric differs by more than {100 * DIFFERENCE:g} %.")
-    lost = lost_cases(s.tables)
-    if lost.empty:
-        r.paragraph("Every case keeps its heading in calm water and in the sea: none is left out.")
-        return
-    r.paragraph(f"Left out: the {len(lost)} cases whose calm or sea run lost its heading (heading error RMS "
-                f"over the window beyond {HEADING_LOST_DEG:g}°). Their difference is that of a boat off its "
-                "course, not of one of the sea's mechanisms on a boat sailing it.")
-    r.table([{"series": row["series"], "case": row["case"], "lost its heading": row["lost"],
-              "heading error RMS, calm → sea [deg]": f"{row['heading_rms_calm']:.1f} → {row['heading_rms_sea']:.1f}",
-              "speed or surge, calm → sea [m/s]": f"{row['speed_calm']:.2f} → {row['speed_sea']:.2f}"}
-             for _, row in lost.iterrows()])
-
-
 def _resonance_section(r, s: SeaAnalysis) -> None:
     g, res = constants.GRAVITY, s.resonance
     boats, seas = res["boats"].set_index("boat"), res["seas"]
@@ -454,4 +389,4 @@ def sections(r, s: SeaAnalysis) -> None:
     _plane_section(r, s)
     _series_sections(r, s)
     _resonance_section(r, s)
-    _mechanisms_section(r, s)
+    mechanisms_section(r, s)
