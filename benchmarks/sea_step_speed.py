@@ -7,13 +7,17 @@ Run: python benchmarks/sea_step_speed.py [--hs 1.5] [--tp 6] [--components 100] 
 without the option); "sea" the same with ``waves=WaveConfig(spectrum="jonswap", hs, tp,
 n_components)``: at every RK4 stage the Froude-Krylov pressure on every hull column for every
 component, and the orbital flow at the keel and the rudder. "bare" is 20 ``mujoco.mj_step``
-calls on a fresh MjData of the same model. Each is timed for ``--seconds`` of wall time after
-one warm-up call.
+calls on a fresh MjData of the same model. The three take turns in short blocks (``BLOCK``
+seconds each) for ``--seconds`` of wall time in all, after one warm-up call each; each cost is
+the median of its blocks' means, and each ratio the median of the ratios of blocks taken side
+by side, so that a slower or faster spell of the machine (another process, the clock's
+frequency) falls on all three alike.
 """
 
 from __future__ import annotations
 
 import argparse
+import statistics
 import time
 
 import mujoco
@@ -22,15 +26,33 @@ from sailmujoco.boats import BUILT_IN
 from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
 from sailmujoco.physics import BoatPhysics
 
+BLOCK = 0.05  # s, the wall time of one block of calls
 
-def seconds_per_call(call, budget: float) -> float:
-    """Mean wall seconds of ``call()`` over about ``budget`` seconds, after one warm-up call."""
-    call()
+
+def block_mean(call, budget: float) -> float:
+    """Mean wall seconds of ``call()`` over about ``budget`` seconds."""
     start, n = time.perf_counter(), 0
     while time.perf_counter() - start < budget:
         call()
         n += 1
     return (time.perf_counter() - start) / n
+
+
+def interleaved(calls: dict, seconds: float) -> dict:
+    """Each call's block means, the calls taking turns in blocks of ``BLOCK`` seconds for about
+    ``seconds`` in all, after one warm-up call each: name -> list of mean wall seconds per call."""
+    for call in calls.values():
+        call()
+    out = {name: [] for name in calls}
+    for _ in range(max(1, round(seconds / (BLOCK * len(calls))))):
+        for name, call in calls.items():
+            out[name].append(block_mean(call, BLOCK))
+    return out
+
+
+def median_ratio(a: list, b: list) -> float:
+    """The median of a[i] / b[i], blocks taken side by side."""
+    return statistics.median(x / y for x, y in zip(a, b, strict=True))
 
 
 def main() -> None:
@@ -54,11 +76,12 @@ def main() -> None:
             for _ in range(20):
                 mujoco.mj_step(model, data)
 
-        t_bare = seconds_per_call(bare, args.seconds)
-        t_calm = seconds_per_call(lambda p=calm: p.step(20), args.seconds)
-        t_sea = seconds_per_call(lambda p=rough: p.step(20), args.seconds)
-        print(f"{boat:12s} {t_bare * 1e3:7.3f}ms {t_calm * 1e3:7.3f}ms {t_sea * 1e3:8.3f}ms "
-              f"{t_sea / t_calm:8.2f}x {t_sea / t_bare:8.2f}x")
+        t = interleaved({"bare": bare, "calm": lambda p=calm: p.step(20), "sea": lambda p=rough: p.step(20)},
+                        3 * args.seconds)
+        median = {name: statistics.median(values) for name, values in t.items()}
+        print(f"{boat:12s} {median['bare'] * 1e3:7.3f}ms {median['calm'] * 1e3:7.3f}ms "
+              f"{median['sea'] * 1e3:8.3f}ms "
+              f"{median_ratio(t['sea'], t['calm']):8.2f}x {median_ratio(t['sea'], t['bare']):8.2f}x")
 
 
 if __name__ == "__main__":
