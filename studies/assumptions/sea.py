@@ -30,6 +30,7 @@ import numpy as np
 from sailmujoco import constants
 from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK
 from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
+from sailmujoco.options import ForceSwitches
 from sailmujoco.study import Runs
 from sailmujoco.suite import TASKS
 
@@ -60,8 +61,7 @@ SMOKE_TABLE1_SIMS = ("sim3",)
 MECHANISMS = (("wave_hull", False), ("wave_foil_flow", False), ("wave_diffraction", False),
               ("wave_damping", "absolute"), ("wave_pressure_decay", False))
 PATHS = ("wave_hull", "wave_foil_flow")
-MECHANISM_ON = {"wave_hull": True, "wave_foil_flow": True, "wave_diffraction": True, "wave_damping": "relative",
-                "wave_pressure_decay": True}  # the sea as built (PhysicsOptions' defaults)
+MECHANISM_ON = {name: getattr(ForceSwitches(), name) for name, _ in MECHANISMS}  # the sea as built
 MECHANISM_NAMES = {  # what each switch takes out, in words
     "wave_hull": "the waves' forces on the hull",
     "wave_foil_flow": "the orbital flow at the keel and rudder",
