@@ -65,7 +65,7 @@ SEA_KINDS = ("fully_developed", "fetch_limited")
 BAND = (0.5, 5.0)  # -, the simulated band as multiples of omega_p
 RAMP_PERIODS = 3.0  # -, the ramp lasts this many peak periods
 WAVE_STREAM = 3  # the sea's random stream, default_rng([seed, 3]); the wind uses 1 and 2
-N_COMPONENTS = 24  # -, default number of components (the cost and the error: docs/physics.md)
+N_COMPONENTS = 16  # -, default number of components (the cost and the error: docs/physics.md)
 GAMMA_RANGE = (1.0, 7.0)  # -, JONSWAP gamma, DNV-RP-C205 §3.5.5
 MAX_WIND = 100.0  # m/s, U10 for a wind-raised sea, as WindConfig.speed
 
