@@ -185,9 +185,9 @@ def summary_sentence(s: SeaAnalysis) -> str:
     runs = sum(len(t) for t in s.tables.values())
     taken = paths(s)
     stops = f"{stopped} of {runs} runs in a sea stopped early, " if stopped else ""
-    return (f"In a sea, the steady speed changes by {value_range(kept['speed_rel'], 100, '{:+.0f}')} % where "
-            f"the boat keeps its heading and the roll σ reaches "
-            f"{value_range(plane['roll_sd_sea'], fmt='{:.1f}').split(' … ')[-1]}°; {stops}"
+    return (f"In a sea, where the boat keeps its heading, the steady speed changes by "
+            f"{value_range(kept['speed_rel'], 100, '{:+.0f}')} % and the roll σ reaches "
+            f"{value_range(kept['roll_sd_sea'], fmt='{:.1f}').split(' … ')[-1]}°; {stops}"
             f"{lost} of {runs} cases lost their heading; of {len(taken)} differences beyond "
             f"{100 * DIFFERENCE:g} %, " + ", ".join(
                 f"{taken.count(p)} come by {PATH_WORDS[p]}" if p != "stalled"
