@@ -28,7 +28,7 @@ EXAMPLES = """examples:
   sailmujoco video saoud_robot heading_hold --controller my_law.py:make --option gain=0.5 \\
       --out results/my_law.mp4
   sailmujoco video wille_yacht beam_reach_roll --controller wille_roll --seconds 30 \\
-      --waves hs=1.5 --waves tp=6 --waves n_components=32 --out results/beam_sea.mp4
+      --waves hs=1.5 --waves tp=6 --out results/beam_sea.mp4
       # a 1.5 m JONSWAP sea (the default spectrum), 6 s peak period, from the wind's bearing"""
 
 

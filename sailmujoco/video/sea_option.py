@@ -13,6 +13,7 @@ from __future__ import annotations
 import argparse
 
 from ..arguments import setting
+from ..forces.waves import N_COMPONENTS
 from ..names import check_known
 from ..options import WAVE_OPTIONS, wave_config
 
@@ -29,8 +30,8 @@ def add_waves_argument(parser: argparse.ArgumentParser) -> None:
                         help="the sea, one key per --waves (repeatable): hs (significant height, m; "
                              "0: calm, the default), tp (peak period, s), spectrum (jonswap, pm, "
                              "regular), direction_from_deg (compass bearing the waves come from; "
-                             "default: the wind's), gamma, spreading, n_components (100; 16-32 run "
-                             "faster), seed")
+                             "default: the wind's), gamma, spreading, n_components (default "
+                             f"{N_COMPONENTS}; more: a finer spectrum, a slower step), seed")
 
 
 def wind_bearing(task: str, seed: int, settings: dict) -> float:
