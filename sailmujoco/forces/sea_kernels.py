@@ -93,15 +93,15 @@ def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> n
 
     Parameters
     ----------
-    switches : ForceSwitches
-        The physics' switches; those of :data:`SEA_SWITCHES` are packed (1.0 on; wave_damping
-        1.0 for "relative").
     grid : HullGrid
         The hull's coarse grid (:func:`sailmujoco.hull_grid.hull_grid`).
     shares : numpy.ndarray, shape (nx,)
         Each station's share of the added mass (:func:`sailmujoco.hull_grid.section_weights`).
     P : numpy.ndarray
         The packed parameters, written in place.
+    switches : ForceSwitches
+        The physics' switches; those of :data:`SEA_SWITCHES` are packed (1.0 on; wave_damping
+        1.0 for "relative").
     """
     out = np.zeros((6, max(grid.columns.shape[1], grid.nx)))
     out[:5] = grid.columns
