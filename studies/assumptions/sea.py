@@ -266,7 +266,8 @@ def table1_sea_run(job: dict) -> dict:
     result = table1_simulate(job["run"])
     stopped = result["metrics"].get("stopped")
     traj = result["trajectory"]
-    error = [math.remainder(math.radians(h) - table1_heading(), 2.0 * math.pi) for h in traj["heading_deg"]]
+    held = table1_heading()
+    error = [math.remainder(math.radians(h) - held, 2.0 * math.pi) for h in traj["heading_deg"]]
     stats = window_statistics(traj["t"], np.radians(traj["heel_deg"]), error, TABLE1_WINDOW)
     return {**table1_numbers(result), **stats, "sailed": float(traj["t"].iloc[-1]),
             "stopped": str(stopped) if stopped else ""}
