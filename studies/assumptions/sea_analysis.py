@@ -468,7 +468,6 @@ def roll_resonance(n_components: int) -> dict:
     boats = pd.DataFrame([{"boat": b, "t4": t4[b],
                            "wavelength": g * t4[b] ** 2 / (2.0 * math.pi),
                            "length": get_boat(b).hull.length} for b in sea.FETCH])
-    t4 = dict(zip(boats["boat"], boats["t4"], strict=True))
     omega = 2.0 * math.pi / t4["saoud_robot"]
     rows = []
     for hs in sea.SEA_HS:
