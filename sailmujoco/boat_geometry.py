@@ -98,7 +98,7 @@ def hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
     verts, rings = [], []
     theta = np.linspace(-0.5 * np.pi, 0.5 * np.pi, n_section)
     for x in xs:
-        f = max(1.0 - (2.0 * x / h.length) ** 2, 0.03)
+        f = max(h.fullness(x), 0.03)
         b, t = h.half_beam * f, h.canoe_draft * f
         ring = [(x, -h.flare * b, h.freeboard)]
         ring += [(x, b * np.sin(th), -t * np.cos(th)) for th in theta]

@@ -77,6 +77,17 @@ class HullShape:
         """k = deck half-breadth / waterline half-breadth at every station (1: vertical sides)."""
         return 1.0 if self.deck_half_beam is None else self.deck_half_beam / self.half_beam
 
+    def fullness(self, x):
+        """1 - (2x/L)^2: the waterline half-breadth b(x) and the section depth t(x) at body x
+        over their midship values b0 and t0.
+
+        Parameters
+        ----------
+        x : float or numpy.ndarray
+            Body x from midship, m.
+        """
+        return 1.0 - (2.0 * x / self.length) ** 2
+
 
 def volume(h: HullShape) -> float:
     """Displaced volume at the design waterline, m^3.
@@ -208,7 +219,7 @@ def wetted_surface(h: HullShape, n: int = 200) -> float:
     """
     x, w = np.polynomial.legendre.leggauss(n)
     x = 0.5 * h.length * x
-    f = 1.0 - (2.0 * x / h.length) ** 2
+    f = h.fullness(x)
     a, b = h.half_beam * f, h.canoe_draft * f
     # Ramanujan's second approximation of the ellipse perimeter, halved.
     hh = ((a - b) / (a + b)) ** 2
@@ -309,7 +320,7 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
     xg, wg = np.polynomial.legendre.leggauss(nx)
     x1 = 0.5 * h.length * xg
     wx = 0.5 * h.length * wg
-    f = 1.0 - (2.0 * x1 / h.length) ** 2
+    f = h.fullness(x1)
     dtheta = np.pi / ntheta
     theta = -0.5 * np.pi + (np.arange(ntheta) + 0.5) * dtheta
     b = (h.half_beam * f)[:, None]
@@ -356,5 +367,5 @@ def strip_quadrature(h: HullShape, n: int = 16):
     xg, wg = np.polynomial.legendre.leggauss(n)
     x = 0.5 * h.length * xg
     w = 0.5 * h.length * wg
-    draft = h.canoe_draft * (1.0 - (2.0 * x / h.length) ** 2)
+    draft = h.canoe_draft * h.fullness(x)
     return x, w, draft

@@ -69,12 +69,6 @@ class HullGrid:
         return (np.arange(self.ny) - 0.5 * (self.ny - 1)) * self.dy
 
 
-def _fullness(h: HullShape, x):
-    """1 - (2x/L)^2: the waterline half-breadth and the section depth at x over their midship
-    values (:mod:`sailmujoco.hull`)."""
-    return 1.0 - (2.0 * x / h.length) ** 2
-
-
 def hull_grid(h: HullShape, nx: int = GRID_STATIONS, ny: int = GRID_ROWS) -> HullGrid:
     """The hull's columns on a regular nx x ny grid (module docstring).
 
@@ -91,7 +85,7 @@ def hull_grid(h: HullShape, nx: int = GRID_STATIONS, ny: int = GRID_ROWS) -> Hul
     grid = HullGrid(np.zeros((5, 2 * nx * ny)), dx, dy, nx, ny)
     cols = grid.columns
     for i, x in enumerate(grid.stations):
-        f = _fullness(h, x)
+        f = h.fullness(x)
         b, t = h.half_beam * f, h.canoe_draft * f
         for p, y in enumerate(grid.rows):
             lo, hi = y - 0.5 * dy, y + 0.5 * dy
@@ -122,7 +116,7 @@ def section_depths(h: HullShape, grid: HullGrid) -> np.ndarray:
     grid : HullGrid
         The grid whose stations are used.
     """
-    return -4.0 * h.canoe_draft * _fullness(h, grid.stations) / (3.0 * np.pi)
+    return -4.0 * h.canoe_draft * h.fullness(grid.stations) / (3.0 * np.pi)
 
 
 def section_weights(h: HullShape, grid: HullGrid) -> np.ndarray:
@@ -137,5 +131,5 @@ def section_weights(h: HullShape, grid: HullGrid) -> np.ndarray:
     grid : HullGrid
         The grid whose stations are used.
     """
-    w = _fullness(h, grid.stations) ** 2
+    w = h.fullness(grid.stations) ** 2
     return w / w.sum()
