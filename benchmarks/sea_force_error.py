@@ -45,8 +45,7 @@ def relative_errors(boat: str, sea: WaveConfig, states: int, heel_sd: float, see
     """RMS error / RMS wave part of each wrench component (Fx, Fy, Fz, Mx, My, Mz)."""
     p = get_boat(boat)
     comp = components(sea)
-    q = column_quadrature(p.hull)
-    fine = np.ascontiguousarray(np.vstack([q.x, q.y, q.area, q.z_bottom, q.z_top]))
+    fine = column_quadrature(p.hull).array()
     P = np.zeros(sea_kernels.P_SEA_BLOCK + 16)
     sea_rows, grid = sea_kernels.sea_arrays(p.hull, sea, P, ForceSwitches())
     b = sea_kernels.P_SEA_BLOCK
@@ -76,8 +75,7 @@ def relative_errors(boat: str, sea: WaveConfig, states: int, heel_sd: float, see
 def wrench_sd(boat: str, sea: WaveConfig, small: float = 0.01) -> np.ndarray:
     """Each wrench component's standard deviation in ``sea`` for the hull held upright at rest."""
     p = get_boat(boat)
-    q = column_quadrature(p.hull)
-    fine = np.ascontiguousarray(np.vstack([q.x, q.y, q.area, q.z_bottom, q.z_top]))
+    fine = column_quadrature(p.hull).array()
     pos, rot = np.zeros(3), np.eye(3)
     calm, out = np.zeros(6), np.zeros(6)
     geometric_buoyancy(0.0, rot, fine, p.rho_water, G, calm)

@@ -220,8 +220,7 @@ def check_boat(path_or_params, wind: float = 6.0, out=None, *, twa_deg=DEFAULT_T
 
 def _columns(p: BoatParams) -> np.ndarray:
     """The hull's 48 x 48 column quadrature as :func:`sailmujoco.stability.righting_arm` takes it."""
-    q = hull_geometry.column_quadrature(p.hull, 48, 48)
-    return np.ascontiguousarray(np.vstack([q.x, q.y, q.area, q.z_bottom, q.z_top]))
+    return hull_geometry.column_quadrature(p.hull, 48, 48).array()
 
 
 def gz_curve(p: BoatParams, heel) -> np.ndarray:

@@ -289,6 +289,11 @@ class ColumnQuadrature:
     z_bottom: np.ndarray
     z_top: np.ndarray
 
+    def array(self) -> np.ndarray:
+        """The columns as the force kernels take them: shape (5, n), C-contiguous, rows x, y,
+        area, z_bottom, z_top."""
+        return np.ascontiguousarray(np.vstack([self.x, self.y, self.area, self.z_bottom, self.z_top]))
+
 
 def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
                       nflare: int | None = None) -> ColumnQuadrature:

@@ -170,9 +170,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
             windage=forces.windage, sea_ramp=ramp_duration(waves))
         self._sea, self._grid = sea_arrays(params.hull, waves, self._P, forces)
-        cols = column_quadrature(params.hull)
-        self._columns = np.ascontiguousarray(
-            np.vstack([cols.x, cols.y, cols.area, cols.z_bottom, cols.z_top]))
+        self._columns = column_quadrature(params.hull).array()
         self._strips = np.ascontiguousarray(np.vstack(strip_quadrature(params.hull)))
         table = naca0015()
         self._table = (table.alpha, table.log_re, table.cl, table.cd)

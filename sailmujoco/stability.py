@@ -27,8 +27,7 @@ from .params import BoatParams
 
 
 def _columns(p: BoatParams, nx: int, ntheta: int) -> np.ndarray:
-    q = column_quadrature(p.hull, nx, ntheta)
-    return np.ascontiguousarray(np.vstack([q.x, q.y, q.area, q.z_bottom, q.z_top]))
+    return column_quadrature(p.hull, nx, ntheta).array()
 
 
 def equilibrium_heave(p: BoatParams, heel: float, columns: np.ndarray) -> float:

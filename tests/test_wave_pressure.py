@@ -65,8 +65,7 @@ def wrench(columns, sea, time=0.0, pos=(0.0, 0.0, 0.0), rot=None):
 
 
 def hull_columns(boat):
-    c = hull.column_quadrature(get_boat(boat).hull)
-    return np.ascontiguousarray(np.vstack([c.x, c.y, c.area, c.z_bottom, c.z_top]))
+    return hull.column_quadrature(get_boat(boat).hull).array()
 
 
 # --- box and cylinder: vertical force with the crest over the centre ---------------------------
