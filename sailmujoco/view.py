@@ -292,7 +292,7 @@ EXAMPLES = """examples:
   sailmujoco view saoud_robot heading_hold --controller pid --option kp=2.0 --set wind_speed=4
   sailmujoco view saoud_robot heading_hold --controller my_law.py:make --paused
   sailmujoco view wille_yacht beam_reach_roll --controller wille_roll --waves hs=1.5 \\
-      --waves tp=6 --waves n_components=16     # a 1.5 m sea from the wind's bearing
+      --waves tp=6     # a 1.5 m sea from the wind's bearing
   xvfb-run -a sailmujoco view wille_yacht heading_hold --controller pid --seconds 10 \\
       --screenshot view.png        # headless: a virtual display"""
 
