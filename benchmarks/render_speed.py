@@ -89,7 +89,7 @@ def main() -> None:
     rates["record() (sim + draw + encode)"] = rec.render_rate
 
     print(f"offscreen rendering, {args.width}x{args.height}, camera {args.camera}, "
-          f"MUJOCO_GL={os.environ.get('MUJOCO_GL')}, GL renderer: {platform}")
+          f"MUJOCO_GL={os.environ.get('MUJOCO_GL', 'unset (egl)')}, GL renderer: {platform}")
     print(f"cores {os.cpu_count()}, load average {os.getloadavg()[0]:.1f} (shared machines: "
           "rendering on llvmpipe competes for every core)")
     width = max(len(k) for k in rates)

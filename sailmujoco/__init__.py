@@ -2,13 +2,9 @@
 
 The data flow runs one way (see ``../STYLE`` in the README):
 params -> mjcf -> forces -> physics -> tasks -> controllers -> studies.
+
+Importing sailmujoco changes nothing in the process: no environment variable is set and no
+OpenGL library is loaded until something is rendered (:mod:`sailmujoco.gl_platform`).
 """
-
-import os as _os
-
-# Offscreen rendering through EGL by default (Mesa llvmpipe on CPU machines, the NVIDIA
-# driver on GPUs); set MUJOCO_GL=osmesa before importing to use the OSMesa fallback.
-# dm_control reads this variable when it is first imported.
-_os.environ.setdefault("MUJOCO_GL", "egl")
 
 __version__ = "0.1.0"

@@ -33,8 +33,6 @@ import ctypes
 
 import mujoco
 import numpy as np
-from dm_control.mujoco import engine
-from dm_control.mujoco.wrapper import core
 from dm_control.rl import control
 
 from . import native
@@ -46,10 +44,14 @@ from .forces.foil import naca0015
 from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_arrays
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .four_dof import FourDofStage, csr_address
+from .gl_platform import import_dm_control_mujoco
 from .hull import column_quadrature, strip_quadrature
 from .mjcf import compile_model
 from .options import ForceSwitches  # re-exported: physics.ForceSwitches
 from .params import BoatParams, get_boat
+
+_dm = import_dm_control_mujoco()  # dm_control with no GL library loaded until a render asks
+engine, core = _dm.engine, _dm.wrapper.core
 
 # MuJoCo's control callback is one per process. A boat steps in compiled code with a compiled
 # callback (sailmujoco/native.py); with compiled_loop False (the Python reference) a boat installs

@@ -1,9 +1,6 @@
 """The moving sea of the videos: a height field that follows the waves' elevation around the boat."""
 
 import math
-import os
-
-os.environ.setdefault("MUJOCO_GL", "egl")
 
 import numpy as np
 import pytest

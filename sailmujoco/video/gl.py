@@ -1,15 +1,17 @@
 """The OpenGL platform of offscreen rendering, and the one error that names its fixes.
 
-MuJoCo loads the platform named by ``MUJOCO_GL`` when it is imported; sailmujoco sets it to
-``egl`` unless it is set (Mesa's llvmpipe on the CPU, the NVIDIA driver on a GPU).
+The platform is the one ``MUJOCO_GL`` names, or EGL when it is unset (Mesa's llvmpipe on the
+CPU, the NVIDIA driver on a GPU); it is loaded at the first render
+(:mod:`sailmujoco.gl_platform`), never when sailmujoco is imported.
 """
 
 from __future__ import annotations
 
 import os
-import sys
 
-FIX = ("set MUJOCO_GL=egl before starting Python (Mesa's EGL renders on the CPU: apt-get install "
+from .. import gl_platform
+
+FIX = ("leave MUJOCO_GL unset or set MUJOCO_GL=egl (Mesa's EGL renders on the CPU: apt-get install "
        "libegl1 libegl-mesa0 libgl1-mesa-dri; on a GPU the NVIDIA driver provides EGL), or "
        "apt-get install libosmesa6 and set MUJOCO_GL=osmesa")
 
@@ -18,27 +20,16 @@ class RenderingUnavailable(RuntimeError):
     """No OpenGL platform could be loaded for offscreen rendering; the message names the fix."""
 
 
-def _loaded_platform() -> str | None:
-    """The GL platform mujoco loaded when it was imported ('egl', 'glfw', 'osmesa'), if any."""
-    mujoco = sys.modules.get("mujoco")
-    context = getattr(mujoco, "GLContext", None)
-    return context.__module__.split(".")[1] if context is not None else None
-
-
 def _unavailable(err: BaseException) -> RenderingUnavailable:
-    backend = os.environ.get("MUJOCO_GL", "")
-    loaded = _loaded_platform()
-    late = ""
-    if loaded is not None and loaded != backend.lower():
-        late = (f" mujoco was imported before MUJOCO_GL was set and loaded {loaded!r}: set MUJOCO_GL "
-                "in the environment, or import sailmujoco before mujoco.")
+    backend = os.environ.get("MUJOCO_GL")
+    named = f"MUJOCO_GL={backend!r}" if backend is not None else f"MUJOCO_GL unset ({gl_platform.DEFAULT})"
     return RenderingUnavailable(
-        f"cannot render offscreen: no OpenGL platform could be loaded with MUJOCO_GL={backend!r} "
-        f"({type(err).__name__}: {err}).{late} Fix: {FIX}.")
+        f"cannot render offscreen: no OpenGL platform could be loaded with {named} "
+        f"({type(err).__name__}: {err}). Fix: {FIX}.")
 
 
 def import_gl():
-    """Import MuJoCo with its offscreen renderer.
+    """Import MuJoCo with its offscreen renderer on the requested GL platform, loading it.
 
     Returns
     -------
@@ -48,10 +39,10 @@ def import_gl():
     Raises
     ------
     RenderingUnavailable
-        The GL platform cannot load (mujoco loads the MUJOCO_GL platform when it is imported).
+        The GL platform cannot load.
     """
     try:
-        import mujoco
+        mujoco = gl_platform.use_platform()
     except Exception as err:  # AttributeError, OSError, RuntimeError... from PyOpenGL/mujoco
         raise _unavailable(err) from err
     if not hasattr(mujoco, "Renderer"):

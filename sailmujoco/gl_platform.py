@@ -1,0 +1,110 @@
+"""Which OpenGL platform renders, chosen when something is first rendered, not at import.
+
+MuJoCo's Python bindings and dm_control each pick an OpenGL platform when they are imported,
+from the environment variable ``MUJOCO_GL``; dm_control, with the variable unset, even calls
+``glfw.init()`` then and falls back to EGL. Loading Mesa's EGL maps Mesa's own LLVM into the
+process, and a process that then loads PyTorch's triton (with another LLVM) crashes with a
+segmentation fault. So sailmujoco loads no GL library until a caller asks for pixels:
+
+- ``MUJOCO_GL`` set by the user: MuJoCo and dm_control use that platform, as they always do.
+- ``MUJOCO_GL`` unset: :func:`import_dm_control_mujoco` imports dm_control with its renderer
+  left unchosen (the variable is set to ``disable`` for that import only and then removed), and
+  the first render (:func:`use_platform`, or dm_control's ``Physics.render``) loads
+  :data:`DEFAULT`, EGL: Mesa's llvmpipe on a CPU machine, the NVIDIA driver on a GPU. EGL
+  needs no display, so the same default works on a laptop, a headless server and a cluster.
+
+The choice is process-wide, like MuJoCo's and dm_control's own, and is owned here.
+"""
+
+from __future__ import annotations
+
+import importlib
+import os
+import sys
+
+DEFAULT = "egl"  # the platform used when MUJOCO_GL is unset
+_OFF = ("disable", "disabled", "off", "false", "0")  # MuJoCo's and dm_control's names for none
+
+
+def requested() -> str:
+    """The platform to render with: ``MUJOCO_GL`` as set now, lower case, or :data:`DEFAULT`."""
+    return os.environ.get("MUJOCO_GL", "").strip().lower() or DEFAULT
+
+
+def import_dm_control_mujoco():
+    """Import ``dm_control.mujoco`` without loading a GL library.
+
+    With ``MUJOCO_GL`` set, or dm_control's renderer already imported, dm_control chooses as it
+    always does. Otherwise its renderer is imported with no platform and replaced by one that
+    loads :func:`requested` when ``Physics.render`` first makes a context; the environment is
+    left as it was found.
+
+    Returns
+    -------
+    module
+        ``dm_control.mujoco``.
+    """
+    if "dm_control._render" not in sys.modules and "MUJOCO_GL" not in os.environ:
+        os.environ["MUJOCO_GL"] = "disable"
+        try:
+            from dm_control import _render
+        finally:
+            del os.environ["MUJOCO_GL"]
+        _render.BACKEND = None
+        _render.Renderer = _deferred_dm_control_context
+    return importlib.import_module("dm_control.mujoco")
+
+
+def _deferred_dm_control_context(*args, **kwargs):
+    """dm_control's ``Renderer`` factory, choosing the platform at the first context."""
+    from dm_control import _render
+
+    platform = requested()
+    for names, importer in _render._ALL_RENDERERS:
+        if platform in names:
+            _render.Renderer = importer()
+            _render.BACKEND = names[0]
+            return _render.Renderer(*args, **kwargs)
+    if platform in _OFF:
+        raise RuntimeError(f"cannot render: MUJOCO_GL={platform!r} turns rendering off")
+    raise RuntimeError(f"MUJOCO_GL must be one of egl, osmesa, glfw: got {platform!r}")
+
+
+def use_platform():
+    """Make MuJoCo's ``mujoco.Renderer`` draw on :func:`requested`'s platform, loading it now.
+
+    MuJoCo chose a ``GLContext`` class when it was imported (GLFW's, with ``MUJOCO_GL``
+    unset); when that is not the requested platform, the requested one is imported and put in
+    its place.
+
+    Returns
+    -------
+    module
+        ``mujoco``, with ``mujoco.Renderer`` making contexts on the requested platform.
+
+    Raises
+    ------
+    ImportError, OSError, RuntimeError, AttributeError
+        The platform's library cannot be loaded (the caller names the fixes).
+    """
+    import mujoco
+    from mujoco.rendering.classic import gl_context
+
+    platform = requested()
+    if platform in _OFF:
+        raise RuntimeError(f"MUJOCO_GL={platform!r} turns rendering off")
+    if platform not in ("egl", "osmesa", "glfw"):
+        raise RuntimeError(f"MUJOCO_GL must be one of egl, osmesa, glfw: got {platform!r}")
+    current = getattr(gl_context, "GLContext", None)
+    if current is None or current.__module__.split(".")[1] != platform:
+        chosen = importlib.import_module(f"mujoco.{platform}").GLContext
+        gl_context.GLContext = chosen
+        mujoco.GLContext = chosen
+    return mujoco
+
+
+def loaded() -> str | None:
+    """The platform MuJoCo's renderer uses now ('egl', 'glfw', 'osmesa'), if any."""
+    gl_context = sys.modules.get("mujoco.rendering.classic.gl_context")
+    context = getattr(gl_context, "GLContext", None)
+    return context.__module__.split(".")[1] if context is not None else None
