@@ -57,9 +57,11 @@ Reward
     of a bad episode.
 
 Observations
-    A ``gymnasium.spaces.Dict`` of float32 ``Box``, every bound finite and each for the
-    reason given (``gymnasium.utils.env_checker.check_env`` is silent). A state outside
-    them ends the episode (``terminated``), and its last observation is clipped onto them:
+    A flat ``gymnasium.spaces.Dict`` of 1-D float32 ``Box`` es, a scalar as shape ``(1,)``,
+    every bound finite and each for the reason given: the layout that Stable-Baselines3's
+    ``check_env`` and ``MultiInputPolicy`` take as it is (no 0-d arrays, no nested Dict), and
+    that ``gymnasium.utils.env_checker.check_env`` passes silently. A state outside the
+    bounds ends the episode (``terminated``), and its last observation is clipped onto them:
 
     ===============================  =====  ===============  ==========================================
     key                              unit   bounds           why
@@ -78,7 +80,7 @@ Observations
     ===============================  =====  ===============  ==========================================
 
     With ``include_true_state=True`` the privileged full state (:mod:`sailmujoco.controllers.base`
-    lists it) is added as the nested Dict ``true_state``: body velocities ``u``, ``v``,
+    lists it) is added as the keys ``true_state_<key>``: body velocities ``u``, ``v``,
     ``w``, ``u_r``, ``v_r`` and ``current`` in [-50, 50] m/s; ``yaw`` (wrapped) and ``heel``
     in [-pi, pi], ``pitch`` in [-pi/2, pi/2], the joint angles ``rudder`` and ``sail`` in
     [-2 pi, 2 pi] rad (the boats' ranges lie within +-pi; MuJoCo's soft joint limits let an
@@ -86,10 +88,12 @@ Observations
     [-25, 25] rad/s; ``true_wind`` and ``apparent_wind_ce`` in [-340, 340] m/s;
     ``wind_speed_10`` in [0, 100] m/s (the wind's accepted range,
     :data:`sailmujoco.forces.wind.MAX_SPEED`); ``wind_direction`` in [-pi, pi]; ``time`` in
-    [0, time limit + one step] s; the six force wrenches (N, N m) have no bound, so
-    ``check_env`` warns about them. It is left out by default: an agent that reads the force
-    wrenches and the true wind sees more than a boat's sensors do. ``FlattenObservation``
-    gives 10 numbers plus the task's references without it (69 with it for heading_hold).
+    [0, time limit + one step] s; the six force wrenches ``<term>_wrench`` (N, N m) within
+    ``rho_w (50 m/s)^2 L^2`` for a force and that times ``L`` for a moment, ``L`` the hull's
+    length (:func:`sailmujoco.gym_spaces.wrench_bound` gives the reason). It is left out by
+    default: an agent that reads the force wrenches and the true wind sees more than a
+    boat's sensors do. ``FlattenObservation`` gives 10 numbers plus the task's references
+    without it (69 with it for heading_hold).
 
 Actions
     ``Box(-1, 1, (2,), float32)``: [rudder, sail], or with ``sail_mode="sheeted"`` [rudder,
@@ -107,8 +111,9 @@ Actions
 Rendering
     ``render_mode="rgb_array"``: :meth:`SailGymEnv.render` returns the frame of the videos'
     renderer (:mod:`sailmujoco.video`: the boat, the wind and force arrows, the text box),
-    ``render_width`` x ``render_height`` pixels, from ``camera``, offscreen (``MUJOCO_GL=egl``
-    renders on the CPU); ``metadata["render_fps"]`` is one frame per control step, so
+    ``render_width`` x ``render_height`` pixels, from ``camera``, offscreen (EGL, or the
+    platform ``MUJOCO_GL`` names, loaded at the first frame; Mesa's EGL renders on the CPU);
+    ``metadata["render_fps"]`` is one frame per control step, so
     ``gymnasium.wrappers.RecordVideo`` writes a real-time video (it needs the ``moviepy``
     package). ``render_mode="human"``: every step is drawn in MuJoCo's viewer
     (:mod:`sailmujoco.view`'s window) at real time; without a display the constructor raises

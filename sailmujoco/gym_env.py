@@ -13,6 +13,7 @@ from gymnasium.error import ResetNeeded
 from . import gym_spaces, suite
 from .gym_render import RENDER_MODES, FrameRenderer, WindowRenderer, declared_modes
 from .options import PHYSICS_FIELDS, PhysicsOptions
+from .params import get_boat
 from .tasks.base import check_number
 
 # keywords that shape the spaces: given at construction only
@@ -81,6 +82,12 @@ def step_outcome(dm_env, timestep, limits: dict) -> tuple[float, bool, bool, dic
     return reward, terminated, truncated, info
 
 
+def _hull_length(physics) -> float:
+    """The hull length of a world's boat, m (Viel's 3-DOF world is Viel's boat, ``viel_boat``)."""
+    params = getattr(physics, "params", None)
+    return (params if params is not None else get_boat("viel_boat")).hull.length
+
+
 class SailGymEnv(gymnasium.Env):
     """``suite.load(boat, task, world, **options)`` behind the Gymnasium API (the module
     :mod:`sailmujoco.gym` documents ids, spaces, reward and rendering).
@@ -93,7 +100,7 @@ class SailGymEnv(gymnasium.Env):
         Actions in [-1, 1], mapped linearly onto the actuators' ranges; False: the actuators'
         own units and ranges.
     include_true_state : bool
-        Add the privileged ``true_state`` (a nested Dict) to the observation.
+        Add the privileged true state to the observation, as the keys ``true_state_<key>``.
     area : float
         Half-width of the square sailing area around the origin, m; leaving it ends the episode.
     render_mode : {None, "rgb_array", "human"}
@@ -134,8 +141,11 @@ class SailGymEnv(gymnasium.Env):
                                            dtype=np.float32)
         dt = self._env.control_timestep()
         steps = self._env.max_steps()
-        self.limits = gym_spaces.bounds(area, np.inf if steps is None else (steps + 1) * dt)
-        self.observation_space = gym_spaces.observation_space(self._env.observation_spec(), self.limits)
+        obs_spec = self._env.observation_spec()
+        wrenches = [key for key in obs_spec.get("true_state", {}) if key.endswith("_wrench")]
+        self.limits = gym_spaces.bounds(area, np.inf if steps is None else (steps + 1) * dt,
+                                        _hull_length(self._env.physics), wrenches)
+        self.observation_space = gym_spaces.observation_space(obs_spec, self.limits)
         self.metadata = dict(self.metadata, render_fps=1.0 / dt)
         self.render_mode = render_mode
         labels = f"{boat if isinstance(boat, str) else boat.name} · {task} ({world})"

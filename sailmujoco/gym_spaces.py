@@ -1,10 +1,16 @@
 """The Gymnasium adapter's spaces: the observation's bounds (its envelope), the observation as
 Gymnasium hands it out, and the action's mapping onto the actuators.
 
-Every bounded quantity has its bound for a physical reason, given with it below
-(:data:`BOUNDS`); the table of :mod:`sailmujoco.gym` lists them with their units. A state
-outside these bounds ends the episode, as a capsize does (:func:`outside`), so every
+Every quantity has its bound for a physical reason, given with it below (:data:`BOUNDS`,
+:func:`wrench_bound`); the table of :mod:`sailmujoco.gym` lists them with their units. A
+state outside these bounds ends the episode, as a capsize does (:func:`outside`), so every
 observation an episode hands out lies in its declared space.
+
+The layout is the one RL libraries take as it is (Stable-Baselines3's ``check_env`` and its
+``MultiInputPolicy``, which read each key as a 1-D vector and refuse nested Dicts): one flat
+``Dict`` of 1-D float32 ``Box`` es, a scalar as shape ``(1,)``, and the privileged true state's
+keys at the top level as ``true_state_<key>``. The dm_env side keeps dm_control's own
+conventions (scalars of shape ``()``, ``true_state`` nested).
 """
 
 from __future__ import annotations
@@ -14,6 +20,7 @@ import math
 import numpy as np
 from gymnasium import spaces
 
+from .constants import RHO_WATER
 from .forces.wind import MAX_SPEED
 
 PI = math.pi
@@ -53,8 +60,8 @@ BOUNDS = {
 WRAPPED = ("desired_heading", "desired_course", "true_state.yaw")
 
 
-def bounds(area: float, time: float) -> dict[str, tuple[float, float]]:
-    """:data:`BOUNDS` with the sailing area and the time bound filled in.
+def bounds(area: float, time: float, length: float, wrenches=()) -> dict:
+    """:data:`BOUNDS` with the sailing area and the time bound filled in, and the wrenches'.
 
     Parameters
     ----------
@@ -62,14 +69,60 @@ def bounds(area: float, time: float) -> dict[str, tuple[float, float]]:
         Half-width of the square sailing area around the origin, m.
     time : float
         The latest time an episode reaches, s.
+    length : float
+        The hull's length, m (:func:`wrench_bound`).
+    wrenches : iterable of str
+        The true state's ``<term>_wrench`` keys.
     """
     fill = {"area": area, "-area": -area, "time": time}
-    return {key: (fill.get(low, low), fill.get(high, high)) for key, (low, high) in BOUNDS.items()}
+    limits = {key: (fill.get(low, low), fill.get(high, high)) for key, (low, high) in BOUNDS.items()}
+    high = wrench_bound(length)
+    limits.update({f"true_state.{key}": (-high, high) for key in wrenches})
+    return limits
 
 
-def observation_space(spec, limits: dict, path: str = "") -> spaces.Dict:
-    """The float32 ``Dict`` space of an observation spec (nested for ``true_state``); a key
-    without a bound (a user's task reference, a force wrench) is unbounded.
+def wrench_bound(length: float) -> np.ndarray:
+    """The bound of a force model's wrench (Fx, Fy, Fz, Mx, My, Mz) inside the envelope, N and N m.
+
+    A fluid force is a coefficient times the dynamic pressure times an area. Inside the
+    envelope the water meets the boat at most at :data:`MAX_BOAT_SPEED` (air, at the speed of
+    sound, carries 1/1000 the pressure per unit of speed squared), every coefficient of the
+    force models is below 2 and every area of the boat (wetted hull, keel, rudder, sail) below
+    ``length**2``, so a force is below ``rho_w V_max**2 length**2`` (twice the dynamic pressure
+    on ``length**2``) and a moment about the CO below that force times ``length``. The weight
+    and the buoyancy are far below it (6e5 times less for a 1.5 m boat).
+
+    Parameters
+    ----------
+    length : float
+        The hull's length, m.
+    """
+    force = RHO_WATER * MAX_BOAT_SPEED**2 * length**2
+    return np.array([force] * 3 + [force * length] * 3)
+
+
+def flat_items(tree, path: str = ""):
+    """``(gym key, key path, leaf)`` for every leaf of an observation or its spec: a nested key
+    ``true_state.u`` becomes the top-level ``true_state_u``.
+
+    Parameters
+    ----------
+    tree : dict
+        The dm_env observation, or its spec.
+    path : str
+        The tree's own path (for the nested ``true_state``).
+    """
+    for key, value in tree.items():
+        if isinstance(value, dict):
+            yield from flat_items(value, f"{path}{key}.")
+        else:
+            yield f"{path}{key}".replace(".", "_"), f"{path}{key}", value
+
+
+def observation_space(spec, limits: dict) -> spaces.Dict:
+    """The flat float32 ``Dict`` space of an observation spec: 1-D ``Box`` es (a scalar has shape
+    ``(1,)``), the true state's keys as ``true_state_<key>``; a key without a bound (a user's
+    task reference) is unbounded.
 
     Parameters
     ----------
@@ -77,24 +130,24 @@ def observation_space(spec, limits: dict, path: str = "") -> spaces.Dict:
         The dm_env observation spec.
     limits : dict
         Key path -> (low, high), from :func:`bounds`.
-    path : str
-        The spec's own path (for the nested ``true_state``).
     """
-    if isinstance(spec, dict):
-        return spaces.Dict({key: observation_space(value, limits, f"{path}{key}.")
-                            for key, value in spec.items()})
-    low, high = limits.get(path[:-1], (-np.inf, np.inf))
-    return spaces.Box(np.float32(low), np.float32(high), shape=spec.shape, dtype=np.float32)
+    boxes = {}
+    for key, path, leaf in flat_items(spec):
+        low, high = limits.get(path, (-np.inf, np.inf))
+        shape = leaf.shape if leaf.shape else (1,)
+        boxes[key] = spaces.Box(np.broadcast_to(np.float32(low), shape),
+                                np.broadcast_to(np.float32(high), shape), shape=shape, dtype=np.float32)
+    return spaces.Dict(boxes)
 
 
 def _wrap(value: np.ndarray) -> np.ndarray:
     return (value + PI) % (2.0 * PI) - PI
 
 
-def gym_observation(observation, space: spaces.Dict, path: str = "") -> dict:
-    """The observation as the space declares it: float32 arrays, angle references and the yaw
-    wrapped, every number clipped into its bounds (which changes only the last observation of
-    an episode that left them, see :func:`outside`).
+def gym_observation(observation, space: spaces.Dict) -> dict:
+    """The observation as the space declares it: flat, 1-D float32 arrays, angle references and
+    the yaw wrapped, every number clipped into its bounds (which changes only the last
+    observation of an episode that left them, see :func:`outside`).
 
     Parameters
     ----------
@@ -102,17 +155,12 @@ def gym_observation(observation, space: spaces.Dict, path: str = "") -> dict:
         The dm_env observation.
     space : gymnasium.spaces.Dict
         Its space (:func:`observation_space`).
-    path : str
-        The observation's own path (for the nested ``true_state``).
     """
     out = {}
-    for key, box in space.spaces.items():
-        value = observation[key]
-        if isinstance(box, spaces.Dict):
-            out[key] = gym_observation(value, box, f"{path}{key}.")
-            continue
-        value = np.array(value, dtype=np.float64)
-        if f"{path}{key}" in WRAPPED:
+    for key, path, value in flat_items(observation):
+        box = space.spaces[key]
+        value = np.array(value, dtype=np.float64).reshape(box.shape)
+        if path in WRAPPED:
             value = _wrap(value)
         out[key] = np.asarray(np.clip(value.astype(np.float32), box.low, box.high), dtype=np.float32)
     return out
@@ -141,7 +189,9 @@ def outside(measured: dict, limits: dict) -> str | None:
         if not np.all((value >= low) & (value <= high)):  # NaN is outside too
             if top in ("position", "target_position"):
                 return f"left the sailing area (|x| or |y| > {high:g} m)"
-            return f"left the observation bounds ({key} outside [{low:g}, {high:g}])"
+            low, high = (np.array2string(np.asarray(b), precision=3) if np.ndim(b) else f"{b:g}"
+                         for b in (low, high))
+            return f"left the observation bounds ({key} outside [{low}, {high}])"
     return None
 
 

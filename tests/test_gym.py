@@ -110,7 +110,19 @@ def test_gymnasium_checker_is_silent_on_every_id(env_id):
     space = env.observation_space
     for key, box in space.spaces.items():
         assert box.dtype == np.float32 and np.isfinite(box.low).all() and np.isfinite(box.high).all(), key
-    assert "true_state" not in space.spaces
+        assert len(box.shape) == 1, key  # no 0-d Box: SB3 reads every key as a 1-D vector
+    assert not any(key.startswith("true_state") for key in space.spaces)
+
+
+def test_gymnasium_checker_is_silent_with_the_true_state():
+    """The privileged state's keys are flat, 1-D and bounded too (SB3 refuses nested Dicts)."""
+    env = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", include_true_state=True)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_env(env.unwrapped)
+    for key, box in env.observation_space.spaces.items():
+        assert isinstance(box, gymnasium.spaces.Box) and len(box.shape) == 1, key
+        assert np.isfinite(box.low).all() and np.isfinite(box.high).all(), key
 
 
 @pytest.mark.parametrize("boat,task,world,options", [
@@ -123,13 +135,18 @@ def test_observations_stay_in_the_declared_space(boat, task, world, options):
     env = SailGymEnv(boat, task, world, time_limit=8.0, include_true_state=True, **options)
     space = env.observation_space
     assert (space["heading"].low, space["heading"].high) == (np.float32(-math.pi), np.float32(math.pi))
-    assert space["apparent_wind_speed"].low == 0.0 and space["true_state"]["time"].low == 0.0
+    assert space["apparent_wind_speed"].low == 0.0 and space["true_state_time"].low == 0.0
     # the wind's accepted range, one limit for the tasks and the wind model
-    assert space["true_state"]["wind_speed_10"].high == 100.0
+    assert space["true_state_wind_speed_10"].high == 100.0
     assert (space["position"].low == -5000.0).all() and (space["position"].high == 5000.0).all()
-    # the force wrenches have no bound; everything else has
-    assert np.isinf(space["true_state"]["sail_wrench"].high).all()
-    assert np.isfinite(space["true_state"]["yaw_rate"].high)
+    # a force wrench is bounded by twice the water's dynamic pressure at 50 m/s on the hull's
+    # length squared, a moment by that force times the length
+    length = get_boat(boat).hull.length  # 8.8, 1.5 and 4 m
+    force = 1025.0 * 50.0**2 * length**2
+    np.testing.assert_allclose(space["true_state_sail_wrench"].high, [force] * 3 + [force * length] * 3,
+                               rtol=1e-6)
+    for key, box in space.spaces.items():  # every key bounded, none 0-d, none nested
+        assert len(box.shape) == 1 and np.isfinite(box.low).all() and np.isfinite(box.high).all(), key
     env.action_space.seed(7)
     observation, _ = env.reset(seed=3)
     observations = [observation]
@@ -144,14 +161,14 @@ def test_observations_stay_in_the_declared_space(boat, task, world, options):
     stopped = info["metrics"]["stopped"]
     if (boat, world) == ("viel_boat", "paper"):
         assert terminated and stopped.startswith("left the observation bounds (yaw_rate")
-        assert abs(float(observations[-1]["yaw_rate"])) == np.float32(25.0)
+        assert abs(observations[-1]["yaw_rate"][0]) == np.float32(25.0)
     else:
         assert truncated and stopped is None and len(observations) == 81
     assert len(observations) > 10
     for observation in observations:
         assert space.contains(observation)
     # the episode did wander: the bounded angles are not all at one value
-    assert np.ptp([float(o["apparent_wind_angle"]) for o in observations]) > 0.05
+    assert np.ptp([o["apparent_wind_angle"][0] for o in observations]) > 0.05
 
 
 def test_the_true_state_is_left_out_unless_asked_for():
@@ -159,8 +176,9 @@ def test_the_true_state_is_left_out_unless_asked_for():
     reference); include_true_state adds the 58 numbers of the full state."""
     plain = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0")
     full = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", include_true_state=True)
-    assert "true_state" not in plain.observation_space.spaces
-    assert "true_state" in full.observation_space.spaces
+    assert not any(key.startswith("true_state") for key in plain.observation_space.spaces)
+    assert full.observation_space["true_state_sail_wrench"].shape == (6,)
+    assert full.observation_space["true_state_u"].shape == (1,)
     flat_plain = gymnasium.wrappers.FlattenObservation(plain)
     flat_full = gymnasium.wrappers.FlattenObservation(full)
     # position 2, velocity 2, heading, heel, roll and yaw rates, apparent wind angle and speed;
@@ -182,7 +200,7 @@ def test_angle_references_are_wrapped_into_their_bounds():
     """A desired heading of 270 deg is handed out as -90 deg (its bounds are [-pi, pi])."""
     env = SailGymEnv("saoud_robot", "heading_hold", desired_heading_deg=270.0, time_limit=0.3)
     observation, _ = env.reset(seed=0)
-    assert float(observation["desired_heading"]) == pytest.approx(-math.pi / 2, abs=1e-6)
+    assert observation["desired_heading"][0] == pytest.approx(-math.pi / 2, abs=1e-6)
     assert env.observation_space.contains(observation)
 
 

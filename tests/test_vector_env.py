@@ -32,7 +32,7 @@ def test_each_sub_environment_is_the_single_env_of_its_seed_with_next_step_autor
                 o, r, te, tr, single_info = env.step(actions[i])
                 assert rewards[i] == r and terminated[i] == te and truncated[i] == tr
                 assert np.array_equal(obs["position"][i], o["position"])
-                assert np.array_equal(obs["true_state"]["sail_wrench"][i], o["true_state"]["sail_wrench"])
+                assert np.array_equal(obs["true_state_sail_wrench"][i], o["true_state_sail_wrench"])
                 assert info["reward_terms"]["speed"][i] == single_info["reward_terms"]["speed"]
             assert info["_reward_terms"].all() and info["reward_terms"]["_speed"].all()
         assert list(truncated) == ([True] * 3 if k == 2 else [False] * 3)
@@ -44,7 +44,7 @@ def test_each_sub_environment_is_the_single_env_of_its_seed_with_next_step_autor
         else:
             assert "metrics" not in info
     # the step after the end: the first observation again, reward 0, no flag, no info
-    assert np.all(rewards == 0.0) and np.all(obs["true_state"]["time"] == 0.0)
+    assert np.all(rewards == 0.0) and np.all(obs["true_state_time"] == 0.0)
     assert info == {}
 
 
