@@ -61,8 +61,11 @@ def epilog() -> str:
             "    (the others true or false: a force model on or off; control_timestep in s)\n"
             "  task., boat. and controller. options: the keywords of the task, boat factory and\n"
             "  controller factory (a misspelt one is refused, naming the accepted ones)\n\n"
-            "every run's options and the metrics are checked before any run starts. Each finished\n"
-            "run is kept in <out>/runs/; the table is <out>/results.parquet and results.csv.\n\n"
+            "every run's options and the metrics are checked before any run starts (a refused one:\n"
+            "exit status 2). Each finished run is kept in <out>/runs/; the table is\n"
+            "<out>/results.parquet and results.csv. A run whose simulation raised is recorded as\n"
+            "failed, not retried (--retries: runs lost with a worker that died); the sweep then\n"
+            "prints one line per distinct reason, with an example run, and exits with status 1.\n\n"
             "examples:\n"
             "  sailmujoco sweep --example > example.toml\n"
             "  sailmujoco sweep example.toml --workers 2\n"
@@ -82,7 +85,8 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0, or :data:`~sailmujoco.arguments.INTERRUPTED` after Ctrl-C (the runs done are kept).
+        0; 1 when a run failed (one line per distinct reason on stderr); or
+        :data:`~sailmujoco.arguments.INTERRUPTED` after Ctrl-C (the runs done are kept).
     """
     from . import sweep
 
@@ -116,5 +120,8 @@ def run_cli(args) -> int:
              if counts["stopped"] else ""))
     for metric in spec.get("metrics", [])[:5]:
         print("  " + sweep.summarise(table, metric))
-    print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv")
-    return 0
+    print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv", flush=True)
+    failed = sweep.failures(table)
+    for line in failed:  # one line per distinct reason; the traceback is in the run's record
+        print(f"sailmujoco sweep: {line}", file=sys.stderr)
+    return 1 if failed else 0

@@ -78,16 +78,20 @@ def test_capsizes_are_stopped_not_failed(tmp_path):
     assert capsized["attempts"] == 1  # a stop is a result, not retried
 
 
-def test_failures_are_retried_recorded_and_the_sweep_goes_on(tmp_path):
+def test_failures_are_recorded_once_and_the_sweep_goes_on(tmp_path):
     """Viel's position keeper on a heading task has no target: it raises on its first step,
-    which no up-front check can know; the run is retried once, then recorded as failed."""
+    which no up-front check can know; the run is recorded as failed, not retried (the same seed
+    raises the same error)."""
     spec = dict(SPEC, controller="viel", grid={}, zip={}, options={}, seeds=[0, 1], duration=1.0)
     table = sweep.run(spec, tmp_path, scheduler="serial", retries=1, progress=False)
     assert list(table["status"]) == ["failed", "failed"]
     assert table["error"].str.startswith("ValueError: VielController: no target").all()
-    assert list(table["attempts"]) == [2, 2]  # retried once, then recorded
+    assert list(table["attempts"]) == [1, 1]  # its own error: not retried
     record = json.loads((tmp_path / "runs" / f"{table['run_id'][0]}.json").read_text())
-    assert record["attempts"] == 2 and not record.get("lost")  # its own failure, not the cluster's
+    assert record["attempts"] == 1 and not record.get("lost")  # its own failure, not the cluster's
+    assert sweep.failures(table) == [
+        "failed 2 of 2 runs: ValueError: VielController: no target: pass target=(x, y) or give "
+        f"observation['target_position'] (e.g. run 0, {table['run_id'][0]}: seed=0)"]
 
 
 def test_killing_a_worker_loses_and_duplicates_nothing(tmp_path):

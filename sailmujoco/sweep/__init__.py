@@ -62,18 +62,21 @@ Studies run on the same engine (:class:`Engine`: one worker pool for many sweeps
 JSON-able job dicts, each result stored in a :class:`ResultStore` like a sweep run, so a
 ``resume`` runs only the missing jobs).
 
-``resume=True`` runs what is missing, and re-runs the runs the cluster lost: those recorded as
-failed because their worker died (Dask's ``KilledWorker``) or the task could not be run at all
-(``lost`` in the run's record). A run that raised in its own simulation is not re-run: same
-seed, same code, same error. A run that raises is retried ``retries`` times and then recorded
-as failed; a run whose simulation stops (capsize, non-finite state) is recorded as ``stopped``
-with its reason, and counted apart from failures. Simulations run in worker processes (MuJoCo
-and numba state stay per process).
+A run that raises in its own simulation (its controller raised, its action was not finite) is
+recorded as failed at once, with its error, and never retried: same seed, same code, same
+error. A run the cluster lost (its worker died, Dask's ``KilledWorker``, a closed connection,
+a task that could not be run at all: ``lost`` in the run's record) is tried again up to
+``retries`` times, and ``resume=True`` runs what is missing and the lost runs again. A run
+whose simulation stops (capsize, non-finite state) is recorded as ``stopped`` with its reason,
+a result counted apart from failures. :func:`failures` gives one line per distinct reason runs
+failed, with their count and an example run; ``sailmujoco sweep`` prints these lines and exits
+with status 1 when a run failed (2 for a description it refuses before any run). Simulations
+run in worker processes (MuJoCo and numba state stay per process).
 
 Modules: :mod:`.spec` (the description: checks, runs, ids), :mod:`.runs` (running sweeps and
 job lists, one run in a worker), :mod:`.engine` (the worker pool), :mod:`.store` (records on
-disk, the table, the JSON form of values), :mod:`.controllers` (controllers by name),
-:mod:`.errors`.
+disk, the table, the JSON form of values), :mod:`.outcome` (why runs failed),
+:mod:`.controllers` (controllers by name), :mod:`.errors`.
 """
 
 from __future__ import annotations
@@ -88,8 +91,9 @@ from .controllers import (
     register_controller,
 )
 from .engine import CONNECT_TIMEOUT_S, MAX_LOCAL_WORKERS, Engine
-from .errors import SweepError
-from .runs import execute, execute_job, job_id, lost, run, run_jobs, run_many, summarise
+from .errors import SweepError, lost
+from .outcome import failures
+from .runs import execute, execute_job, job_id, run, run_jobs, run_many, summarise
 from .spec import (
     NAMESPACES,
     TOP_KEYS,
@@ -108,6 +112,6 @@ from .store import ResultStore, decode, encode
 __all__ = ["CONNECT_TIMEOUT_S", "ENTRY_POINTS", "MAX_LOCAL_WORKERS", "NAMESPACES", "TOP_KEYS",
            "Engine", "ResultStore", "SweepError", "check_controller_options", "check_folder",
            "controller_factories", "controller_factory", "controller_label", "decode", "encode",
-           "env_choices", "env_options", "execute", "execute_job", "expand", "job_id", "load_spec",
-           "lost", "make_controller", "register_controller", "run", "run_id", "run_jobs", "run_many",
-           "spec_hash", "summarise", "sweep_id", "validate"]
+           "env_choices", "env_options", "execute", "execute_job", "expand", "failures", "job_id",
+           "load_spec", "lost", "make_controller", "register_controller", "run", "run_id", "run_jobs",
+           "run_many", "spec_hash", "summarise", "sweep_id", "validate"]

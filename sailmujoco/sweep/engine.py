@@ -36,10 +36,10 @@ def _quiet_dask() -> None:
         logging.getLogger(name).setLevel(logging.ERROR)
 
 
-def _with_retries(task, r: dict, retries: int) -> dict:
+def _with_retries(task, r: dict, retries: int, again) -> dict:
     record = task(r)
     attempt = 0
-    while record["status"] == "failed" and attempt < retries:
+    while record["status"] == "failed" and again(record) and attempt < retries:
         attempt += 1
         record = task(r)
     record["attempts"] = attempt + 1
@@ -137,22 +137,28 @@ class Engine:
         self.close()
 
     def execute(self, items: list[tuple], bar) -> None:
-        """For each ``(task, r, store, retries)`` of ``items``: ``task(r)`` (a record with
-        ``status``), retried ``retries`` times while it fails; each final record is written to
-        its ``store`` as it finishes (and counted on ``bar``).
+        """For each ``(task, r, store, retries, again)`` of ``items``: ``task(r)`` (a record
+        with ``status``), tried again, up to ``retries`` times, while it fails and
+        ``again(record)`` says a new attempt could end otherwise; each final record is written
+        to its ``store`` as it finishes (and counted on ``bar``).
+
+        A task that raises in its worker is recorded as failed by the task itself; only an
+        exception from the cluster (the worker died: ``KilledWorker``; its connection closed;
+        the task could not be run) comes back here, and is recorded as ``lost``.
 
         Parameters
         ----------
         items : list of tuple
-            ``(task, r, store, retries)``: a picklable function, its argument (with a
-            ``run_id``), the :class:`~sailmujoco.sweep.store.ResultStore` of its record and
-            the extra attempts it gets.
+            ``(task, r, store, retries, again)``: a picklable function, its argument (with a
+            ``run_id``), the :class:`~sailmujoco.sweep.store.ResultStore` of its record, the
+            extra attempts it gets, and which failed records get them (a function of the
+            record; a sweep's: :func:`~sailmujoco.sweep.errors.lost`).
         bar : Progress
             Counts each finished record (``bar.update(status=1)``).
         """
         if self.serial:
-            for task, r, store, retries in items:
-                record = _with_retries(task, r, retries)
+            for task, r, store, retries, again in items:
+                record = _with_retries(task, r, retries, again)
                 store.write(record)
                 bar.update(**{record["status"]: 1})
         elif items:
@@ -166,26 +172,26 @@ class Engine:
         attempts = [1] * len(items)
         owner = {}
         pending = []
-        for i, (task, r, _, _) in enumerate(items):
+        for i, (task, r, *_) in enumerate(items):
             future = client.submit(task, r, key=f"run-{batch}-{i}-{r['run_id']}-0", pure=False)
             owner[future.key] = i
             pending.append(future)
         queue = as_completed(pending)
         for future in queue:
             i = owner[future.key]
-            task, r, store, retries = items[i]
+            task, r, store, retries, again = items[i]
             try:
                 record = future.result()
             except Exception as err:  # a worker died too often, or the task could not run
                 record = {**r, "status": "failed", "error": f"{type(err).__name__}: {err}",
                           "lost": True, "metrics": {}, "version": __version__,
                           "wall_time": float("nan")}
-            if record["status"] == "failed" and attempts[i] <= retries:
+            if record["status"] == "failed" and again(record) and attempts[i] <= retries:
                 n = attempts[i]
                 attempts[i] = n + 1
-                again = client.submit(task, r, key=f"run-{batch}-{i}-{r['run_id']}-{n}", pure=False)
-                owner[again.key] = i
-                queue.add(again)
+                retry = client.submit(task, r, key=f"run-{batch}-{i}-{r['run_id']}-{n}", pure=False)
+                owner[retry.key] = i
+                queue.add(retry)
                 continue
             record["attempts"] = attempts[i]
             store.write(record)

@@ -16,7 +16,7 @@ from .. import __version__
 from ..progress import Progress
 from .controllers import make_controller
 from .engine import Engine
-from .errors import SweepError, check_count
+from .errors import SweepError, check_count, lost
 from .spec import check_folder, expand, load_spec, plain, spec_hash, sweep_id, validate
 from .store import ResultStore, decode, encode
 
@@ -42,7 +42,9 @@ def run(spec, out, *, scheduler: str | None = None, workers: int | None = None,
         Skip runs already recorded in ``out`` (finished, stopped, or failed after retries),
         except those the cluster lost (a worker died): they run again.
     retries : int
-        Extra attempts for a run that raises (or whose worker dies).
+        Extra attempts of a run the cluster lost (its worker died, its connection closed). A
+        run that raised in its own simulation is recorded as failed at once, never retried:
+        same seed, same code, same error. :func:`failures` says why runs failed.
     progress : bool
         Show progress on stderr: a bar on a terminal, a line per 10 % elsewhere.
     exclusive : bool
@@ -109,7 +111,7 @@ def run_many(sweeps: list, jobs: list = (), *, scheduler: str | None = None,
         bar = Progress(sum(p.total for p in parts), label, sys.stderr,
                        initial=sum(p.total - len(p.todo) for p in parts), show=progress,
                        counts=counts, **({} if sweeps else {"unit": "sim"}))
-        items = [(p.task, r, p.store, p.retries) for p in parts for r in p.todo]
+        items = [(p.task, r, p.store, p.retries, p.again) for p in parts for r in p.todo]
         engine.execute(items, bar if sweeps else _Count(bar))
         bar.close()
     except KeyboardInterrupt:  # Ctrl-C: the tables hold the runs that finished; resume the rest
@@ -131,6 +133,10 @@ class _SweepPart:
 
     def __init__(self, spec: dict, out, resume: bool, session: str, retries: int):
         self.spec, self.retries, self.task = spec, retries, execute
+        # only a run the cluster lost is tried again: a run that raised in its own simulation
+        # (its controller, a non-finite action, an option refused late) is deterministic, the
+        # same seed and code raise the same error, so a retry would only repeat it
+        self.again = lost
         self.store = ResultStore(out)
         self.runs = expand(spec)
         sid, digest = sweep_id(spec), spec_hash(spec)
@@ -152,20 +158,6 @@ class _SweepPart:
     def finish(self):
         self.consolidate()
         return self.store.table(self.spec.get("metrics"), [r["run_id"] for r in self.runs])
-
-
-def lost(record: dict) -> bool:
-    """Whether a recorded run failed because the cluster lost it (its worker died, or the task
-    could not be run), not because of its simulation: ``resume`` runs these again.
-
-    Parameters
-    ----------
-    record : dict
-        A run's stored record.
-    """
-    if record.get("status") != "failed":
-        return False
-    return bool(record.get("lost")) or str(record.get("error") or "").startswith("KilledWorker")
 
 
 def execute(run: dict) -> dict:
@@ -263,6 +255,7 @@ class _JobPart:
 
     def __init__(self, function: str, jobs: list, out, resume: bool, retries: int):
         self.function, self.retries, self.task = function, retries, execute_job
+        self.again = _any_failure  # a job list asks for its retries itself (default none)
         self.store = ResultStore(out, indent=None)
         self.jobs = [{"run_id": job_id(function, job), "function": function, "job": job, "index": i}
                      for i, job in enumerate(jobs)]
@@ -293,6 +286,11 @@ class _Count:
 
     def update(self, **_) -> None:
         self.bar.update()
+
+
+def _any_failure(record: dict) -> bool:
+    """Every failed job is tried again, up to the job list's ``retries``."""
+    return True
 
 
 def job_id(function: str, job: dict) -> str:

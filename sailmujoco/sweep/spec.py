@@ -21,7 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from ..boat_schema import is_boat_file
-from ..names import check_known
+from ..names import check_known, nearest
 from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
 from .controllers import controller_factory, factory_options, is_import_path, portable_name
@@ -30,7 +30,7 @@ from .kinds import check_kinds, signature_defaults
 
 KEYS = {  # a sweep file's top-level keys, what each holds (``sweep --help`` lists them)
     "name": "the sweep's name: its folder results/sweeps/<name> (default: the file's stem)",
-    "boat": "a registered boat (required)",
+    "boat": "a registered boat, or a boat file 'my_boat.toml' relative to this file (required)",
     "task": "a registered task (required)",
     "world": "'mujoco' (the 6-DOF boat, default) or 'paper' (the paper's reduced model)",
     "controller": "a registered controller, 'module:factory' or 'file.py:factory' (required)",
@@ -149,7 +149,8 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
     for key, allowed in choices.items():
         if spec[key] not in allowed and not (key == "boat" and is_boat_file(spec[key])):
             boat_file = ", or a boat file ending in .toml" if key == "boat" else ""
-            raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}{boat_file}")
+            raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}{boat_file}"
+                             f"{_did_you_mean(spec[key], allowed)}")
     if is_boat_file(spec["boat"]):  # a missing or bad boat file: its own lines, before any run
         from ..params import get_boat
 
@@ -250,19 +251,23 @@ def _check_values(spec: dict, runs: list[dict], source: str = "the sweep descrip
             TASKS[r["task"]](seed=0, **r["task_options"])
         except (TypeError, ValueError) as err:
             raise SweepError(f"task options {r['task_options']}: {err}{where}") from None
+    _check_waves(runs, where)
     env_defaults = {name: (default, False) for name, default in env_options().items()}
     env = None
     for r in _distinct(runs, "env_options"):
         check_kinds("env", r["env_options"], env_defaults, where)
         for key, allowed in env_choices().items():  # also where the paper worlds ignore them
             if key in r["env_options"] and r["env_options"][key] not in allowed:
-                raise SweepError(f"env.{key} = {r['env_options'][key]!r} is not one of {allowed}{where}")
+                value = r["env_options"][key]
+                raise SweepError(f"env.{key} = {value!r} is not one of {allowed}{where}"
+                                 f"{_did_you_mean(value, allowed)}")
         try:
             built = load(r["boat"], r["task"], r["world"], seed=r["seed"], time_limit=r.get("duration"),
                          boat_options=r["boat_options"], waves=r.get("waves_options") or None,
                          **r["env_options"], **r["task_options"])
         except (TypeError, ValueError) as err:
-            raise SweepError(f"env options {r['env_options']}: {err}{where}") from None
+            given = ", ".join(f"env.{k} = {v!r}" for k, v in r["env_options"].items())
+            raise SweepError(f"{given + ': ' if given else ''}{err}{where}") from None
         env = env or built
     factory = controller_factory(spec["controller"])
     for r in _distinct(runs, "controller_options"):
@@ -273,6 +278,26 @@ def _check_values(spec: dict, runs: list[dict], source: str = "the sweep descrip
             raise SweepError(f"controller options {r['controller_options']}: {err}{where}") from None
     if spec.get("metrics"):
         check_metrics(spec["metrics"], runs, source)
+
+
+def _did_you_mean(value, allowed) -> str:
+    """``"; did you mean 'x'?"`` for the allowed value nearest a text ``value``, else ``""``."""
+    guess = nearest(value, allowed) if isinstance(value, str) else None
+    return f"; did you mean {guess!r}?" if guess is not None else ""
+
+
+def _check_waves(runs: list[dict], where: str) -> None:
+    """Each distinct sea of the runs (its ``waves.`` options) is a valid sea state, checked
+    apart from the environment (also where a paper world ignores it): a refused value is one
+    line naming the ``waves.`` option and its accepted range."""
+    from ..options import wave_config
+
+    for r in _distinct([r for r in runs if r.get("waves_options")], "waves_options"):
+        try:
+            wave_config(r["waves_options"], where="[waves]")
+        except (TypeError, ValueError) as err:
+            text = re.sub(r"\bWaveConfig\.", "waves.", str(err).splitlines()[0])
+            raise SweepError(f"{text}{where}") from None
 
 
 def task_option_defaults(task_class) -> dict:
