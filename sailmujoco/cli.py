@@ -163,7 +163,8 @@ def _add_sweep(sub) -> None:
     sweep.add_argument("--resume", action="store_true",
                        help="run only the missing runs and those lost with a worker that died")
     sweep.add_argument("--retries", type=number(0, low_open=False, unit="", integer=True), default=2,
-                       help="extra attempts of a failing run")
+                       help="extra attempts of a run lost with a worker that died (a run that raised "
+                            "is not retried)")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
     sweep.set_defaults(func=sweep_cli.run_cli)
 
@@ -190,7 +191,10 @@ def _add_polar(sub) -> None:
                         help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
     parser.add_argument("--twa", type=floats, default=[float(a) for a in range(30, 181, 15)],
                         help="true wind angles off the bow, deg: '30,90' or 'start:stop:step'")
-    parser.add_argument("--duration", type=POSITIVE_SECONDS, default=60.0, help="seconds per point")
+    parser.add_argument("--seconds", type=POSITIVE_SECONDS, default=60.0,
+                        help="simulated seconds per point")
+    parser.add_argument("--duration", dest="seconds", type=POSITIVE_SECONDS, default=argparse.SUPPRESS,
+                        help=argparse.SUPPRESS)  # the same option, under the sweep file's name
     parser.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
     parser.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
     parser.add_argument("--workers", type=WORKERS, help="worker processes (0 or unset: all cores)")

@@ -7,11 +7,16 @@ and downwind (max -v cos TWA, TWA > 90) are marked.
 
 ``best`` is the brute-force polar (Saoud 2015 Fig. 7's vel_max): every fixed sail angle of a
 grid is sailed and the fastest steady speed kept, point by point.
+
+A point whose run fails (its controller raises, or gives a bad action) is left out. ``sailmujoco
+polar`` then keeps the CSVs of what finished, says in one line why and when the first failed point
+failed (it runs that point again in its own process to find out) and exits with status 2.
 """
 
 from __future__ import annotations
 
 import math
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -19,6 +24,7 @@ import numpy as np
 from . import sweep
 from .arguments import controller_options, out_folder
 from .boats import boat_label
+from .errors import ControllerFailed, act, one_line
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
@@ -107,6 +113,22 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
     pandas.DataFrame
         Columns tws, twa, speed, heel (and sail_deg for ``best``), the runs that finished.
     """
+    table, _ = sweep_table(boat, controller, out, tws=tws, twa=twa, world=world, duration=duration,
+                           scheduler=scheduler, workers=workers, progress=progress, options=options)
+    return _finished(table, controller)
+
+
+def sweep_table(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
+                world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
+                progress: bool = True, options: dict | None = None) -> tuple:
+    """Run a polar on the sweep engine: (its table, failed runs included, with the columns tws,
+    twa, speed and heel; its sweep description).
+
+    Parameters
+    ----------
+    boat, controller, out, tws, twa, world, duration, scheduler, workers, progress, options
+        As :func:`compute`.
+    """
     grid = {"controller.sail_deg": list(BEST_SAIL_DEG)} if controller == "best" else None
     name = "fixed_sail" if controller == "best" else controller
     spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
@@ -118,12 +140,52 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
                       exclusive=False)
     table = table.rename(columns={"task.wind_speed": "tws", "task.wind_from_deg": "twa",
                                   "steady_speed": "speed", "steady_heel": "heel"})
+    for column in ("speed", "heel"):  # no metric columns where no run finished
+        if column not in table:
+            table[column] = np.nan
+    return table, spec
+
+
+def _finished(table, controller: str):
+    """The polar of the runs that finished (for ``best``, the fastest sail at each point)."""
     ok = table[table["status"] == "ok"]
     if controller == "best":  # the fastest fixed sail at each point
         idx = ok.groupby(["tws", "twa"])["speed"].idxmax()
         best = ok.loc[idx].rename(columns={"controller.sail_deg": "sail_deg"})
         return best[["tws", "twa", "speed", "heel", "sail_deg"]].sort_values(["tws", "twa"])
     return ok[["tws", "twa", "speed", "heel"]].sort_values(["tws", "twa"])
+
+
+def _first_failure(table, spec: dict, controller: str) -> str | None:
+    """Why the first failed run failed, one line with the simulated time (the sweep records the
+    error, not when: the run is simulated again here, each action checked); None if none failed."""
+    failed = table[table["status"] == "failed"]
+    if failed.empty:
+        return None
+    row = failed.iloc[0]
+    run = next(r for r in sweep.expand(sweep.validate(spec)) if r["run_id"] == row["run_id"])
+    where = f"TWS {row['tws']:g} m/s, TWA {row['twa']:g} deg"
+    from .suite import load
+
+    env = None
+    try:
+        env = load(run["boat"], run["task"], run["world"], seed=run["seed"], time_limit=run.get("duration"),
+                   boat_options=run["boat_options"], waves=run.get("waves_options") or None,
+                   **run["env_options"], **run["task_options"])
+        policy = sweep.make_controller(run["controller"], env, **run["controller_options"])
+        if hasattr(policy, "reset"):
+            policy.reset(run["seed"])
+        timestep, shape = env.reset(), env.action_spec().shape
+        while not timestep.last():
+            timestep = env.step(act(policy, timestep, controller=controller,
+                                    time=float(env.physics.time()), shape=shape))
+    except ControllerFailed as err:
+        return f"{err} ({where})"
+    except Exception as err:
+        when = f"at t = {env.physics.time():.2f} s" if env is not None else "before it started"
+        return f"the run at {where} failed {when}: {one_line(f'{type(err).__name__}: {err}')}"
+    recorded = one_line(str(row["error"] or "no error recorded").strip().splitlines()[0])
+    return f"the run at {where} failed: {recorded} (it did not fail when run again)"
 
 
 def best_vmg(frame):
@@ -354,12 +416,14 @@ def run_cli(args) -> int:
     args : argparse.Namespace
         ``boat``, ``controller``, ``option`` (``(key, value)`` pairs of the controller's
         options), ``compare`` (comma separated, or None), ``world``, ``tws``,
-        ``twa``, ``duration``, ``out``, ``scheduler``, ``workers``, ``no_progress``.
+        ``twa``, ``seconds`` (simulated seconds per point), ``out``, ``scheduler``, ``workers``,
+        ``no_progress``.
 
     Returns
     -------
     int
-        0.
+        0; 2 where a point failed (one line on stderr: why the first failed point failed and
+        when; the CSVs written so far are kept).
     """
     from .params import get_boat
 
@@ -370,17 +434,27 @@ def run_cli(args) -> int:
     label = sweep.controller_label(args.controller)
     out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
-    frames = {}
+    frames, kept = {}, []
     for name in names:
         print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
-              f"({args.world}, {args.duration:g} s per point)")
-        frames[name] = compute(args.boat, name, out, tws=args.tws, twa=args.twa,
-                               world=args.world, duration=args.duration,
-                               scheduler=args.scheduler, workers=args.workers,
-                               progress=not args.no_progress,
-                               options={f"controller.{key}": value for key, value in own.items()}
-                               if name == args.controller else None)
-        frames[name].to_csv(out / f"polar_{sweep.controller_label(name)}.csv", index=False)
+              f"({args.world}, {args.seconds:g} s per point)")
+        table, spec = sweep_table(args.boat, name, out, tws=args.tws, twa=args.twa,
+                                  world=args.world, duration=args.seconds,
+                                  scheduler=args.scheduler, workers=args.workers,
+                                  progress=not args.no_progress,
+                                  options={f"controller.{key}": value for key, value in own.items()}
+                                  if name == args.controller else None)
+        frames[name] = _finished(table, name)
+        csv = out / f"polar_{sweep.controller_label(name)}.csv"
+        frames[name].to_csv(csv, index=False)
+        n_points = len(frames[name])
+        kept.append(f"{csv} ({n_points} point{'' if n_points == 1 else 's'})")
+        failure = _first_failure(table, spec, name)
+        if failure is not None:
+            failed = int((table["status"] == "failed").sum())
+            print(f"sailmujoco polar: {failure}; {failed} of {len(table)} runs failed; kept what "
+                  f"finished: {', '.join(kept)}", file=sys.stderr)
+            return 2
     main_frame = frames[args.controller]
     png = out / f"polar_{sweep.controller_label(args.controller)}.png"
     plot_polar(main_frame, png, f"{boat_label(args.boat)}, {args.controller} ({args.world})")
@@ -402,7 +476,7 @@ def _write_comparison(args, frames: dict, out: Path) -> None:
     table.to_csv(out / "compare.csv", index=False)
     command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
     settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
-                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.duration:g} s per point")
+                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.seconds:g} s per point")
     summary = ratio_summary(table)
     (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
                                     encoding="utf-8")

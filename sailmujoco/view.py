@@ -15,7 +15,10 @@ Keys (:data:`KEYS`): space pauses and resumes; while paused, the right arrow run
 step. The mouse turns, moves and zooms the camera, which follows the boat.
 
 Without a display (no ``DISPLAY``, or GLFW cannot open a window with an OpenGL context) the
-command prints one line that points to ``sailmujoco video`` and exits with status 2.
+command prints one line that points to ``sailmujoco video`` and exits with status 2. A
+controller that raises, or gives an action that is not two finite numbers, stops the run at the
+state it was given: the window shows it, marked (and held open until it is closed, as at the end
+of a run), and the command prints one line with the simulated time and exits with status 2.
 """
 
 from __future__ import annotations
@@ -39,6 +42,7 @@ from .arguments import (
     setting,
 )
 from .boats import boat_label
+from .errors import ControllerFailed, act
 from .options import World, choices
 from .video import (
     SceneRenderer,
@@ -188,17 +192,14 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     ------
     NoDisplay
         No window can be opened (raised before anything is loaded).
+    ControllerFailed
+        The controller raised or gave a bad action: the run ends at that state, shown and saved
+        as at the end of a run (the exception's ``kept``: what the screenshot saved, or None).
     """
     if not (math.isfinite(fps) and fps > 0):
         raise ValueError(f"fps must be a number > 0, got {fps!r}")
     open_display()
-    from .suite import load
-    from .sweep import make_controller
-
-    env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
-    policy = make_controller(controller, env, **(controller_options or {}))
-    if hasattr(policy, "reset"):
-        policy.reset(seed)
+    env, policy = _load(boat, task, world, controller, seed, seconds, controller_options, options)
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     scene = SceneRenderer(params, forces=forces, overlay=overlay, sail_mode=sail_mode, target=target,
                           labels=f"{boat_label(boat)} · {task} · {controller} ({world})", offscreen=False,
@@ -213,9 +214,10 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
     window = Window(scene, snap, keys.press, forces=forces, overlay=overlay)
     clock = RealTime()
     try:
-        snap, interrupted = _sail(env, policy, timestep, snap, window, keys, clock, fps, mujoco_world)
+        snap, interrupted, failure = _sail(env, policy, controller, timestep, snap, window, keys, clock,
+                                           fps, mujoco_world)
         stopped = env.task.metrics().get("stopped") or ("interrupted" if interrupted else None)
-        what = _end(window, snap, stopped, seconds, screenshot_path, interrupted)
+        what = _end(window, snap, failure or stopped, seconds, screenshot_path, interrupted)
     finally:
         window.close()
     sim_time = float(snap.time)
@@ -225,14 +227,29 @@ def watch(boat: str, task: str, controller: str, *, world: str = "mujoco",
             "screenshot": what}
 
 
+def _load(boat: str, task: str, world: str, controller: str, seed: int, seconds, controller_options,
+          options: dict):
+    """(env, policy) of the run, the policy reset with ``seed``."""
+    from .suite import load
+    from .sweep import make_controller
+
+    env = load(boat, task, world, seed=seed, time_limit=seconds, **options)
+    policy = make_controller(controller, env, **(controller_options or {}))
+    if hasattr(policy, "reset"):
+        policy.reset(seed)
+    return env, policy
+
+
 PAUSE_NOTE = "PAUSED: space runs, right arrow steps"
 
 
-def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clock: RealTime,
-          fps: float, mujoco_world: bool) -> tuple[Snapshot, bool]:
-    """Run the episode in the window at real time; returns the last state and whether Ctrl+C
-    ended it. In the MuJoCo world the frames are drawn between the physics sub-steps."""
+def _sail(env, policy, name: str, timestep, snap: Snapshot, window: Window, keys: Keys, clock: RealTime,
+          fps: float, mujoco_world: bool) -> tuple[Snapshot, bool, ControllerFailed | None]:
+    """Run the episode in the window at real time; returns the last state, whether Ctrl+C
+    ended it and the controller's failure that ended it (or None). In the MuJoCo world the
+    frames are drawn between the physics sub-steps."""
     physics = env.physics
+    shape = env.action_spec().shape
     frame = {"next": 0.0}
 
     def due() -> float:
@@ -245,7 +262,7 @@ def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clo
         clock.wait(now.time)
 
     hook = frames_between_substeps(physics, emit, due) if mujoco_world else nullcontext()
-    interrupted = False
+    interrupted, failure = False, None
     window.show(snap)
     with hook:
         try:
@@ -255,7 +272,12 @@ def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clo
                     clock.restart()
                     time.sleep(1.0 / fps)
                     continue
-                timestep = env.step(policy(timestep))
+                try:
+                    action = act(policy, timestep, controller=name, time=float(physics.time()), shape=shape)
+                except ControllerFailed as err:
+                    failure = err
+                    break
+                timestep = env.step(action)
                 snap = snapshot_physics(physics, env.task.references(physics)) if mujoco_world else \
                     snapshot_observation(timestep.observation)
                 if not mujoco_world:  # sample and hold at the control steps
@@ -263,17 +285,19 @@ def _sail(env, policy, timestep, snap: Snapshot, window: Window, keys: Keys, clo
                     clock.wait(snap.time)
         except KeyboardInterrupt:  # Ctrl+C in the terminal: stop as if the window closed
             interrupted = True
-    return snap, interrupted
+    return snap, interrupted, failure
 
 
-def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, interrupted: bool):
-    """The last state with its note, the screenshot, and (without ``seconds``) the window held
-    open until it is closed; returns what the screenshot saved, or None."""
+def _end(window: Window, snap: Snapshot, why, seconds, screenshot_path, interrupted: bool):
+    """The last state with its note (``why``: the controller's failure, the stop reason of an
+    early end, or None), the screenshot, and (without ``seconds``) the window held open until it
+    is closed; returns what the screenshot saved, or None. A controller's failure is raised
+    then, its ``kept`` what the screenshot saved."""
     viewer = window.viewer
     running = viewer.is_running() and not interrupted
     if running:
-        window.show(snap, f"stopped at t = {snap.time:.1f} s: {stopped}" if stopped else
-                    ("finished: close the window" if seconds is None else None))
+        note = why.note if isinstance(why, ControllerFailed) else f"stopped at t = {snap.time:.1f} s: {why}"
+        window.show(snap, note if why else ("finished: close the window" if seconds is None else None))
     what = None
     if screenshot_path is not None and running:
         what = window.save(screenshot_path, snap)  # the last state, whatever the viewer drew last
@@ -283,6 +307,9 @@ def _end(window: Window, snap: Snapshot, stopped, seconds, screenshot_path, inte
                 time.sleep(0.05)
         except KeyboardInterrupt:
             pass
+    if isinstance(why, ControllerFailed):
+        why.kept = what
+        raise why
     return what
 
 
@@ -352,7 +379,8 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0, or 2 where no window can be opened (one line on stderr that points to ``sailmujoco video``).
+        0; 2 where no window can be opened (one line on stderr that points to ``sailmujoco
+        video``) or where the controller raised or gave a bad action (one line with the time).
     """
     from .sweep import validate
 
@@ -373,6 +401,10 @@ def run_cli(args) -> int:
                        screenshot_path=args.screenshot, **settings)
     except NoDisplay as err:
         print(f"sailmujoco view: cannot open a window: {err}; {_video_hint(args)}", file=sys.stderr)
+        return 2
+    except ControllerFailed as err:
+        saved = f"; wrote {args.screenshot}: {err.kept}" if err.kept else ""
+        print(f"sailmujoco view: {err}; the run stops there{saved}", file=sys.stderr)
         return 2
     stopped = result["stopped"]
     print(f"viewed {result['sim_time']:.2f} s simulated in {result['wall_time']:.2f} s "

@@ -49,15 +49,19 @@ Timing
     whole control steps (its integrator is adaptive), so frame k shows the state at the end of
     the control step that contains t = k / fps (the text box gives that state's time). A
     ``seconds`` run gives ``round(seconds * fps)`` frames; a run that stops early (capsize)
-    ends with its last frame, marked with the reason, held for one second.
+    ends with its last frame, marked with the reason, held for one second. So does a run whose
+    controller raises or gives a bad action (not two finite numbers): the video ends at the
+    state the controller was given and is kept; :func:`record` then raises
+    :class:`~sailmujoco.errors.ControllerFailed` (its ``kept``: the :class:`Recording`), and
+    ``sailmujoco video`` says so in one line, with the simulated time, and exits with status 2.
 
 What is drawn is a display copy of the boat (:func:`display_model`), compiled from the same
 parameters and given the simulated pose each frame; the simulation's own model is never touched.
 
-Rendering needs an OpenGL platform, named by ``MUJOCO_GL`` before Python starts. sailmujoco
-sets ``MUJOCO_GL=egl`` unless it is set: Mesa's llvmpipe renders on the CPU (Debian packages
-``libegl1 libegl-mesa0 libgl1-mesa-dri``), the NVIDIA driver on a GPU. The fallback is OSMesa:
-``apt-get install libosmesa6`` and ``MUJOCO_GL=osmesa``. Without a platform,
+Rendering needs an OpenGL platform: the one ``MUJOCO_GL`` names, or EGL when it is unset,
+loaded at the first frame (:mod:`sailmujoco.gl_platform`). Mesa's EGL renders on the CPU
+(Debian packages ``libegl1 libegl-mesa0 libgl1-mesa-dri``), the NVIDIA driver's on a GPU.
+The fallback is OSMesa: ``apt-get install libosmesa6`` and ``MUJOCO_GL=osmesa``. Without a platform,
 :class:`RenderingUnavailable` says so and names these fixes. Shadows and reflections are off.
 The mp4 is encoded by the ffmpeg binary that the ``imageio-ffmpeg`` package ships.
 

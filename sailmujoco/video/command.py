@@ -15,6 +15,7 @@ from ..arguments import (
     file_argument,
     setting,
 )
+from ..errors import ControllerFailed
 from ..options import World, choices
 from .gl import FIX, RenderingUnavailable
 from .recording import record
@@ -92,7 +93,8 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0, or 1 where no OpenGL platform loads (one line on stderr).
+        0; 1 where no OpenGL platform loads; 2 where the controller raised or gave a bad action
+        (the video, cut at that state, is kept). Each failure is one line on stderr.
     """
     check_settings(args.set, args.task)
     options = controller_options(args)
@@ -111,6 +113,12 @@ def run_cli(args) -> int:
     except RenderingUnavailable as err:
         print(f"sailmujoco video: error: {err}", file=sys.stderr)
         return 1
+    except ControllerFailed as err:
+        rec = err.kept
+        still = f" and {args.still}" if args.still else ""
+        print(f"sailmujoco video: {err}; the video stops there: {rec.path}{still} "
+              f"({rec.sim_time:.1f} s of {args.seconds:g} s)", file=sys.stderr)
+        return 2
     stopped = rec.metrics.get("stopped")
     print(f"wrote {rec.path}: {rec.frames} frames at {rec.fps:g} fps, {rec.sim_time:.1f} s simulated, "
           f"{rec.wall_time:.1f} s wall ({rec.render_rate:.1f} frames/s while recording)"

@@ -6,8 +6,10 @@ which leaves the trajectory unchanged bit for bit (:meth:`sailmujoco.physics.Boa
 A paper world moves by whole control steps (its integrator is adaptive), so frame k shows the
 state at the end of the control step that contains t = k / fps. A ``seconds`` run gives
 ``round(seconds * fps)`` frames; a run that stops early (capsize) ends with its last frame,
-marked with the reason, held for one second. The mp4 is encoded by the ffmpeg binary that the
-``imageio-ffmpeg`` package ships.
+marked with the reason, held for one second. A controller that raises, or gives an action that is
+not two finite numbers, ends the video the same way at the state it was given; the video is
+kept, and :func:`record` then raises :class:`~sailmujoco.errors.ControllerFailed`. The mp4 is
+encoded by the ffmpeg binary that the ``imageio-ffmpeg`` package ships.
 """
 
 from __future__ import annotations
@@ -21,6 +23,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from ..boats import boat_label
+from ..errors import ControllerFailed, act
 from ..progress import Progress
 from .camera import ELEVATION_DEG
 from .gl import import_gl
@@ -46,7 +49,8 @@ class Recording:
     loop_time : float
         Wall-clock time from the first frame to the end (simulating, drawing, encoding), s.
     metrics : dict
-        The task's metrics (``stopped`` holds the reason of an early end).
+        The task's metrics (``stopped`` holds the reason of an early end); empty where the
+        controller failed.
     """
 
     path: Path
@@ -294,9 +298,12 @@ def _partial_file(out_path: Path):
             partial.unlink(missing_ok=True)
 
 
-def _sail(env, policy, frames: _Frames, mujoco_world: bool) -> float:
-    """Run the episode, drawing each frame when due; returns the wall time of the first frame."""
+def _sail(env, policy, name: str, frames: _Frames,
+          mujoco_world: bool) -> tuple[float, ControllerFailed | None]:
+    """Run the episode, drawing each frame when due; returns the wall time of the first frame,
+    and the controller's failure that ended it early (or None)."""
     physics = env.physics
+    shape = env.action_spec().shape
     timestep = env.reset()
     start_loop = time.perf_counter()
 
@@ -308,21 +315,28 @@ def _sail(env, policy, frames: _Frames, mujoco_world: bool) -> float:
             if mujoco_world else nullcontext())
     with hook:
         while not timestep.last():
-            timestep = env.step(policy(timestep))
+            try:
+                action = act(policy, timestep, controller=name, time=float(physics.time()), shape=shape)
+            except ControllerFailed as failure:
+                return start_loop, failure
+            timestep = env.step(action)
             if not mujoco_world:  # sample and hold at the control steps
                 snap = snapshot_observation(timestep.observation)
                 while (t := frames.due()) is not None and snap.time >= t - 1e-9:
                     frames.emit(snap)
-    return start_loop
+    return start_loop, None
 
 
-def _finish(env, frames: _Frames, still) -> dict:
-    """The task's metrics; a run that stopped early ends with its last frame, marked, for 1 s."""
-    metrics = env.task.metrics()
+def _finish(env, frames: _Frames, still, failure: ControllerFailed | None) -> dict:
+    """The task's metrics (none after a controller's failure); a run that stopped early, or
+    whose controller failed, ends with its last frame, marked, for 1 s."""
+    metrics = {} if failure is not None else env.task.metrics()
     final = frames.last[1]
+    note = failure.note if failure is not None else None
     if metrics.get("stopped"):
-        snap = frames.last[0]
-        final = frames.renderer.render(snap, note=f"stopped at t = {snap.time:.1f} s: {metrics['stopped']}")
+        note = f"stopped at t = {frames.last[0].time:.1f} s: {metrics['stopped']}"
+    if note:
+        final = frames.renderer.render(frames.last[0], note=note)
         frames.hold(final, max(1, round(frames.fps)))
     if still is not None:
         from PIL import Image
@@ -389,6 +403,9 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     ------
     RenderingUnavailable
         No OpenGL platform (the message names the fix: ``MUJOCO_GL=egl`` or OSMesa).
+    ControllerFailed
+        The controller raised, or gave an action that is not two finite numbers: the video (and
+        the still) end at that state and are kept (the exception's ``kept``: the Recording).
     """
     fps, width, height = check_arguments(
         camera=camera, fps=fps, seconds=seconds, width=width, height=height, follow_distance=follow_distance,
@@ -402,16 +419,30 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
         forces=forces, overlay=overlay, follow_distance=follow_distance,
         follow_bearing_deg=follow_bearing_deg, follow_elevation_deg=follow_elevation_deg,
         follow_lag=follow_lag, top_center=top_center, top_extent=top_extent)
-    with _partial_file(Path(out_path)) as partial:
-        frames = _Frames(renderer, partial, fps, max(1, round(duration * fps)), quality, progress)
+    return _film(env, policy, name, renderer, Path(out_path), mujoco_world=mujoco_world, fps=fps,
+                 n_frames=max(1, round(duration * fps)), quality=quality, progress=progress, still=still,
+                 start_wall=start_wall)
+
+
+def _film(env, policy, name: str, renderer: SceneRenderer, out_path: Path, *, mujoco_world: bool, fps: float,
+          n_frames: int, quality: float, progress: bool, still, start_wall: float) -> Recording:
+    """Run the episode into ``out_path`` (written under a hidden name, renamed when complete);
+    its :class:`Recording`. A controller's failure ends the video there; the video is kept and
+    the failure raised, its ``kept`` the Recording."""
+    with _partial_file(out_path) as partial:
+        frames = _Frames(renderer, partial, fps, n_frames, quality, progress)
         try:
-            start_loop = _sail(env, policy, frames, mujoco_world)
-            metrics = _finish(env, frames, still)
+            start_loop, failure = _sail(env, policy, name, frames, mujoco_world)
+            metrics = _finish(env, frames, still, failure)
         finally:
             frames.close()
     end = time.perf_counter()  # the encoder has finished
-    return Recording(path=Path(out_path), frames=frames.count, fps=fps, sim_time=float(env.physics.time()),
-                     wall_time=end - start_wall, loop_time=end - start_loop, metrics=metrics)
+    recording = Recording(path=out_path, frames=frames.count, fps=fps, sim_time=float(env.physics.time()),
+                          wall_time=end - start_wall, loop_time=end - start_loop, metrics=metrics)
+    if failure is not None:
+        failure.kept = recording
+        raise failure
+    return recording
 
 
 def record_study_scenario(out, boat: str, task: str, controller, *, seconds: float = 60.0,
