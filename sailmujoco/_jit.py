@@ -9,6 +9,9 @@ Compiled kernels are cached on disk. numba invalidates a cached kernel when its 
 changes but not when a kernel it calls (in another file) does, so the cache is cleared here
 whenever any kernel source differs from the one it was built from (a module with kernels
 outside ``sailmujoco/`` and ``forces/`` calls :func:`clear_stale_cache` for its own).
+
+A compile (a cold cache: the first run) is announced on stderr while it lasts, a kernel loaded
+from the cache silently (:mod:`sailmujoco.compile_notice`).
 """
 
 from __future__ import annotations
@@ -17,6 +20,8 @@ import hashlib
 from pathlib import Path
 
 import numba
+
+from . import compile_notice
 
 _PACKAGE = Path(__file__).resolve().parent
 _SOURCES = sorted([_PACKAGE / "_jit.py", _PACKAGE / "hull_grid.py", *(_PACKAGE / "forces").glob("*.py"),
@@ -45,6 +50,7 @@ def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:
 
 
 _clear_stale_cache()
+compile_notice.install()
 
 
 def clear_stale_cache(module_file: str) -> None:

@@ -36,7 +36,14 @@ def is_terminal(stream) -> bool:
         return False
 
 
-def _duration(seconds: float) -> str:
+def duration(seconds: float) -> str:
+    """A duration as a person reads it: ``"42 s"``, ``"7 min"``, ``"2.5 h"``, ``"?"`` if unknown.
+
+    Parameters
+    ----------
+    seconds : float
+        The duration, s.
+    """
     if not math.isfinite(seconds):
         return "?"
     seconds = max(0.0, seconds)
@@ -128,10 +135,10 @@ class Progress:
         text = f"{self.label}: {self.done}/{self.total} ({100 * fraction:.0f} %)"
         if self.counts:
             text += ", " + ", ".join(f"{name} {value}" for name, value in self.counts.items())
-        text += f"; {_duration(elapsed)} elapsed"
+        text += f"; {duration(elapsed)} elapsed"
         new = self.done - self.initial
         if 0 < new and self.done < self.total:
-            text += f", about {_duration(elapsed / new * (self.total - self.done))} left"
+            text += f", about {duration(elapsed / new * (self.total - self.done))} left"
         return text
 
     def _line(self) -> None:

@@ -1,6 +1,11 @@
 """Shared helpers: boats load in ~0.1 s once the kernels are compiled (cached on disk)."""
 
 import math
+import os
+
+# The compile notice (sailmujoco.compile_notice) would add lines to the output that tests read
+# exactly when CI starts with a cold kernel cache; tests/test_compile_progress.py checks it.
+os.environ.setdefault("SAILMUJOCO_QUIET", "1")
 
 import numpy as np
 import pytest
