@@ -6,7 +6,9 @@
     sailmujoco boat check my_boat.toml --out results/boat/my_boat --wind 6
 
 ``check`` prints the numbers of :func:`sailmujoco.boat_check.check_boat` and writes ``gz.png``;
-a bad file is one line per bad key on stderr and exit status 2.
+a bad file is one line per bad key on stderr and exit status 2. A file that keeps a built-in
+boat's name with other parameters gets a one-line warning on stderr
+(:func:`sailmujoco.boat_file.name_clash`).
 """
 
 from __future__ import annotations
@@ -75,7 +77,8 @@ def run_cli(args) -> int:
     int
         0.
     """
-    from .boat_file import boat_toml
+    from .boat_file import boat_toml, name_clash
+    from .boat_schema import is_boat_file
     from .boats import boat_label, get_boat
 
     if args.boat_command == "export":
@@ -89,7 +92,10 @@ def run_cli(args) -> int:
         return 0
     from .boat_check import check_boat
 
-    get_boat(args.file)  # a bad file: one line per bad key, before anything is written
+    params = get_boat(args.file)  # a bad file: one line per bad key, before anything is written
+    clash = name_clash(params, args.file) if is_boat_file(args.file) else None
+    if clash:
+        print(clash, file=sys.stderr, flush=True)
     out = out_folder(args.out or Path("results") / "boat" / boat_label(args.file))
     result = check_boat(args.file, wind=args.wind, out=out, log=lambda line: print(line, flush=True))
     print(result.text())

@@ -20,7 +20,7 @@ from .boat_schema import KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key, rea
 from .boat_sources import SOURCES as BUILT_IN_SOURCES
 from .boats import BUILT_IN, get_boat
 
-__all__ = ["boat_toml", "read_boat", "write_boat"]
+__all__ = ["boat_toml", "name_clash", "read_boat", "write_boat"]
 
 HEADER = """\
 # {name}: a sailmujoco boat file.
@@ -85,6 +85,32 @@ def write_boat(params_or_name, path) -> Path:
     path = Path(path)
     path.write_text(boat_toml(params))
     return path
+
+
+def name_clash(params: BoatParams, where) -> str | None:
+    """The warning for a boat file that keeps a built-in boat's name but not its parameters.
+
+    A copy of a shipped boat's file, edited, still says ``name = "saoud_robot"``: its model,
+    its check and its figures then carry the built-in boat's name for another boat.
+
+    Parameters
+    ----------
+    params : BoatParams
+        The boat read from the file.
+    where : str or os.PathLike
+        The file, named in the warning.
+
+    Returns
+    -------
+    str or None
+        One line, or ``None`` where the name is no built-in boat's or the parameters are the
+        built-in boat's as built by default (an unedited export).
+    """
+    if params.name not in BUILT_IN or params == get_boat(params.name):
+        return None
+    own = Path(where).stem if Path(where).stem.isidentifier() else "my_boat"
+    return (f"warning: {where}: name = {_toml_string(params.name)} is a built-in boat's, but the "
+            f"parameters differ from it; give the boat a name of its own (e.g. name = {_toml_string(own)})")
 
 
 def _source(params: BoatParams, section: str, key: str, value, ref_holder) -> str:
