@@ -36,6 +36,24 @@ def test_smoke_writes_report_figures_and_data(smoke):
     assert headline["smoke"] is True and headline["wall_time_s"] > 0.0
 
 
+@pytest.mark.parametrize("n", [2, 6])
+def test_fig3_lays_out_only_the_cases_it_has(n, tmp_path, monkeypatch):
+    from sailmujoco.studies.viel_fig3 import figures
+
+    made = []
+    monkeypatch.setattr(figures, "save_figure", lambda fig, path: made.append(fig) or path)
+    t = np.linspace(0.0, 60.0, 61)
+    runs = {case: {"trajectory": {"t": t, "x": -30.0 + 0.5 * t, "y": 40.0 - 0.6 * t}, "entered_at": 50.0,
+                   "max_after_stop": 4.0, "stopped_at": 55.0, "stop_distance": 3.0, "d_T": 7.0, "d_M": 14.0}
+            for case in range(1, n + 1)}
+    figures.figure_world(tmp_path, "paper", runs, scenario.DEFAULT_START)
+    *panels, distance = made[0].axes
+    assert len(panels) == n and all(ax.lines for ax in made[0].axes)  # a panel per case, the distances
+    # the panels fill the width of the distance plot below them: no empty cell beside them
+    right = max(ax.get_position().x1 for ax in panels)
+    assert right == pytest.approx(distance.get_position().x1, abs=0.02)
+
+
 def test_smoke_paper_world_enters_and_stops_inside(smoke):
     _, h = smoke
     assert h["paper_all_entered"]

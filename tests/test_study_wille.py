@@ -85,6 +85,12 @@ def test_roll_study_writes_report_and_figures(roll):
         assert (out / name).stat().st_size > 10_000, name
     for world in ("paper", "mujoco"):  # the sweep engine's store
         assert (out / f"fig8_sweep_{world}" / "results.parquet").exists()
+    header = "| quantity | world | paper | ours | difference | cause |"
+    table1 = report.split(header, 1)[1].split("\n\n", 1)[0]
+    flagged = [line for line in table1.splitlines() if "⚠" in line]
+    assert flagged and all(line.rstrip(" |").endswith("not checked in smoke mode (below the table)")
+                           for line in flagged)  # a flagged row says why it names no cause
+    assert "Smoke mode names no causes" in report
 
 
 @pytest.mark.parametrize("world", ["paper", "mujoco"])

@@ -84,14 +84,16 @@ def figure_world(out: Path, key: str, runs: dict, start) -> Path:
         The runs' start (m).
     """
     plt = setup_matplotlib()
-    fig = plt.figure(figsize=(14, 12))
-    grid = fig.add_gridspec(3, 3, height_ratios=(1, 1, 0.8))
+    cols = min(3, len(runs))  # the paper's six cases: 2 rows of 3 (the smoke run's two: 1 row of 2)
+    rows = math.ceil(len(runs) / cols)
+    fig = plt.figure(figsize=(14 * cols / 3, 4.2 * rows + 3.6))  # 14 x 12 in for 2 x 3
+    grid = fig.add_gridspec(rows + 1, cols, height_ratios=(1,) * rows + (0.8,))
     for i, case in enumerate(sorted(runs)):
-        ax = fig.add_subplot(grid[i // 3, i % 3])
+        ax = fig.add_subplot(grid[i // cols, i % cols])
         _trajectory_panel(ax, runs[case], case, start)
         if i == 0:
             first = ax
-    ax = fig.add_subplot(grid[2, :])
+    ax = fig.add_subplot(grid[rows, :])
     top = 20.0
     for case, run in sorted(runs.items()):
         traj = run["trajectory"]
@@ -151,6 +153,9 @@ def figure_summary(out: Path, main: pd.DataFrame, variants: pd.DataFrame, grid: 
         values = [rows["max_after_stop"].get(c, np.nan) for c in cases]
         pos = np.arange(len(cases)) + (i - (len(shown) - 1) / 2) * 0.2
         axes[1].bar(pos, np.nan_to_num(values, nan=0.0), 0.2, label=VARIANT_LABELS[v])
+        for p, c in zip(pos, cases, strict=True):  # the smoke run switches case 1 only
+            if c not in rows.index:
+                axes[1].text(p, 0.5, "not run", rotation=90, ha="center", va="bottom", fontsize=7)
     axes[1].set_title("(b) paper world, task start: one switch at a time")
     for ax in axes[:2]:
         ax.set_xticks(np.arange(len(cases)), [f"case {c}" for c in cases])
