@@ -56,6 +56,10 @@ def make_nan(env):
 
 def make_three(env):
     return Sails(env, "three")
+
+
+def make_broken(env):
+    raise RuntimeError("no wind vane on this boat")
 """
 
 
@@ -147,6 +151,20 @@ def test_video_refuses_an_action_of_the_wrong_shape_in_one_line(controller_file,
     line = _one_line(capsys.readouterr().err, "video")
     assert "gave a bad action at t = 1.10 s: [0. 0. 0.] (2 finite numbers expected)" in line
     assert len(imageio.imread(out, plugin="FFMPEG", index=None)) == _frames_until_failure(5) < 3 * 5
+
+
+@pytest.mark.parametrize("command", ["video", "polar"])
+def test_a_factory_that_raises_is_one_line_and_nothing_runs(command, controller_file, tmp_path, capsys):
+    name = f"{controller_file}:make_broken"
+    video = ["video", "saoud_robot", "heading_hold", "--out", str(tmp_path / "never.mp4")]
+    polar = ["polar", "saoud_robot", "--tws", "4", "--twa", "60", "--scheduler", "serial",
+             "--out", str(tmp_path)]
+    args = video if command == "video" else polar
+    code = main([*args, "--controller", name, "--seconds", "1", "--no-progress"])
+    err = capsys.readouterr().err
+    assert code == 2 and len(err.strip().splitlines()) == 1, err
+    assert f"{name} could not be built" in err and "RuntimeError: no wind vane on this boat" in err
+    assert not list(tmp_path.glob("*.mp4")) and not list(tmp_path.glob("*.csv"))
 
 
 def test_polar_names_the_failed_point_and_keeps_the_finished_ones(controller_file, tmp_path, capsys):

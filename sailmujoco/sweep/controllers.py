@@ -24,6 +24,7 @@ import sys
 from importlib import metadata
 from pathlib import Path
 
+from ..errors import one_line
 from ..names import check_known, unknown_message
 from .errors import SweepError
 from .kinds import check_kinds, signature_defaults
@@ -208,9 +209,21 @@ def make_controller(name: str, env, **options):
     **options
         The factory's options: a name it does not take refuses in one line with the nearest; a
         value of another kind than its default (``kp="two"``) in one line naming it.
+
+    Raises
+    ------
+    ValueError
+        A bad name or option, or a factory that raised (any exception, said in one line: the
+        same controller and options raise it again, so a sweep does not retry it).
     """
     factory = check_controller_options(name, options)
-    return factory(env, **options)
+    try:
+        return factory(env, **options)
+    except ValueError:
+        raise
+    except Exception as err:  # the user's factory: one line naming it, not its traceback
+        raise ValueError(f"controller {name} could not be built: "
+                         f"{one_line(f'{type(err).__name__}: {err}')}") from err
 
 
 def check_controller_options(name: str, options: dict):

@@ -21,6 +21,7 @@ from pathlib import Path
 import numpy as np
 
 from ..boat_schema import is_boat_file
+from ..errors import one_line
 from ..names import check_known, nearest
 from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
@@ -276,6 +277,10 @@ def _check_values(spec: dict, runs: list[dict], source: str = "the sweep descrip
             factory(env, **r["controller_options"])
         except (TypeError, ValueError) as err:
             raise SweepError(f"controller options {r['controller_options']}: {err}{where}") from None
+        except Exception as err:  # the user's factory raised: every run would, so none is run
+            raise SweepError(f"controller {spec['controller']} could not be built with options "
+                             f"{r['controller_options']}: {one_line(f'{type(err).__name__}: {err}')}"
+                             f"{where}") from None
     if spec.get("metrics"):
         check_metrics(spec["metrics"], runs, source)
 
