@@ -57,3 +57,20 @@ def test_a_platform_the_user_names_is_respected():
     assert seen["variable"] == "egl"
     assert any("libEGL" in path for path in seen["after_import"])
     assert seen["shape"] == [24, 32, 3]
+
+
+def test_a_renderer_left_open_exits_quietly():
+    """A Gymnasium environment rendered and never closed: MuJoCo's EGL terminates its display at
+    exit, and the renderer still open is freed before that, not in a __del__ that raises after."""
+    script = textwrap.dedent("""
+        import gymnasium, sailmujoco.gym
+        env = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", render_mode="rgb_array",
+                             render_width=64, render_height=48)
+        env.reset(seed=0)
+        print(env.render().shape)
+    """)
+    env = {k: v for k, v in os.environ.items() if k not in ("MUJOCO_GL", "PYOPENGL_PLATFORM")}
+    result = subprocess.run([sys.executable, "-c", script], env=env, capture_output=True, text=True,
+                            timeout=600)
+    assert result.returncode == 0 and result.stdout.strip() == "(48, 64, 3)", result.stderr[-3000:]
+    assert "Exception ignored" not in result.stderr and "EGLError" not in result.stderr, result.stderr

@@ -7,7 +7,9 @@ CPU, the NVIDIA driver on a GPU); it is loaded at the first render
 
 from __future__ import annotations
 
+import atexit
 import os
+import weakref
 
 from .. import gl_platform
 
@@ -67,9 +69,26 @@ def offscreen_renderer(model, width: int, height: int):
     """
     mujoco = import_gl()
     try:
-        return mujoco.Renderer(model, height, width, max_geom=2000)
+        renderer = mujoco.Renderer(model, height, width, max_geom=2000)
     except Exception as err:  # GL context or MjrContext creation
         raise _unavailable(err) from err
+    if not _LIVE:
+        # MuJoCo's EGL registers eglTerminate at exit when it makes its first context; exit
+        # handlers run last-registered first, so this one frees the renderers still open (a
+        # Gymnasium environment nobody closed) before it, instead of their __del__ raising
+        # EGLError after it
+        atexit.register(_close_live)
+    _LIVE.add(renderer)
+    return renderer
+
+
+_LIVE: weakref.WeakSet = weakref.WeakSet()  # offscreen renderers not yet garbage-collected
+
+
+def _close_live() -> None:
+    for renderer in list(_LIVE):
+        renderer.close()
+    _LIVE.clear()
 
 
 def check_rendering() -> None:
