@@ -23,6 +23,7 @@ import os
 import sys
 
 DEFAULT = "egl"  # the platform used when MUJOCO_GL is unset
+PLATFORMS = ("egl", "osmesa", "glfw")  # the platforms MuJoCo's Python bindings offer on Linux
 _OFF = ("disable", "disabled", "off", "false", "0")  # MuJoCo's and dm_control's names for none
 
 
@@ -65,9 +66,14 @@ def _deferred_dm_control_context(*args, **kwargs):
             _render.Renderer = importer()
             _render.BACKEND = names[0]
             return _render.Renderer(*args, **kwargs)
+    raise _refused(platform)
+
+
+def _refused(platform: str) -> RuntimeError:
+    """The error for a ``MUJOCO_GL`` that names no platform (off, or unknown)."""
     if platform in _OFF:
-        raise RuntimeError(f"cannot render: MUJOCO_GL={platform!r} turns rendering off")
-    raise RuntimeError(f"MUJOCO_GL must be one of egl, osmesa, glfw: got {platform!r}")
+        return RuntimeError(f"MUJOCO_GL={platform!r} turns rendering off")
+    return RuntimeError(f"MUJOCO_GL must be one of {', '.join(PLATFORMS)}: got {platform!r}")
 
 
 def use_platform():
@@ -91,10 +97,8 @@ def use_platform():
     from mujoco.rendering.classic import gl_context
 
     platform = requested()
-    if platform in _OFF:
-        raise RuntimeError(f"MUJOCO_GL={platform!r} turns rendering off")
-    if platform not in ("egl", "osmesa", "glfw"):
-        raise RuntimeError(f"MUJOCO_GL must be one of egl, osmesa, glfw: got {platform!r}")
+    if platform not in PLATFORMS:
+        raise _refused(platform)
     current = getattr(gl_context, "GLContext", None)
     if current is None or current.__module__.split(".")[1] != platform:
         chosen = importlib.import_module(f"mujoco.{platform}").GLContext
@@ -102,9 +106,3 @@ def use_platform():
         mujoco.GLContext = chosen
     return mujoco
 
-
-def loaded() -> str | None:
-    """The platform MuJoCo's renderer uses now ('egl', 'glfw', 'osmesa'), if any."""
-    gl_context = sys.modules.get("mujoco.rendering.classic.gl_context")
-    context = getattr(gl_context, "GLContext", None)
-    return context.__module__.split(".")[1] if context is not None else None
