@@ -61,7 +61,11 @@ VIEL_CASES = {  # name: (params, wind, start, dt, control steps)
                             (1.0, -2.0, -2.0, 0.5, 0.0, 0.1), 0.1, 10),
     "rk45": (dict(), dict(speed=10.0, direction_from=math.pi, seed=2), (0, 0, 0.3, 1.0, 0.1, 0.0), 0.1, 3),
 }
-# held controls that end astern and spinning: omega overflows, math.cos(inf) stops the Python RHS
+# held controls that end astern and spinning: omega overflows and the run stops. When it stops is
+# decided by the last bits: one ulp more or less in the start's v moves the stop from 35.07 s to
+# 32.47 s or 31.46 s (measured on the compiled world), and the Python world stopped at 33.11 s on the
+# machine that wrote the reference. So the runaway is compared as an event (a FloatingPointError
+# naming the world, within the minute), not by its time or its overflowed state.
 VIEL_RUNAWAY = (dict(speed=8.0, direction_from=math.radians(45.0), seed=0), (0.0, 0.0, 0.3, 1.0, 0.0, 0.0),
                 (0.05, 0.6), 0.01)
 
@@ -188,7 +192,7 @@ def _floats(value):
 
 
 def test_compiled_worlds_equal_the_python_worlds_they_replaced():
-    """Every number of every run (states, diagnostics, stop time) to 1e-9 relative of the Python
+    """Every number of every run (states, diagnostics; the runaway as an event) to 1e-9 relative of the Python
     worlds' (see the module docstring for why not bit for bit across machines); the digests of
     the right-hand sides at random states hold any bit, so they are compared exactly on this
     machine only, by the interpreted-source test below."""
@@ -196,6 +200,8 @@ def test_compiled_worlds_equal_the_python_worlds_they_replaced():
     got = run_cases()
     assert sorted(got) == sorted(expected)
     for name in expected:
+        if name == "viel/runaway":
+            continue
         for key, want_value in expected[name].items():
             want, have = _floats(want_value), _floats(got[name][key])
             assert len(want) == len(have), (name, key)
@@ -207,8 +213,11 @@ def test_compiled_worlds_equal_the_python_worlds_they_replaced():
             elif not isinstance(want_value, str) or not want_value.startswith(("0x", "-0x")):
                 if key not in ("rhs", "rates", "forces"):  # the digests: see the docstring
                     assert got[name][key] == want_value, (name, key)
-    assert expected["viel/runaway"]["message"].count("the state ran away: math domain error") == 1
-    assert got["viel/runaway"]["message"] == expected["viel/runaway"]["message"]
+    for runaway in (expected["viel/runaway"], got["viel/runaway"]):
+        assert runaway["message"].startswith("VielWorld: integration failed at t="), runaway["message"]
+        assert float.fromhex(runaway["time"]) < 60.0
+        omega = float.fromhex(runaway["state"][-1])
+        assert not math.isfinite(omega) or abs(omega) > 1e300, runaway["state"]
 
 
 def test_compiled_worlds_equal_their_interpreted_source():
