@@ -28,15 +28,14 @@ from dataclasses import replace
 
 import numpy as np
 
-from sailmujoco.boats import BUILT_IN
+from sailmujoco.boat.catalogue import BUILT_IN, get_boat
+from sailmujoco.boat.hull import column_quadrature
 from sailmujoco.forces import sea_hull, sea_kernels
 from sailmujoco.forces.hydrostatics import geometric_buoyancy
 from sailmujoco.forces.wave_pressure import froude_krylov
 from sailmujoco.forces.waves import WaveConfig, components
 from sailmujoco.frames import matrix_from_euler
-from sailmujoco.hull import column_quadrature
 from sailmujoco.options import ForceSwitches
-from sailmujoco.params import get_boat
 
 G = 9.81
 

@@ -22,7 +22,7 @@ import time
 
 import mujoco
 
-from sailmujoco.boats import BUILT_IN
+from sailmujoco.boat.catalogue import BUILT_IN
 from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
 from sailmujoco.physics import BoatPhysics
 

@@ -7,7 +7,7 @@ Both are measured in this run, on the same compiled MjModel: "bare" is mujoco.mj
 fresh MjData (no force models, no added mass); "sailmujoco" is BoatPhysics.step, which at
 each stage of the integrator runs MuJoCo's forward dynamics with every force model (compiled
 kernels), the added-mass update and refactorisation of the mass matrix, all sub-steps of one
-call in compiled code (sailmujoco/native.py). Calls of step(1) show the per-call overhead;
+call in compiled code (sailmujoco/step/native.py). Calls of step(1) show the per-call overhead;
 step(20) is a 10 Hz control loop at the 5 ms physics step. ``--python-loop`` times the stage
 work called from Python instead (``BoatPhysics.compiled_loop = False``, the Python
 reference of the compiled step) in the same run. ``--integrator`` sets

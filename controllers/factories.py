@@ -17,7 +17,7 @@ from .pid import PIDHeading
 from .sail_laws import FixedSail, LeewardSail
 
 if TYPE_CHECKING:
-    from sailmujoco.params import BoatParams
+    from sailmujoco.boat.params import BoatParams
 
     from .saoud_model import SaoudParams
 
@@ -98,7 +98,7 @@ class SheetFromAngle:
         angle : float
             Sail angle [rad]; its magnitude is used.
         """
-        from sailmujoco.mjcf import sheet_length
+        from sailmujoco.boat.mjcf import sheet_length
 
         return float(sheet_length(self.params, abs(angle)))
 

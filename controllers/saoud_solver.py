@@ -24,8 +24,8 @@ import math
 
 import numpy as np
 
-from sailmujoco._jit import clear_stale_cache, kernel
 from sailmujoco.forces.foil import saoud_normal_coefficient
+from sailmujoco.step.jit import clear_stale_cache, kernel
 
 from .saoud_model import (
     BRANCH_TOL,

@@ -3,7 +3,7 @@ and its course correction (eqs. 52-59).
 
 Both work in the paper's frames (NED, FRD): the observation (ours: ENU/FLU) is converted in
 :func:`_paper_state`, and the rudder angle sigma has our sign already (trailing edge to port
-= Wille's positive sigma, see :mod:`sailmujoco.mjcf`).
+= Wille's positive sigma, see :mod:`sailmujoco.boat.mjcf`).
 
 Eq. 48 cancels the yaw-row nonlinearities: R_psi_d = -C_psi (S + K - C_A(nu_r) nu_r) -
 K_p e1 - K_d e2, with e1 = psi - psi_d (eq. 46), e2 = r (eq. 47). The moments S, K and
@@ -22,8 +22,9 @@ import math
 
 import numpy as np
 
+from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.boat.params import BoatParams, Foil
 from sailmujoco.forces.foil import hydrofoil_coefficients, naca0015
-from sailmujoco.params import BoatParams, Foil, get_boat
 
 from .base import scalar
 

@@ -62,8 +62,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from sailmujoco import frames
+from sailmujoco.boat.catalogue import wille_yacht
+from sailmujoco.boat.params import BoatParams
 from sailmujoco.forces.wind import log_profile
-from sailmujoco.params import BoatParams, wille_yacht
 
 from .base import scalar
 from .wille_roll_lqr import PHI_D, Q_WEIGHTS, R_WEIGHT, RollLQR, roll_lqr

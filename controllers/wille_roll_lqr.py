@@ -20,8 +20,9 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.linalg
 
+from sailmujoco.boat.catalogue import wille_yacht
+from sailmujoco.boat.params import BoatParams
 from sailmujoco.constants import GRAVITY
-from sailmujoco.params import BoatParams, wille_yacht
 
 # ---- numbers of Wille (2016b) §4 ------------------------------------------------------------
 PHI_D = math.radians(10.0)  # rad, desired heel = linearisation point phi_w (§4)

@@ -54,8 +54,9 @@ from functools import cached_property, lru_cache
 
 import numpy as np
 
+from sailmujoco.boat.catalogue import wille_yacht
+from sailmujoco.boat.params import BoatParams
 from sailmujoco.forces.foil import sail_forces
-from sailmujoco.params import BoatParams, wille_yacht
 
 # ---- numbers of Wille (2016b) §2 and ours ---------------------------------------------------
 FRACTIONS = (0.67, 0.33, 0.0)  # §2.2, moment limits of lambda_67, lambda_33, lambda_0
@@ -138,7 +139,7 @@ def relative_sail_force(beta_ws: float, sail_angle, params: BoatParams | None = 
     sail_angle : float or array_like
         lambda [rad], positive with the trailing edge to port.
     params : BoatParams, optional
-        Boat (default :func:`~sailmujoco.params.wille_yacht`).
+        Boat (default :func:`~sailmujoco.boat.catalogue.wille_yacht`).
     tangential : bool
         Keep the sail's tangential force coefficient C_T (the physics default).
 

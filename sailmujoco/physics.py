@@ -35,26 +35,27 @@ import mujoco
 import numpy as np
 from dm_control.rl import control
 
-from . import native
-from ._jit import entry_point
-from .accessors import BoatAccessors
+from .boat.catalogue import get_boat
+from .boat.hull import column_quadrature, strip_quadrature
+from .boat.mjcf import compile_model
+from .boat.params import BoatParams
 from .errors import SimulationStopped
 from .forces import boat as kernels
 from .forces.foil import naca0015
 from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_arrays
 from .forces.wind import WANDER_DT, WindConfig, WindField
-from .four_dof import FourDofStage, csr_address
 from .gl_platform import import_dm_control_mujoco
-from .hull import column_quadrature, strip_quadrature
-from .mjcf import compile_model
+from .measurement.accessors import BoatAccessors
 from .options import ForceSwitches  # re-exported: physics.ForceSwitches
-from .params import BoatParams, get_boat
+from .step import native
+from .step.four_dof import FourDofStage, csr_address
+from .step.jit import entry_point
 
 _dm = import_dm_control_mujoco()  # dm_control with no GL library loaded until a render asks
 engine, core = _dm.engine, _dm.wrapper.core
 
 # MuJoCo's control callback is one per process. A boat steps in compiled code with a compiled
-# callback (sailmujoco/native.py); with compiled_loop False (the Python reference) a boat installs
+# callback (sailmujoco/step/native.py); with compiled_loop False (the Python reference) a boat installs
 # this one while it steps with RK4 (native.callback_installed counts the users and puts back what
 # it found). It finds the stepping boat by its MjData.
 RK4 = int(mujoco.mjtIntegrator.mjINT_RK4)  # MuJoCo's RK4, an int: comparing with the enum costs 0.6 us
@@ -84,7 +85,7 @@ _SPLIT_STEPS = entry_point(native.split_steps)
 class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
     """A boat in MuJoCo with our force models. Build it with :meth:`load`."""
 
-    # all sub-steps of step(n) in one compiled call (sailmujoco/native.py). False runs the same
+    # all sub-steps of step(n) in one compiled call (sailmujoco/step/native.py). False runs the same
     # MuJoCo step with the stage work called from Python: the reference the compiled loop is
     # tested against (bit for bit).
     compiled_loop = native.AVAILABLE
@@ -100,8 +101,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         Parameters
         ----------
         boat : str or os.PathLike
-            A registered boat (:data:`sailmujoco.boats.BOATS`) or a boat file
-            (:mod:`sailmujoco.boat_file`), used when ``params`` is None.
+            A registered boat (:data:`sailmujoco.boat.catalogue.BOATS`) or a boat file
+            (:mod:`sailmujoco.boat.file`), used when ``params`` is None.
         params : BoatParams, optional
             The boat's parameters, instead of a registered name (then no ``boat_options``).
         sail_mode : {"actuated", "sheeted"}
@@ -112,7 +113,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             Which force models act and in which form; default ``ForceSwitches()``.
         dofs : {6, 4}
             ``dofs=4`` holds heave and pitch (the reduced models' assumption); see
-            :func:`sailmujoco.mjcf.boat_spec`.
+            :func:`sailmujoco.boat.mjcf.boat_spec`.
         waves : WaveConfig, optional
             The sea (docs/physics.md, "The boat in the sea"), 6 DOF only; None: calm water.
         **boat_options
@@ -194,7 +195,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             addr += [csr_address(m, i, i) for i in (3, 4, 5)]
             self._csr_addr = np.array(addr, dtype=np.int64)
             self._kidx = self._idx
-        else:  # the kernel sees the hull as if free: see sailmujoco/four_dof.py
+        else:  # the kernel sees the hull as if free: see sailmujoco/step/four_dof.py
             self._setup_4dof(params, forces, m)
         self._kernel = entry_point(kernels.boat_forces)
         self._stage_status = kernels.STATUS_OK
@@ -372,7 +373,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         raise SimulationStopped(self.stop_reason, self.data.ptr.time)
 
     def _step_native(self, nstep: int, rk4: bool) -> None:
-        """All ``nstep`` sub-steps in one compiled call (sailmujoco/native.py): MuJoCo's RK4 with
+        """All ``nstep`` sub-steps in one compiled call (sailmujoco/step/native.py): MuJoCo's RK4 with
         the forces and added mass at each stage, or mj_step1, forces, mj_factorM, mj_step2."""
         m, d = self.model.ptr, self.data.ptr
         np.copyto(self._warnings_before, self._warnings)
@@ -388,7 +389,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             raise control.PhysicsError(self._warnings_message())
 
     def begin_batch_step(self, nstep: int) -> np.ndarray:
-        """Get ready for ``nstep`` sub-steps taken by :class:`sailmujoco.batch.BoatBatch`.
+        """Get ready for ``nstep`` sub-steps taken by :class:`sailmujoco.step.batch.BoatBatch`.
 
         Parameters
         ----------
@@ -398,7 +399,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         Returns
         -------
         numpy.ndarray
-            The boat's registry row (:func:`sailmujoco.native.registry_row`).
+            The boat's registry row (:func:`sailmujoco.step.native.registry_row`).
         """
         self._prepare(nstep * self.model.ptr.opt.timestep)
         np.copyto(self._warnings_before, self._warnings)

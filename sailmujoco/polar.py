@@ -22,8 +22,8 @@ from pathlib import Path
 import numpy as np
 
 from . import sweep
-from .arguments import controller_options, out_folder
-from .boats import boat_label
+from .boat.catalogue import boat_label
+from .cli.arguments import controller_options, out_folder
 from .errors import ControllerFailed, act, one_line
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
@@ -425,7 +425,7 @@ def run_cli(args) -> int:
         0; 2 where a point failed (one line on stderr: why the first failed point failed and
         when; the CSVs written so far are kept).
     """
-    from .params import get_boat
+    from .boat.catalogue import get_boat
 
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
     if args.option and args.controller == "best":

@@ -29,9 +29,10 @@ import math
 
 import numpy as np
 
+from .boat.catalogue import BOATS, get_boat
+from .boat.params import BoatParams
 from .names import check_known
 from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
-from .params import BOATS, BoatParams, get_boat
 from .physics import BoatPhysics
 from .tasks.base import PaperPhysics, SailEnvironment, check_number
 from .tasks.registry import TASKS, register_task
@@ -92,7 +93,7 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     ----------
     boat : str, os.PathLike or BoatParams
         A registered boat (``BOATS``), a boat file (``"my_boat.toml"``,
-        :mod:`sailmujoco.boat_file`), or a boat's parameters as an object (a changed copy, for
+        :mod:`sailmujoco.boat.file`), or a boat's parameters as an object (a changed copy, for
         a modelling switch). ``boat_options`` must be empty for a file or an object.
     task : str
         A registered task (``TASKS``).
@@ -195,7 +196,7 @@ def _boat_params(boat, params, boat_options: dict) -> BoatParams:
 
 def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = None,
                seeds=None, options=None, **common):
-    """N environments stepped together (:class:`sailmujoco.batch.BatchEnvironment`).
+    """N environments stepped together (:class:`sailmujoco.step.batch.BatchEnvironment`).
 
     In the MuJoCo world (6 or 4 DOF) the boats step in one compiled call on all cores; every
     environment behaves exactly as ``load(boat, task, world, seed=..., **options)``.
@@ -214,7 +215,7 @@ def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = N
     **common
         :func:`load` keywords shared by every environment.
     """
-    from .batch import BatchEnvironment
+    from .step.batch import BatchEnvironment
 
     if seeds is None:
         if n is None:

@@ -3,7 +3,7 @@
 import math
 import os
 
-# The compile notice (sailmujoco.compile_notice) would add lines to the output that tests read
+# The compile notice (sailmujoco.step.compile_notice) would add lines to the output that tests read
 # exactly when CI starts with a cold kernel cache; tests/test_compile_progress.py checks it.
 os.environ.setdefault("SAILMUJOCO_QUIET", "1")
 
@@ -62,7 +62,7 @@ def hull_solid_below_water(p, heave, trim, heel, n=(400, 160, 120)):
     """(volume, first moment about CO in body axes) of the hull solid below the plane z = 0, by
     a midpoint grid over the solid, independent of the column quadrature the physics integrates.
 
-    The solid as sailmujoco/hull.py defines it: at station x (s = 2x/L) the waterline
+    The solid as sailmujoco/boat/hull.py defines it: at station x (s = 2x/L) the waterline
     half-breadth is b = b0 (1 - s^2) and the canoe depth t = t0 (1 - s^2); below the waterline
     a half-ellipse, z = -t sqrt(1 - (y/b)^2); outboard of it (b < |y| < k b) the topside,
     z = freeboard (|y| - b) / ((k - 1) b); a flat deck at z = freeboard. Body (x, y, z) goes to

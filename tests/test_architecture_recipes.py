@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sailmujoco import boats, suite, sweep
+from sailmujoco import suite, sweep
+from sailmujoco.boat import catalogue as boats
 from sailmujoco.study import run_study
 from sailmujoco.tasks.registry import TASKS
 

@@ -7,7 +7,8 @@ import pytest
 from conftest import gusty, load
 
 from sailmujoco import frames
-from sailmujoco.params import Foil, get_boat, saoud_robot
+from sailmujoco.boat.catalogue import get_boat, saoud_robot
+from sailmujoco.boat.params import Foil
 from sailmujoco.physics import BoatPhysics, SimulationStopped
 
 
@@ -140,7 +141,8 @@ def test_a_blown_up_state_stops_as_non_finite_not_as_capsized():
                                             ("sheeted", "rudder_rad,sheet_m")])
 def test_action_spec_names_its_units(sail_mode, name):
     """The sheeted sail's second command is a sheet length in metres, not an angle."""
-    from sailmujoco import mjcf, suite
+    from sailmujoco import suite
+    from sailmujoco.boat import mjcf
 
     env = suite.load("saoud_robot", "heading_hold", sail_mode=sail_mode)
     spec = env.action_spec()
@@ -182,7 +184,7 @@ def test_on_off_force_switches_take_true_or_false_only(option, value):
 
 
 def test_set_takes_tomls_true_and_false():
-    from sailmujoco.arguments import setting
+    from sailmujoco.cli.arguments import setting
 
     assert setting("windage=false") == ("windage", False)
     assert setting("keel_downwash=True") == ("keel_downwash", True)
@@ -193,7 +195,7 @@ def test_set_takes_tomls_true_and_false():
 def test_set_refuses_an_unknown_key_with_the_nearest_name(command, capsys):
     """A misspelt --set key ends before anything is built: one line naming it, where it was
     given and the nearest option the task and the physics take."""
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     argv = [command, "saoud_robot", "heading_hold", "--controller", "pid", "--set", "wind_sped=3"]
     if command == "video":

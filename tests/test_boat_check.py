@@ -20,8 +20,8 @@ import pytest
 from conftest import CALM
 
 from sailmujoco import frames
-from sailmujoco.boat_check import natural_periods
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.boat.check import natural_periods
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 BOATS = ("wille_yacht", "saoud_robot", "viel_boat")

@@ -9,11 +9,13 @@ import numpy as np
 import pytest
 from conftest import BOATS
 
-from sailmujoco import boat_file, hull, mjcf, suite, sweep
-from sailmujoco.boat_check import check_boat
-from sailmujoco.boat_schema import KEYS, SECTION_TYPES
-from sailmujoco.boats import get_boat
-from sailmujoco.cli import main
+from sailmujoco import suite, sweep
+from sailmujoco.boat import file as boat_file
+from sailmujoco.boat import hull, mjcf
+from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.boat.check import check_boat
+from sailmujoco.boat.schema import KEYS, SECTION_TYPES
+from sailmujoco.cli.main import main
 from sailmujoco.constants import GRAVITY
 
 RHO = 1025.0  # kg/m^3, the built-in boats' sea water

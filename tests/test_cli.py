@@ -8,11 +8,11 @@ import time
 
 import pytest
 
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 
 
 def test_help_runs(tmp_path):
-    out = subprocess.run([sys.executable, "-m", "sailmujoco.cli", "--help"], capture_output=True,
+    out = subprocess.run([sys.executable, "-m", "sailmujoco", "--help"], capture_output=True,
                          text=True, check=True, cwd=tmp_path)
     assert "check" in out.stdout
 
@@ -47,7 +47,7 @@ FOUR_PER_CORE = 4 * (os.cpu_count() or 1)  # local worker processes beyond this 
      "got '100000'"),
 ])
 def test_bad_numbers_exit_2_with_one_line(argv, message, capsys):
-    from sailmujoco import cli
+    from sailmujoco.cli import main as cli
 
     with pytest.raises(SystemExit) as err:
         cli.main(argv)

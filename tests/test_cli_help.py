@@ -5,7 +5,7 @@ from importlib import metadata
 
 import pytest
 
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 
 
 def test_study_help_lists_every_registered_study_with_its_title(capsys):

@@ -11,8 +11,9 @@ from importlib import metadata
 import pandas as pd
 import pytest
 
-from sailmujoco import cli, sweep
-from sailmujoco.cli import main
+from sailmujoco import sweep
+from sailmujoco.cli import main as cli
+from sailmujoco.cli.main import main
 
 
 def _section(out: str, heading: str) -> dict:

@@ -16,7 +16,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco import suite
-from sailmujoco.cli import build_parser, main
+from sailmujoco.cli.main import build_parser, main
 from sailmujoco.errors import ControllerFailed, act
 
 imageio = pytest.importorskip("imageio.v3")
@@ -205,7 +205,7 @@ class _Viewer:
 
 
 class _Window:
-    """MuJoCo's viewer as sailmujoco.view drives it (tests/test_view.py runs the real one in Xvfb)."""
+    """MuJoCo's viewer as sailmujoco.viewer.view drives it (tests/test_view.py runs the real one in Xvfb)."""
 
     opened = []
 
@@ -224,7 +224,7 @@ class _Window:
 
 
 def test_view_says_when_the_controller_failed(controller_file, monkeypatch, capsys):
-    from sailmujoco import view
+    from sailmujoco.viewer import view
 
     monkeypatch.setattr(view, "open_display", lambda: None)
     monkeypatch.setattr(view, "Window", _Window)

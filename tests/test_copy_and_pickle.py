@@ -11,7 +11,7 @@ import numpy as np
 import pytest
 
 from sailmujoco import suite
-from sailmujoco.params import BOATS
+from sailmujoco.boat.catalogue import BOATS
 from sailmujoco.physics import BoatPhysics, SimulationStopped
 from sailmujoco.tasks.base import measure
 

@@ -23,7 +23,7 @@ Hydrostatic potentials, derived from the forces the kernels apply:
 
 ``geometric``: buoyancy is +rho g per unit volume below the plane z = 0 and nothing above, the
 negative gradient of u(z) = -rho g min(z, 0). Over the hull U_h = -rho g int_wet z dV. The
-kernel cuts each column of :func:`sailmujoco.hull.column_quadrature` (footprint A, along body
+kernel cuts each column of :func:`sailmujoco.boat.hull.column_quadrature` (footprint A, along body
 z from z_bottom to z_top) exactly along its axis, so on the same columns, with body s along a
 column and world height z(s) = z_CO + R20 x + R21 y + R22 s,
 
@@ -52,7 +52,7 @@ import pytest
 from conftest import CALM
 
 from sailmujoco import frames
-from sailmujoco import hull as hull_geometry
+from sailmujoco.boat import hull as hull_geometry
 from sailmujoco.constants import GRAVITY
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 

@@ -82,7 +82,7 @@ def test_compiled_equals_interpreted(boat, hydrostatics, switches, tmp_path):
 FAST_PATH_CHECK = """
 import itertools, json
 from sailmujoco.forces import boat as kernels
-from sailmujoco.params import BOATS
+from sailmujoco.boat.catalogue import BOATS
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 entries = []
 for boat, hydrostatics, forms, sail_mode in itertools.product(
@@ -93,7 +93,7 @@ for boat, hydrostatics, forms, sail_mode in itertools.product(
                                forces=ForceSwitches(hydrostatics=hydrostatics, **switches))
     physics.step(3)
     entries.append(physics._kernel.compiled)
-from sailmujoco import four_dof, native
+from sailmujoco.step import four_dof, native
 for boat, hydrostatics in itertools.product(sorted(BOATS), ("geometric", "paper")):
     four = BoatPhysics.load(boat, dofs=4, forces=ForceSwitches(hydrostatics=hydrostatics))
     four.step(3)

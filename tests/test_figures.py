@@ -85,8 +85,8 @@ def _captured(monkeypatch):
 
 
 def test_the_robots_righting_curve_is_in_newton_metres(monkeypatch, tmp_path):
-    from sailmujoco.health import plot_righting_curve
-    from sailmujoco.params import get_boat
+    from sailmujoco.boat.catalogue import get_boat
+    from sailmujoco.cli.health import plot_righting_curve
 
     saved = _captured(monkeypatch)
     plot_righting_curve(get_boat("saoud_robot"), tmp_path / "r.png")

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 from conftest import load
 
+from sailmujoco.boat.catalogue import saoud_robot, wille_yacht
 from sailmujoco.forces import boat, foil
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import saoud_robot, wille_yacht
 
 TWO_PI = 2.0 * math.pi
 # Sheldahl & Klimas (1981) NACA 0015, Re = 1e6, as printed in the source file:

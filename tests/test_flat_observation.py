@@ -9,7 +9,7 @@ from dm_control.rl.control import flatten_observation
 
 from sailmujoco import suite
 from sailmujoco.forces.wind import MAX_SPEED, WindConfig
-from sailmujoco.observation import TrueState
+from sailmujoco.measurement.observation import TrueState
 
 # heading_hold: position 2, velocity 2, six scalars, desired_heading; true_state: 13 scalars,
 # true wind 2, wind speed and direction, apparent wind at the CE 2, current 2, time, 6 wrenches of 6

@@ -15,8 +15,8 @@ from gymnasium.error import ResetNeeded
 from gymnasium.utils.env_checker import check_env
 
 from sailmujoco import suite
+from sailmujoco.boat.catalogue import BOATS, get_boat
 from sailmujoco.gym import SailGymEnv, gym_ids
-from sailmujoco.params import BOATS, get_boat
 
 
 def test_every_boat_and_task_has_a_registered_id():

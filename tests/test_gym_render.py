@@ -8,7 +8,7 @@ from gymnasium.wrappers import RecordVideo
 
 import sailmujoco.gym  # noqa: F401  (registers the ids)
 from sailmujoco.gym import SailGymEnv
-from sailmujoco.window import NoDisplay
+from sailmujoco.viewer.window import NoDisplay
 
 
 def test_record_video_writes_an_mp4(tmp_path):

@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 from conftest import BOATS, CALM, hull_solid_below_water, load, only_hull
 
-from sailmujoco import frames, hull, stability
+from sailmujoco import frames
+from sailmujoco.boat import hull, stability
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
 from sailmujoco.forces.hydrostatics import paper_restoring
-from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 

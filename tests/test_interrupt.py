@@ -32,7 +32,7 @@ def test_ctrl_c_during_a_sweep_is_one_line_and_resume_finishes_it(tmp_path):
 def _interrupt_and_resume(tmp_path):
     spec, out, err_path = tmp_path / "ctrl_c.toml", tmp_path / "out", tmp_path / "err.txt"
     spec.write_text(TOML)
-    command = [sys.executable, "-m", "sailmujoco.cli", "sweep", str(spec), "--out", str(out),
+    command = [sys.executable, "-m", "sailmujoco", "sweep", str(spec), "--out", str(out),
                "--workers", "1"]
     with open(err_path, "w") as err:
         # its own process group, as a terminal's foreground job: Ctrl-C signals every process in it

@@ -7,9 +7,10 @@ import numpy as np
 import pytest
 from conftest import BOATS, gusty, load
 
-from sailmujoco import boat_geometry, mjcf
+from sailmujoco.boat import geometry as boat_geometry
+from sailmujoco.boat import mjcf
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import get_boat
 
 
 @pytest.mark.parametrize("boat", BOATS)
@@ -67,7 +68,7 @@ def test_model_structure(boat, sail_mode):
 def test_committed_xml_is_generated_from_params(boat):
     committed = mjcf.xml_root().joinpath(boat, f"{boat}.xml").read_text()
     assert committed == mjcf.boat_xml(get_boat(boat)), (
-        "xml is stale: run `python -m sailmujoco.mjcf xml`")
+        "xml is stale: run `python -m sailmujoco.boat.mjcf xml`")
 
 
 def test_wille_foil_positions_follow_eqs_26_30_34():
@@ -105,7 +106,7 @@ def test_sheet_length_and_angle_are_inverse():
 def test_hull_mesh_is_closed_and_wound_outward(boat):
     """Positive signed volume (outward faces, what back-face culling needs) equal to the canoe
     body plus the topsides up to the deck."""
-    from sailmujoco import hull
+    from sailmujoco.boat import hull
 
     p = get_boat(boat)
     verts, faces = boat_geometry.hull_mesh(p)

@@ -1,4 +1,4 @@
-"""The compiled control step (sailmujoco/native.py) is the Python-driven step, bit for bit.
+"""The compiled control step (sailmujoco/step/native.py) is the Python-driven step, bit for bit.
 
 The reference is the same MuJoCo step with the stage work (force kernel, added mass,
 refactorisation) called from Python, ``BoatPhysics.compiled_loop = False``. Equality is exact
@@ -16,9 +16,9 @@ import mujoco
 import numpy as np
 import pytest
 
-from sailmujoco import native
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches, SimulationStopped
+from sailmujoco.step import native
 
 EULER = mujoco.mjtIntegrator.mjINT_EULER
 

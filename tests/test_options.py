@@ -10,7 +10,8 @@ import typing
 import numpy as np
 import pytest
 
-from sailmujoco import mjcf, options, suite, sweep
+from sailmujoco import options, suite, sweep
+from sailmujoco.boat import mjcf
 from sailmujoco.forces import boat as kernels
 from sailmujoco.options import ForceSwitches, PhysicsOptions
 
@@ -61,7 +62,7 @@ def test_the_library_reads_the_choices_from_the_literals():
 def test_the_command_lines_world_choices_are_the_literals():
     import argparse
 
-    from sailmujoco import cli
+    from sailmujoco.cli import main as cli
 
     def world_choices(parser):
         for action in parser._actions:
@@ -169,7 +170,7 @@ def test_a_physics_option_given_twice_is_refused(kwargs, message):
 
 
 def test_boat_parameters_as_the_boat():
-    from sailmujoco.params import get_boat
+    from sailmujoco.boat.catalogue import get_boat
 
     params = get_boat("saoud_robot", l_phi=0.2)
     env = suite.load(params, "heading_hold", seed=0)

@@ -15,7 +15,7 @@ import pytest
 from test_view import xvfb  # noqa: F401  (the fixture: a virtual X server, skipped as there)
 
 from sailmujoco import polar, suite, sweep
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 from sailmujoco.sweep import SweepError
 
 LAW = textwrap.dedent('''

@@ -12,7 +12,7 @@ away), each a run of a few control periods with changing commands, then the diag
   and CPU flags, an AMD and an Intel one, a masthead wind differed in its last bit), so every
   number of it is compared to 1e-9 relative here;
 * against the same source run in the interpreter (``NUMBA_DISABLE_JIT=1``, a subprocess), the
-  reference path of every kernel (:mod:`sailmujoco._jit`).
+  reference path of every kernel (:mod:`sailmujoco.step.jit`).
 """
 
 from __future__ import annotations
@@ -27,8 +27,8 @@ from pathlib import Path
 
 import numpy as np
 
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import get_boat
 from sailmujoco.physics import ForceSwitches, SimulationStopped
 from sailmujoco.reference.viel import VielParams, VielWorld, observation_from_world
 from sailmujoco.reference.wille import Wille4DOF

@@ -46,7 +46,7 @@ SIGNATURES = """
 import json, math
 import numpy as np
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.reference import viel, wille_model
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.reference.wille import Wille4DOF

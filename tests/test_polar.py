@@ -4,7 +4,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco import polar
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 
 
 def test_best_vmg_picks_the_right_angles():

@@ -3,7 +3,7 @@ terminal, and a sweep that counts a capsize as stopped, not failed."""
 
 import io
 
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 from sailmujoco.progress import Progress
 
 

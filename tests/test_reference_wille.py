@@ -7,9 +7,9 @@ import numpy as np
 import pytest
 from conftest import CALM, PAPER_FORMS
 
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.frames import wrap_angle
-from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.wille import Wille4DOF
 

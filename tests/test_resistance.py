@@ -19,12 +19,12 @@ from conftest import load
 from scipy.optimize import brentq
 
 from sailmujoco import frames
-from sailmujoco import hull as hull_geometry
+from sailmujoco.boat import hull as hull_geometry
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
 from sailmujoco.forces import boat as kernels
 from sailmujoco.forces import resistance as rs
 from sailmujoco.forces.damping import surge_resistance
-from sailmujoco.params import get_boat
 
 # Gerritsma et al. (1981) / Delft data set rows 10, 12, 14: the parent hull, R_r / W x 1e3
 SYSSER1_MEASURED = {0.35: 7.16, 0.40: 20.11, 0.45: 49.49}

@@ -1,7 +1,7 @@
 """The 6-DOF boat in the sea: calm water untouched, long waves followed, a JONSWAP sea ridden.
 
 Expected values from linear seakeeping theory (Newman 1977, ch. 6; Faltinsen 1990, ch. 2-3),
-with the natural periods from the hull's closed forms (:mod:`sailmujoco.hull`):
+with the natural periods from the hull's closed forms (:mod:`sailmujoco.boat.hull`):
 
 * heave, head seas, T >= 5 T_3 and a wave 15 hull lengths or longer: the pressure on the bottom
   is rho g a e^(-k d) and the dynamic amplification 1/(1 - (T_3/T)^2); for a floating body
@@ -27,11 +27,12 @@ import math
 import numpy as np
 import pytest
 
-from sailmujoco import hull, suite, sweep
+from sailmujoco import suite, sweep
+from sailmujoco.boat import hull
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.waves import WaveConfig
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.options import PhysicsOptions
-from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 BOATS = ("wille_yacht", "saoud_robot", "viel_boat")

@@ -14,7 +14,9 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from sailmujoco import cli, study, study_runner, sweep
+from sailmujoco import study, sweep
+from sailmujoco.cli import main as cli
+from sailmujoco.cli import study as study_runner
 from sailmujoco.study import Results, Runs, Study, run_study
 
 HERE = f"{Path(__file__).stem}"

@@ -4,7 +4,9 @@ took; where output is not a terminal, progress is plain lines, never carriage re
 import time
 from types import SimpleNamespace
 
-from sailmujoco import cli, study_runner, sweep
+from sailmujoco import sweep
+from sailmujoco.cli import main as cli
+from sailmujoco.cli import study as study_runner
 from sailmujoco.study import Runs, Study
 
 

@@ -21,8 +21,8 @@ def smoke(study, out) -> dict:
 
 
 def test_wind_at_the_sail_is_four_metres_per_second():
+    from sailmujoco.boat.catalogue import get_boat
     from sailmujoco.forces.wind import log_profile
-    from sailmujoco.params import get_boat
 
     u10 = saoud.wind_speed_10()
     ce = get_boat("saoud_robot", l_phi=0.1).sail.ce_height

@@ -14,7 +14,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco import sweep
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 
 SPEC = {
     "name": "t",
@@ -124,7 +124,7 @@ def test_killing_the_driver_then_resume_runs_only_the_missing(tmp_path):
     spec_file = tmp_path / "sweep.toml"
     spec_file.write_text(_toml(spec))
     out = tmp_path / "out"
-    cmd = [sys.executable, "-m", "sailmujoco.cli", "sweep", str(spec_file), "--out", str(out),
+    cmd = [sys.executable, "-m", "sailmujoco.cli.main", "sweep", str(spec_file), "--out", str(out),
            "--scheduler", "serial", "--no-progress"]
     # run outside the checkout: from its root, `python -m` would import the source tree
     # instead of the installed package

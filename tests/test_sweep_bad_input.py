@@ -7,7 +7,7 @@ import re
 import pytest
 
 from sailmujoco import sweep
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 from sailmujoco.sweep import SweepError
 
 BASE = {"name": "bad", "boat": "saoud_robot", "task": "heading_hold", "controller": "pid",

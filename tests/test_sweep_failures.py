@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco import sweep
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 from sailmujoco.sweep.engine import Engine
 
 LAW = textwrap.dedent('''

@@ -10,7 +10,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco import sweep
-from sailmujoco.cli import main
+from sailmujoco.cli.main import main
 
 SPEC = {"name": "tiny", "boat": "saoud_robot", "task": "heading_hold", "world": "mujoco",
         "controller": "pid", "duration": 1.0, "seeds": [0, 1], "metrics": ["mean_surge"],

@@ -9,7 +9,8 @@ import math
 import numpy as np
 import pytest
 
-from sailmujoco import mjcf, params, suite, sweep, video
+from sailmujoco import suite, sweep, video
+from sailmujoco.boat import catalogue, mjcf
 from sailmujoco.video import panel, water
 from sailmujoco.video.camera import OFF_NORMAL, SIDE_HYSTERESIS
 
@@ -42,7 +43,7 @@ def test_follow_camera_changes_side_only_past_the_hysteresis():
 
 def test_boom_angle_of_the_display_model_follows_the_sail_joint():
     """The boom hinges about -z (mjcf): a positive sail angle swings it to port."""
-    p = params.get_boat("saoud_robot")
+    p = catalogue.get_boat("saoud_robot")
     renderer = video.SceneRenderer(p, offscreen=False)
     snap = video.Snapshot(time=0.0, position=np.zeros(3), rotation=np.eye(3), rudder=0.0,
                           sail=math.radians(30.0), speed=0.0, heel=0.0, awa=0.0, aws=0.0,
@@ -112,7 +113,7 @@ def test_sea_texture_tiles_without_a_seam():
 
 
 def test_display_sea_is_see_through_over_deep_water():
-    p = params.get_boat("viel_boat")
+    p = catalogue.get_boat("viel_boat")
     model = video.display_model(p)
     sea = model.material("sea").id
     assert model.mat_rgba[sea, 3] == pytest.approx(water.SEA_ALPHA)
@@ -125,7 +126,7 @@ def test_display_sea_is_see_through_over_deep_water():
 @pytest.mark.parametrize("boat", ["wille_yacht", "saoud_robot", "viel_boat"])
 def test_scene_pictures_leave_the_physics_alone(boat):
     """The simulated model's sea is drawn only: no contact, no mass, one plane."""
-    model = mjcf.compile_model(params.get_boat(boat))
+    model = mjcf.compile_model(catalogue.get_boat(boat))
     sea = model.geom("sea_surface").id
     assert model.geom_contype[sea] == 0 and model.geom_conaffinity[sea] == 0
     assert model.body_mass[model.geom_bodyid[sea]] == 0.0  # the world body

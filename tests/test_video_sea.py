@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.waves import WaveConfig
-from sailmujoco.params import get_boat
 from sailmujoco.video import SceneRenderer, Snapshot
 
 GRAVITY = 9.81
@@ -135,7 +135,7 @@ def test_a_video_in_a_sea_draws_the_moving_elevation(boat, tmp_path, monkeypatch
 
 # ----------------------------------------------------------------------------- the command line
 def cli_video(tmp_path, *waves_arguments):
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     return main(["video", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll",
                  "--seconds", "0.4", "--fps", "5", "--width", "64", "--height", "48",
@@ -188,7 +188,7 @@ def test_cli_bad_sea_is_one_line_and_exit_2(tmp_path, capsys, pair, message):
 
 
 def test_cli_paper_world_refuses_a_sea(tmp_path, capsys):
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     code = main(["video", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll", "--world",
                  "paper", "--waves", "hs=1", "--out", str(tmp_path / "x.mp4")])
@@ -197,7 +197,7 @@ def test_cli_paper_world_refuses_a_sea(tmp_path, capsys):
 
 
 def test_video_help_shows_the_sea_with_an_example(capsys):
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     for command in ("video", "view"):
         with pytest.raises(SystemExit):

@@ -1,4 +1,4 @@
-"""viel_boat: Viel et al. (2019) Table 1's 300 kg boat in 6-DOF (sailmujoco/params.py::viel_boat).
+"""viel_boat: Viel et al. (2019) Table 1's 300 kg boat in 6-DOF (sailmujoco/boat/catalogue.py::viel_boat).
 
 Floats at its design draft, its hull has the stated displacement, GM_t and LCB by an integral
 independent of hull.py, and it sails a polar of the same order as Viel's own 3-DOF model.
@@ -11,9 +11,9 @@ import pytest
 from conftest import load
 
 from sailmujoco import frames
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY, RHO_WATER
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielWorld
 

@@ -14,9 +14,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from sailmujoco.view import KEY_RIGHT, KEY_SPACE, Keys
+from sailmujoco.viewer.view import KEY_RIGHT, KEY_SPACE, Keys
 
-VIEW = [sys.executable, "-m", "sailmujoco.cli", "view", "wille_yacht", "heading_hold", "--controller", "pid"]
+VIEW = [sys.executable, "-m", "sailmujoco", "view", "wille_yacht", "heading_hold", "--controller", "pid"]
 RESULT = re.compile(r"viewed (?P<sim>[\d.]+) s simulated in (?P<wall>[\d.]+) s "
                     r"\(real-time factor (?P<rtf>[\d.]+)\); the boat moved (?P<distance>[\d.]+) m")
 
@@ -107,7 +107,7 @@ def test_view_screenshot_is_the_state_it_names_under_load(xvfb, tmp_path):
     from the camera the PNG names; a state 0.6 s earlier looks different."""
     from PIL import Image
 
-    from sailmujoco.screenshot import read_stamp
+    from sailmujoco.viewer.screenshot import read_stamp
 
     shot = tmp_path / "loaded.png"
     load = [subprocess.Popen([sys.executable, "-c", "while True: pass"]) for _ in range(2)]
@@ -146,7 +146,7 @@ def test_without_a_display_one_line_points_to_video(display, tmp_path):
 
 def test_without_a_display_a_bad_name_is_named_not_passed_on_to_video(capsys):
     """The video command suggested without a display must be one that runs: names first."""
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     assert main(["view", "wille_yacht", "heading_hold", "--controller", "nope"]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -171,7 +171,7 @@ def test_space_pauses_and_right_arrow_steps_once_per_press():
 
 @pytest.mark.parametrize("setting, option", [("seed=3", "--seed"), ("time_limit=5", "--seconds")])
 def test_episode_seed_and_length_are_options_not_settings(setting, option, capsys):
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     assert main(["view", "wille_yacht", "heading_hold", "--controller", "pid", "--set", setting]) == 2
     err = capsys.readouterr().err.strip().splitlines()
@@ -181,7 +181,7 @@ def test_episode_seed_and_length_are_options_not_settings(setting, option, capsy
 def test_view_takes_the_videos_sea_and_names_a_bad_one_before_the_display(tmp_path, capsys):
     """--waves as in `sailmujoco video`: a bad value is one line (exit 2) whatever the display;
     without a display the video command suggested sails in the same sea."""
-    from sailmujoco.cli import main
+    from sailmujoco.cli.main import main
 
     assert main(["view", "wille_yacht", "beam_reach_roll", "--controller", "wille_roll",
                  "--waves", "tp=-6"]) == 2

@@ -19,11 +19,12 @@ import numpy as np
 import pytest
 from scipy.special import j1
 
-from sailmujoco import frames, hull
+from sailmujoco import frames
+from sailmujoco.boat import hull
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
 from sailmujoco.forces.hydrostatics import geometric_buoyancy
 from sailmujoco.forces.wave_pressure import froude_krylov
-from sailmujoco.params import get_boat
 
 RHO = 1025.0  # kg/m^3
 G = GRAVITY  # m/s^2

@@ -8,7 +8,7 @@ from sailmujoco.controllers.base import Composite
 from sailmujoco.controllers.wille import WilleHeading, lift_slope
 
 from sailmujoco import suite
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 
 
 def _observation(**true_state):

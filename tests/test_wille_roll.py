@@ -17,8 +17,8 @@ from sailmujoco.controllers.wille_roll import (
 )
 
 from sailmujoco import frames
+from sailmujoco.boat.catalogue import wille_yacht
 from sailmujoco.forces.wind import WindConfig, log_profile
-from sailmujoco.params import wille_yacht
 
 DEG = math.pi / 180.0
 P = wille_yacht()

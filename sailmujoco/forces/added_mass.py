@@ -1,7 +1,7 @@
 """Added mass: the velocity terms. The inertia term is solved exactly inside the MuJoCo step.
 
 Wille (2016a) eqs. 8-11 with the diagonal M_A of §2.1, generalised to 6 DOF with heave and
-pitch added mass (strip theory, :mod:`sailmujoco.hull`). For a diagonal
+pitch added mass (strip theory, :mod:`sailmujoco.boat.hull`). For a diagonal
 M_A = diag(A1, A2) (A1 translational, A2 rotational, positive), Kirchhoff's equations give the
 fluid force on a body in an unbounded ideal fluid (Fossen 2011, eqs. 6.43-6.54)
 
@@ -58,7 +58,7 @@ computed here adds back A1 (omega x v_r).
 
 from __future__ import annotations
 
-from .._jit import kernel
+from ..step.jit import kernel
 
 
 @kernel

@@ -3,7 +3,7 @@
 :func:`boat_forces` is a pure function of (time, generalised position and velocity, packed
 parameters, wind arrays). It calls the force models of this package and returns each term's
 wrench, the hinge moments and the generalised forces MuJoCo needs. The packing of
-:class:`~sailmujoco.params.BoatParams` into the flat array ``P`` is defined in
+:class:`~sailmujoco.boat.params.BoatParams` into the flat array ``P`` is defined in
 :mod:`sailmujoco.forces.boat_parameters`; its names are importable from here too.
 
 Term order (rows of ``terms``), each a body-frame wrench about CO:
@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import math
 
-from .._jit import kernel
+from ..step.jit import kernel
 from .added_mass import added_mass_velocity_terms
 from .boat_parameters import (  # noqa: F401 - the layout of P, importable from here too
     ADDED_MASS_COUPLINGS,

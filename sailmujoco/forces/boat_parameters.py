@@ -1,6 +1,6 @@
 """The boat's parameters packed into the flat array the force kernel reads.
 
-:func:`pack_parameters` flattens a :class:`~sailmujoco.params.BoatParams` and the force
+:func:`pack_parameters` flattens a :class:`~sailmujoco.boat.params.BoatParams` and the force
 switches into ``P``, laid out by the ``P_*`` indices below; blocks of ``P`` are owned by one
 force module each, which defines the offsets inside its block. numba dispatches a flat array
 in well under a microsecond; a record of 60 fields takes many.
@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .. import hull as hull_geometry
+from ..boat import hull as hull_geometry
+from ..boat.params import BoatParams
 from ..constants import GRAVITY
 from ..options import AddedMassCoupling, Foils, Hydrostatics, Resistance, RestoringAxes, VerticalDamping
 from ..options import choices as literal_choices
-from ..params import BoatParams
 from .finite_wing import pack_foil_block
 from .resistance import delft_hull, pack_resistance
 from .windage import pack_windage

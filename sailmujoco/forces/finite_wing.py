@@ -11,7 +11,7 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
+from ..step.jit import kernel
 from .damping import ittc_friction_coefficient
 from .foil_sections import section_coefficients, wrap_pi
 

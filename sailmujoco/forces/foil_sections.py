@@ -14,7 +14,7 @@ from importlib import resources
 
 import numpy as np
 
-from .._jit import kernel
+from ..step.jit import kernel
 from .damping import ittc_friction_coefficient
 
 

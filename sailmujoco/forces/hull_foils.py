@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from .._jit import kernel
+from ..step.jit import kernel
 from .foil import (
     finite_hydrofoil_coefficients,
     foil_world_force,

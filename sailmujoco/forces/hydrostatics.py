@@ -8,7 +8,7 @@
     CG; the roll and pitch moments act about level axes (a couple of vertical forces).
 ``geometric``
     Buoyancy integrated over the hull's columns against the flat water plane z = 0
-    (:func:`sailmujoco.hull.column_quadrature`). Each column is cut exactly along its axis;
+    (:func:`sailmujoco.boat.hull.column_quadrature`). Each column is cut exactly along its axis;
     heave, pitch and roll restoring and the large-heel righting curve (deck-edge immersion,
     bilge emergence) follow from the geometry. At small heel it reproduces GM_t.
 """
@@ -17,7 +17,7 @@ from __future__ import annotations
 
 import math
 
-from .._jit import kernel
+from ..step.jit import kernel
 
 
 @kernel
@@ -35,7 +35,7 @@ def submerged_volume(pos_z, rot, columns):
         Rotation body -> world (body FLU, world ENU).
     columns : numpy.ndarray, shape (5, n)
         The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top) in m
-        and m^2 (:func:`sailmujoco.hull.column_quadrature`).
+        and m^2 (:func:`sailmujoco.boat.hull.column_quadrature`).
 
     Returns
     -------
@@ -88,7 +88,7 @@ def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
         Rotation body -> world (body FLU, world ENU).
     columns : numpy.ndarray, shape (5, n)
         The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top) in m
-        and m^2 (:func:`sailmujoco.hull.column_quadrature`).
+        and m^2 (:func:`sailmujoco.boat.hull.column_quadrature`).
     rho : float
         Water density, kg/m^3.
     g : float

@@ -57,7 +57,7 @@ Choices (none of them is in the source, which gives tables on its Froude range o
   (:func:`sailmujoco.frames.euler_from_matrix`), taken in absolute value (port or starboard
   heel is the same hull shape), capped at 90 deg (the kernel stops at capsize anyway).
 
-The canoe body's parameters come from :mod:`sailmujoco.hull` (:func:`delft_hull`), so a new
+The canoe body's parameters come from :mod:`sailmujoco.boat.hull` (:func:`delft_hull`), so a new
 hull shape carries over. Its sections are half-ellipses and its section area (1 - (2x/L)^2)^2
 along x, hence C_p = V / (A_m L) = 8/15 and C_m = A_m / (B T_c) = pi/4; LCB = LCF = midship.
 """
@@ -69,9 +69,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .. import hull as hull_geometry
-from .._jit import kernel
+from ..boat import hull as hull_geometry
 from ..constants import GRAVITY
+from ..step.jit import kernel
 
 # ---- Keuning & Katgert (2008), Fossati (2009) Table 2.5: upright residuary resistance -------
 UPRIGHT_FROUDE = np.array([0.15, 0.20, 0.25, 0.30, 0.35, 0.40, 0.45, 0.50, 0.55, 0.60, 0.65,
@@ -157,7 +157,7 @@ class DelftHull:
 
 
 def delft_hull(h: hull_geometry.HullShape) -> DelftHull:
-    """The DSYHS parameters of a :class:`~sailmujoco.hull.HullShape` canoe body (module docstring).
+    """The DSYHS parameters of a :class:`~sailmujoco.boat.hull.HullShape` canoe body (module docstring).
 
     Parameters
     ----------

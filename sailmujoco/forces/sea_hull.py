@@ -2,7 +2,7 @@
 
 The force kernel keeps calm water's buoyancy on the hull's fine columns as it is
 (:func:`sailmujoco.forces.hydrostatics.geometric_buoyancy`, bit for bit) and adds the sea's part,
-:func:`hull_sea_wrench`, on the coarse regular grid of :mod:`sailmujoco.hull_grid`:
+:func:`hull_sea_wrench`, on the coarse regular grid of :mod:`sailmujoco.boat.hull_grid`:
 
     F = F_calm(fine) + [F_sea(grid) - F_calm(grid)],
 
@@ -24,7 +24,7 @@ Three more terms, each with its switch (:class:`sailmujoco.options.ForceSwitches
   wavelength feels (rho V + A) times the water's acceleration; rho V is the Froude-Krylov force
   above, A times the acceleration the diffraction force. It is summed strip-wise: the added mass
   A11, A22, A33 (the boat's, the same that the mass matrix holds at CO) shared among the grid's
-  stations in proportion to b(x)^2 (:func:`sailmujoco.hull_grid.section_weights`), each strip
+  stations in proportion to b(x)^2 (:func:`sailmujoco.boat.hull_grid.section_weights`), each strip
   taking the water's acceleration on the centre line at its section's centroid depth, turned to
   body axes, and acting at (x_i, 0, 0), the height where the mass matrix holds the added mass, so
   that the long wave's sway force and the added mass's inertia cancel as they do for a body
@@ -42,8 +42,8 @@ the damping it has in calm water; added resistance in waves; green water; the se
 
 from __future__ import annotations
 
-from .._jit import kernel
-from ..hull_grid import GRID_ROWS, GRID_STATIONS
+from ..boat.hull_grid import GRID_ROWS, GRID_STATIONS
+from ..step.jit import kernel
 from .hydrostatics import buoyancy_wrench
 from .lane_math import sincos
 
@@ -292,8 +292,8 @@ def hull_sea_wrench(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, flota
     sc : numpy.ndarray, shape (SCRATCH_ROWS + 2 ny, m)
         Scratch.
     columns : numpy.ndarray, shape (6, nx * ny)
-        The grid's columns (:func:`sailmujoco.hull_grid.hull_grid`) and in row 5 each station's
-        share of the added mass (:func:`sailmujoco.hull_grid.section_weights`).
+        The grid's columns (:func:`sailmujoco.boat.hull_grid.hull_grid`) and in row 5 each station's
+        share of the added mass (:func:`sailmujoco.boat.hull_grid.section_weights`).
     dx, dy : float
         The grid's steps, m.
     nx, ny : int

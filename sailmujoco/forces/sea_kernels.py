@@ -24,8 +24,8 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
-from ..hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
+from ..boat.hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
+from ..step.jit import kernel
 from .boat_parameters import P_SEA_BLOCK
 from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
@@ -40,7 +40,7 @@ _M1, _M2, _M3, _M4, _M5, _M6, _M7 = (1.0 / math.factorial(n + 1) for n in range(
 # sea's paths into the boat (the hull's, the foils'); the other three refine the hull's:
 SEA_SWITCHES = ("wave_hull", "wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
 SB_RAMP, SB_HULL, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(6)
-SB_DX, SB_DY, SB_NX, SB_NY = range(6, 10)  # the hull's grid (sailmujoco/hull_grid.py): steps, counts
+SB_DX, SB_DY, SB_NX, SB_NY = range(6, 10)  # the hull's grid (sailmujoco/boat/hull_grid.py): steps, counts
 
 
 def check_sea(config, dofs: int) -> None:
@@ -62,7 +62,7 @@ def check_sea(config, dofs: int) -> None:
 def sea_array(config: WaveConfig | None, depths=()) -> np.ndarray:
     """The kernel's sea array of the components the boat feels (module docstring): SEA_ROWS
     rows, then e^(k_j z_i) at the depths z_i of the hull's grid stations
-    (:func:`sailmujoco.hull_grid.section_depths`), then the hull's scratch rows
+    (:func:`sailmujoco.boat.hull_grid.section_depths`), then the hull's scratch rows
     (:func:`sailmujoco.forces.sea_hull.hull_sea_wrench`); m = 0 for None or ``hs = 0`` (calm).
 
     Parameters
@@ -94,9 +94,9 @@ def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> n
     Parameters
     ----------
     grid : HullGrid
-        The hull's coarse grid (:func:`sailmujoco.hull_grid.hull_grid`).
+        The hull's coarse grid (:func:`sailmujoco.boat.hull_grid.hull_grid`).
     shares : numpy.ndarray, shape (nx,)
-        Each station's share of the added mass (:func:`sailmujoco.hull_grid.section_weights`).
+        Each station's share of the added mass (:func:`sailmujoco.boat.hull_grid.section_weights`).
     P : numpy.ndarray
         The packed parameters, written in place.
     switches : ForceSwitches

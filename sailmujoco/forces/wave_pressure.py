@@ -59,7 +59,7 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
+from ..step.jit import kernel
 from .hydrostatics import buoyancy_wrench
 
 
@@ -203,7 +203,7 @@ def froude_krylov(pos, rot, columns, amplitude, omega, wavenumber, direction_to,
         Rotation body -> world (body FLU, world ENU).
     columns : numpy.ndarray, shape (5, n)
         The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top) in m
-        and m^2 (:func:`sailmujoco.hull.column_quadrature`).
+        and m^2 (:func:`sailmujoco.boat.hull.column_quadrature`).
     amplitude, omega, wavenumber, direction_to, phase : numpy.ndarray, shape (m,)
         The components: amplitudes a_j (m), angular frequencies omega_j (rad/s), wavenumbers
         k_j (rad/m; deep water omega_j^2 / g), the world angle each travels toward, from east

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
+from ..step.jit import kernel
 
 
 @kernel

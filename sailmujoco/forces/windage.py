@@ -16,7 +16,7 @@ boat's dimensions:
   where V is the air's velocity relative to the element's centroid, in the body x-y plane.
   We take the middle of Fossen's ranges, c_x = 0.7, c_y = 0.8 (guess: a yacht's rounded low
   topsides are no blunter than a ship's). A_L = L x freeboard (the hull's vertical topsides,
-  sailmujoco/hull.py), A_F = deck beam x freeboard; the force acts at the centroid of the
+  sailmujoco/boat/hull.py), A_F = deck beam x freeboard; the force acts at the centroid of the
   topsides, (centre of the deck's length, 0, freeboard / 2). Fossen's yaw term C_N = c_n
   sin(2 gamma) (the centroid's shift with gamma, c_n 0.05-0.20) is left out: our topsides
   are fore-aft symmetric.
@@ -36,7 +36,7 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
+from ..step.jit import kernel
 
 C_X_TOPSIDES = 0.7  # -, Fossen (2011) §8.1: c_x in [0.50, 0.90]; middle of the range
 C_Y_TOPSIDES = 0.8  # -, Fossen (2011) §8.1: c_y in [0.70, 0.95]; middle of the range

@@ -14,9 +14,9 @@ from dataclasses import dataclass, fields
 
 import numpy as np
 
-from .._jit import kernel
 from ..forces.wind import wind_velocity
 from ..frames import wrap_angle
+from ..step.jit import kernel
 from .hypot import hypot
 from .integrators import DOMAIN_ERROR, STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
 

@@ -47,13 +47,14 @@ import math
 import numpy as np
 
 from .. import frames
+from ..boat.catalogue import get_boat
+from ..boat.hull import strip_quadrature
+from ..boat.params import BoatParams
 from ..errors import SimulationStopped  # the same stop as in 6 DOF
 from ..forces.foil import naca0015
 from ..forces.wind import WANDER_DT, WindConfig, WindField
-from ..hull import strip_quadrature
-from ..observation import PI, observation_dict, wrap, wrench_rows
+from ..measurement.observation import PI, observation_dict, wrap, wrench_rows
 from ..options import PaperModel, choices
-from ..params import BoatParams, get_boat
 from ..physics import ForceSwitches  # the same switches as in 6 DOF
 from . import wille_model
 from .integrators import DOMAIN_ERROR, INTEGRATORS, MESSAGES, STATUS_RAN_AWAY, integrate, steps_for
@@ -71,7 +72,7 @@ class Wille4DOF:
     Parameters
     ----------
     boat : str
-        A registered boat (:func:`sailmujoco.boats.get_boat`), used when ``params`` is None.
+        A registered boat (:func:`sailmujoco.boat.catalogue.get_boat`), used when ``params`` is None.
     params : BoatParams, optional
         Boat parameters (``get_boat(boat)`` if not given).
     wind : WindConfig
@@ -441,7 +442,7 @@ class Wille4DOF:
     # ------------------------------------------------------------------ the task's measurement
     def measure(self) -> tuple[dict, dict]:
         """(observation, record) of the world now, as the MuJoCo boat's
-        :meth:`~sailmujoco.accessors.BoatAccessors.measure`: what
+        :meth:`~sailmujoco.measurement.accessors.BoatAccessors.measure`: what
         :func:`sailmujoco.tasks.base.measure` and the accessors give, bit for bit, from one
         rotation, one masthead flow and one packing of the kernels' arguments for the force terms
         and the sail flow.
@@ -493,7 +494,7 @@ class Wille4DOF:
         Returns
         -------
         dict
-            Empty (the MuJoCo boat's :meth:`~sailmujoco.accessors.BoatAccessors.diagnostic_record`
+            Empty (the MuJoCo boat's :meth:`~sailmujoco.measurement.accessors.BoatAccessors.diagnostic_record`
             measures what this model holds fixed).
         """
         return {}

@@ -16,7 +16,6 @@ import math
 
 import numpy as np
 
-from .._jit import kernel
 from ..constants import GRAVITY
 from ..forces.added_mass import kirchhoff_terms
 from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
@@ -29,6 +28,7 @@ from ..forces.foil import (
 )
 from ..forces.hydrostatics import paper_righting_moment
 from ..forces.wind import wind_velocity
+from ..step.jit import kernel
 from .integrators import STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
 
 TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")

@@ -20,7 +20,7 @@ from pathlib import Path
 
 import numpy as np
 
-from ..boat_schema import is_boat_file
+from ..boat.schema import is_boat_file
 from ..errors import one_line
 from ..names import check_known, nearest
 from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
@@ -111,7 +111,7 @@ def _parameters(fn) -> set:
 
 
 def _allowed_options(spec: dict) -> dict:
-    from ..params import BOATS
+    from ..boat.catalogue import BOATS
     from ..suite import task_options
 
     boat = spec["boat"]
@@ -133,7 +133,7 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
     source : str
         Where it came from, for the messages (e.g. ``"sweep file 'x.toml'"``).
     """
-    from ..params import BOATS
+    from ..boat.catalogue import BOATS
     from ..suite import TASKS, WORLDS
 
     if not isinstance(spec, dict):
@@ -153,7 +153,7 @@ def validate(spec: dict, *, source: str = "the sweep description") -> dict:
             raise SweepError(f"{key} = {spec[key]!r} is not one of: {', '.join(allowed)}{boat_file}"
                              f"{_did_you_mean(spec[key], allowed)}")
     if is_boat_file(spec["boat"]):  # a missing or bad boat file: its own lines, before any run
-        from ..params import get_boat
+        from ..boat.catalogue import get_boat
 
         spec["boat"] = str(Path(spec["boat"]).resolve())  # the workers may run elsewhere
         try:
@@ -234,7 +234,7 @@ def _check_values(spec: dict, runs: list[dict], source: str = "the sweep descrip
     """Check every run's option values before any run starts: each distinct boat, task and
     controller option set is built once, and the environment once per distinct ``env.`` set
     (a MuJoCo model build, about 0.05 s); then the metrics asked for."""
-    from ..params import BOATS, get_boat
+    from ..boat.catalogue import BOATS, get_boat
     from ..suite import TASKS, load
 
     where = f", in {source}"

@@ -22,7 +22,7 @@ Ending early never pays
 
 Observation
     The world's measurement (:func:`measure`) plus the task's references; its ``true_state``
-    is a :class:`sailmujoco.observation.TrueState` (a dict that flattens as one array, so
+    is a :class:`sailmujoco.measurement.observation.TrueState` (a dict that flattens as one array, so
     ``dm_control.rl.control.flatten_observation`` and ``flat_observation=True`` work), or left
     out with ``include_true_state=False``. The reward reads the whole measurement either way.
 """
@@ -37,7 +37,7 @@ from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..observation import WRENCH_KEYS, WRENCH_NAMES, TrueState
+from ..measurement.observation import WRENCH_KEYS, WRENCH_NAMES, TrueState
 from .environment import SailEnvironment  # noqa: F401  (imported from here too)
 from .world import PaperPhysics, World  # noqa: F401  (PaperPhysics: imported from here too)
 
@@ -329,7 +329,7 @@ class SailTask(control.Task):
 
     def observation_of(self, measured: dict) -> dict:
         """The observation handed out for a measurement: its ``true_state`` as a
-        :class:`~sailmujoco.observation.TrueState`, or without it (``include_true_state=False``).
+        :class:`~sailmujoco.measurement.observation.TrueState`, or without it (``include_true_state=False``).
 
         Parameters
         ----------

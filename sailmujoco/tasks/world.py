@@ -101,7 +101,7 @@ class World(Protocol):
         Returns
         -------
         dict
-            See :meth:`sailmujoco.accessors.BoatAccessors.diagnostic_record`.
+            See :meth:`sailmujoco.measurement.accessors.BoatAccessors.diagnostic_record`.
         """
 
 

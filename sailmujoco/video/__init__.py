@@ -74,7 +74,7 @@ Modules
     :class:`RenderingUnavailable`; ``command``: the ``sailmujoco video`` command.
 """
 
-from ..arguments import check_settings
+from ..cli.arguments import check_settings
 from .camera import FollowCamera, boom_angle, yaw_of
 from .command import add_parser, main, run_cli
 from .gl import FIX, RenderingUnavailable, check_rendering

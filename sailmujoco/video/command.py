@@ -6,7 +6,7 @@ import argparse
 import sys
 import textwrap
 
-from ..arguments import (
+from ..cli.arguments import (
     SEED,
     HelpFormatter,
     add_controller_arguments,

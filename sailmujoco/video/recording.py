@@ -22,7 +22,7 @@ from contextlib import contextmanager, nullcontext
 from dataclasses import dataclass
 from pathlib import Path
 
-from ..boats import boat_label
+from ..boat.catalogue import boat_label
 from ..errors import ControllerFailed, act
 from ..progress import Progress
 from .camera import ELEVATION_DEG
@@ -125,7 +125,7 @@ def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | N
         (whether it is the MuJoCo world, the boat's parameters, the sail mode, the task's
         target area or None).
     """
-    from ..params import get_boat
+    from ..boat.catalogue import get_boat
     from ..physics import BoatPhysics
 
     physics = env.physics

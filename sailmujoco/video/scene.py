@@ -183,7 +183,7 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
     """
     import mujoco
 
-    from .. import mjcf
+    from ..boat import mjcf
 
     boat = mjcf.boat_spec(params, sail_mode, dofs=6)
     hull = boat.mesh("hull_mesh")

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import argparse
 
-from ..arguments import setting
+from ..cli.arguments import setting
 from ..forces.waves import N_COMPONENTS
 from ..names import check_known
 from ..options import WAVE_OPTIONS, wave_config
@@ -61,7 +61,7 @@ def waves_from_arguments(pairs, task: str, world: str, seed: int, settings: dict
     Parameters
     ----------
     pairs : list of (str, object)
-        The ``--waves`` pairs, as :func:`sailmujoco.arguments.setting` reads them.
+        The ``--waves`` pairs, as :func:`sailmujoco.cli.arguments.setting` reads them.
     task : str
         The run's task (its wind gives the default direction).
     world : str

@@ -15,8 +15,8 @@ import pandas as pd
 from sailmujoco.controllers.base import Composite
 
 from sailmujoco import frames
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.params import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 from ..kit import run_episode

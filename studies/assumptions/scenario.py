@@ -7,7 +7,7 @@ with and without residuary resistance (:mod:`studies.kit.wille`).
 
 from __future__ import annotations
 
-from sailmujoco.boats import SAOUD_CN_POLY
+from sailmujoco.boat.catalogue import SAOUD_CN_POLY
 from sailmujoco.study import Runs
 
 from ..kit.wille import TABLE1_DURATION, TABLE1_SMOKE_DURATION, TABLE1_WIND

@@ -11,7 +11,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 
 from ..kit import verdict
 from .analysis import Analysis, effect, numbers, roll_over_yaw, sailing, yacht_froude

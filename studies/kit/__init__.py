@@ -2,7 +2,7 @@
 
 A study declares a :class:`sailmujoco.study.Study` (its runs as data, its analysis, figures and
 report) and registers it under the ``sailmujoco.studies`` entry points; the study runner
-(:mod:`sailmujoco.study_runner`) executes its runs on the sweep engine and calls the rest.
+(:mod:`sailmujoco.cli.study`) executes its runs on the sweep engine and calls the rest.
 
 This package gives those parts their common pieces: :func:`run_episode` (one episode, for the
 job functions a study's runs name as ``"package.module:function"``), :class:`Report` (the

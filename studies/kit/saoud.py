@@ -10,8 +10,8 @@ from __future__ import annotations
 
 from sailmujoco.controllers import factories
 
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import log_profile
-from sailmujoco.params import get_boat
 
 BOAT = "saoud_robot"
 WORLDS = ("paper", "mujoco")

@@ -18,7 +18,7 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import suite, sweep
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 
 BOAT = "wille_yacht"
 
@@ -43,7 +43,7 @@ def scaled_sail(params, factor: float, time_constant: float | None = None):
 
     Parameters
     ----------
-    params : sailmujoco.params.BoatParams
+    params : sailmujoco.boat.params.BoatParams
         The boat.
     factor : float
         Multiplies the sail area.
@@ -52,7 +52,7 @@ def scaled_sail(params, factor: float, time_constant: float | None = None):
 
     Returns
     -------
-    sailmujoco.params.BoatParams
+    sailmujoco.boat.params.BoatParams
         ``params`` itself when nothing changes, else a copy.
     """
     sail = params.sail

@@ -13,7 +13,7 @@ import math
 
 import pandas as pd
 
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 
 from ..kit import Report, verdict
 from .analysis import Analysis, headline

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import pandas as pd
 
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.study import Runs
 
 NAME = "viel_fig3"

@@ -13,7 +13,7 @@ import math
 import numpy as np
 
 from sailmujoco import frames, sweep
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.tasks.base import SailEnvironment

@@ -9,7 +9,7 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.study import Results
 
 from ..kit.wille import BOAT

@@ -12,7 +12,7 @@ import pandas as pd
 from sailmujoco.controllers.wille import lift_slope
 from sailmujoco.controllers.wille_roll import build_sail_tables
 
-from sailmujoco.params import get_boat
+from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.study import Results
 
 from ..kit.wille import BOAT, MOMENT_TERMS, TABLE1_WINDOW, table1_numbers

@@ -1,0 +1,260 @@
+"""The types of a boat's parameters: frozen dataclasses in SI units (foil, sail, boat).
+
+Positions are in the body frame of :mod:`sailmujoco.frames` (origin CO on the waterline
+midship, x forward, y port, z up). Added-mass derivatives keep the SNAME sign (negative).
+The boats themselves, every number with its source, are in :mod:`sailmujoco.boat.catalogue`.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field, fields, replace
+
+import numpy as np
+
+from .. import constants as c
+from .hull import HullShape
+
+
+def _check_positive(obj, names):
+    for name in names:
+        value = getattr(obj, name)
+        if not isinstance(value, (int, float)) or not math.isfinite(value) or value <= 0.0:
+            raise ValueError(
+                f"{type(obj).__name__}.{name} must be a positive finite number, got {value!r}")
+
+
+@dataclass(frozen=True)
+class Foil:
+    """A keel or rudder: a symmetric NACA section of finite span.
+
+    ``x``, ``z`` locate the centre of pressure (CP) in the body frame at zero deflection; a
+    rudder turns about a vertical stock through its CP (a balanced rudder: no hinge moment).
+
+    Parameters
+    ----------
+    area : float
+        Planform area A, m^2.
+    aspect_ratio : float
+        Asp = span^2 / A, dimensionless.
+    thickness_ratio : float
+        t_max / c of the section, dimensionless.
+    x : float
+        CP forward of CO, m.
+    z : float
+        CP height above the waterline (negative: below), m.
+    mass : float
+        Mass of a moving foil (rudder blade), kg; 0 for a keel (part of the hull).
+    max_angle : float
+        Deflection saturation (rudder sigma_sat), rad.
+    time_constant : float
+        First-order actuator lag (rudder T_sigma), s.
+    """
+
+    area: float
+    aspect_ratio: float
+    thickness_ratio: float
+    x: float
+    z: float
+    mass: float = 0.0
+    max_angle: float = 0.0
+    time_constant: float = 0.0
+
+    def __post_init__(self):
+        _check_positive(self, ("area", "aspect_ratio", "thickness_ratio"))
+
+    @property
+    def span(self) -> float:
+        return math.sqrt(self.aspect_ratio * self.area)
+
+    @property
+    def chord(self) -> float:
+        return self.area / self.span
+
+
+@dataclass(frozen=True)
+class Sail:
+    """A flat triangular mainsail on a boom that turns about the mast (body z axis).
+
+    The centre of effort (CE) lies ``ce_aft`` behind the mast along the boom and ``ce_height``
+    above the waterline; luff and foot follow from area and aspect ratio (a triangle: CE at a
+    third of the luff above the boom). The last three fields shape the tangential-force model
+    of the flat sail (:func:`sailmujoco.forces.foil.sail_coefficients`).
+
+    Parameters
+    ----------
+    area : float
+        Sail area, m^2.
+    aspect_ratio : float
+        luff^2 / area, dimensionless.
+    mast_x : float
+        Mast position forward of CO, m.
+    ce_aft : float
+        CE behind the mast along the boom (Wille's l2), m.
+    ce_height : float
+        CE above the waterline (Wille's h1), m.
+    mass : float
+        Mass of the boom and sail (the part that turns), kg.
+    max_angle : float
+        Sail angle saturation lambda_sat, rad.
+    time_constant : float
+        T_lambda, first-order lag of the actuated sail / the sheet, s.
+    suction_efficiency : float
+        Share of the ideal leading-edge suction recovered, dimensionless.
+    suction_stall : float
+        Angle of attack past which the suction collapses, rad.
+    friction_coefficient : float
+        Skin friction coefficient per face (turbulent flat plate), dimensionless.
+    """
+
+    area: float
+    aspect_ratio: float
+    mast_x: float
+    ce_aft: float
+    ce_height: float
+    mass: float
+    max_angle: float
+    time_constant: float
+    suction_efficiency: float = 0.3
+    suction_stall: float = math.radians(15.0)
+    friction_coefficient: float = 0.005
+
+    def __post_init__(self):
+        _check_positive(self, ("area", "aspect_ratio", "ce_aft", "ce_height", "mass",
+                               "max_angle", "time_constant"))
+
+    @property
+    def luff(self) -> float:
+        return math.sqrt(self.aspect_ratio * self.area)
+
+    @property
+    def foot(self) -> float:
+        return 2.0 * self.area / self.luff
+
+    @property
+    def boom_height(self) -> float:
+        return self.ce_height - self.luff / 3.0
+
+    @property
+    def masthead_height(self) -> float:
+        return self.boom_height + self.luff
+
+
+@dataclass(frozen=True)
+class BoatParams:
+    """Everything the MJCF builder, the force models and the reduced models need.
+
+    Equation numbers are Wille (2016a)'s.
+
+    Parameters
+    ----------
+    name : str
+        The boat's name (the MJCF model's name and file name).
+    mass : float
+        Total mass (hull + rudder + boom/sail), kg.
+    inertia : tuple of float
+        (Ixx, Iyy, Izz) about the CG, body axes, kg m^2.
+    inertia_xz : float
+        SNAME I_xz, kg m^2 (MuJoCo's fullinertia ixz takes it unchanged in FLU).
+    cg_x : float
+        CG forward of CO, m.
+    cg_z : float
+        CG above the waterline, m.
+    hull : HullShape
+        The canoe body.
+    added_mass : tuple of float
+        SNAME derivatives (X_udot, Y_vdot, Z_wdot, K_pdot, M_qdot, N_rdot), <= 0; kg for the
+        translations, kg m^2 for the rotations.
+    gm_t : float
+        Transverse metacentric height (paper value the hull is designed to), m.
+    wetted_surface : float
+        Hull wetted surface S_H of eq. 15, m^2.
+    form_factor : float
+        Form factor k of eq. 15, dimensionless.
+    linear_damping : tuple of float
+        (d11, d22, d33, d55, d66) of eq. 13 (d33, d55 ours): surge, sway, heave (N s/m), pitch and
+    yaw (N m s/rad).
+    roll_friction : float
+        B_F0 of eq. 19, N m s/rad.
+    roll_lift : float
+        B_L of eq. 19, kg m / rad.
+    roll_frequency : float
+        omega_roll_n of eq. 19, rad/s.
+    crossflow_cd : float
+        2-D drag coefficient of the hull sections, eqs. 17-18, dimensionless.
+    keel, rudder : Foil
+        The appendages.
+    sail : Sail
+        The mainsail.
+    rho_water, rho_air : float
+        Densities, kg/m^3.
+    nu_water, nu_air : float
+        Kinematic viscosities, m^2/s.
+    paper_righting : {"sin_cos", "sin"}
+        The reduced models' righting moment: eq. 20 (Wille) or Saoud eq. 4.
+    sources : dict
+        Field -> where its number comes from (not compared).
+    """
+
+    name: str
+    mass: float
+    inertia: tuple[float, float, float]
+    inertia_xz: float
+    cg_x: float
+    cg_z: float
+    hull: HullShape
+    added_mass: tuple[float, float, float, float, float, float]
+    gm_t: float
+    wetted_surface: float
+    form_factor: float
+    linear_damping: tuple[float, float, float, float, float]
+    roll_friction: float
+    roll_lift: float
+    roll_frequency: float
+    crossflow_cd: float
+    keel: Foil
+    rudder: Foil
+    sail: Sail
+    rho_water: float = c.RHO_WATER
+    rho_air: float = c.RHO_AIR_WILLE
+    nu_water: float = c.NU_WATER
+    nu_air: float = c.NU_AIR
+    paper_righting: str = "sin_cos"
+    sources: dict = field(default_factory=dict, compare=False, hash=False)
+
+    def __post_init__(self):
+        _check_positive(self, ("mass", "gm_t", "wetted_surface", "roll_frequency"))
+        if any((not math.isfinite(v)) or v <= 0 for v in self.inertia):
+            raise ValueError(f"{self.name}: inertia must be positive, got {self.inertia}")
+        if any((not math.isfinite(v)) or v > 0 for v in self.added_mass):
+            raise ValueError(f"{self.name}: added-mass derivatives are SNAME (<= 0), "
+                             f"got {self.added_mass}")
+        if any((not math.isfinite(v)) or v < 0 for v in self.linear_damping):
+            raise ValueError(f"{self.name}: linear damping must be >= 0, got {self.linear_damping}")
+        if self.paper_righting not in ("sin_cos", "sin"):
+            raise ValueError(f"paper_righting must be 'sin_cos' or 'sin', got {self.paper_righting!r}")
+        if self.rudder.mass <= 0 or self.rudder.max_angle <= 0 or self.rudder.time_constant <= 0:
+            raise ValueError("rudder needs a positive mass, max_angle and time_constant")
+
+    @property
+    def displaced_volume(self) -> float:
+        """Design displacement, m^3 (weight = buoyancy)."""
+        return self.mass / self.rho_water
+
+    @property
+    def added_mass_diagonal(self) -> np.ndarray:
+        """Positive added masses (-X_udot, -Y_vdot, -Z_wdot, -K_pdot, -M_qdot, -N_rdot)."""
+        return -np.asarray(self.added_mass, dtype=float)
+
+    def with_(self, **changes) -> BoatParams:
+        """A copy with some fields changed (validated again).
+
+        Parameters
+        ----------
+        **changes
+            New values of :class:`BoatParams` fields by name; an unknown name raises a ValueError.
+        """
+        unknown = set(changes) - {f.name for f in fields(self)}
+        if unknown:
+            raise ValueError(f"unknown BoatParams field(s) {sorted(unknown)}")
+        return replace(self, **changes)
