@@ -31,11 +31,12 @@ import numpy as np
 from sailmujoco.boat.catalogue import BUILT_IN, get_boat
 from sailmujoco.boat.hull import column_quadrature
 from sailmujoco.forces import sea_hull, sea_kernels
+from sailmujoco.forces.boat_parameters import P_SEA_BLOCK, pack_parameters
 from sailmujoco.forces.hydrostatics import geometric_buoyancy
 from sailmujoco.forces.wave_pressure import froude_krylov
-from sailmujoco.forces.waves import WaveConfig, components
+from sailmujoco.forces.waves import components
 from sailmujoco.frames import matrix_from_euler
-from sailmujoco.options import ForceSwitches
+from sailmujoco.options import WaveConfig
 
 G = 9.81
 
@@ -45,9 +46,9 @@ def relative_errors(boat: str, sea: WaveConfig, states: int, heel_sd: float, see
     p = get_boat(boat)
     comp = components(sea)
     fine = column_quadrature(p.hull).array()
-    P = np.zeros(sea_kernels.P_SEA_BLOCK + 16)
-    sea_rows, grid = sea_kernels.sea_arrays(p.hull, sea, P, ForceSwitches())
-    b = sea_kernels.P_SEA_BLOCK
+    P = pack_parameters(p, waves=sea)  # the sea's block: the hull's grid steps and counts
+    sea_rows, grid = sea_kernels.sea_arrays(p.hull, sea)
+    b = P_SEA_BLOCK
     dx, dy, nx, ny = P[b + sea_kernels.SB_DX], P[b + sea_kernels.SB_DY], int(P[b + sea_kernels.SB_NX]), \
         int(P[b + sea_kernels.SB_NY])
     rows = sea_kernels.SEA_ROWS

@@ -23,7 +23,7 @@ import time
 import mujoco
 
 from sailmujoco.boat.catalogue import BUILT_IN
-from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
+from sailmujoco.options import N_COMPONENTS, WaveConfig
 from sailmujoco.physics import BoatPhysics
 
 BLOCK = 0.05  # s, the wall time of one block of calls

@@ -82,7 +82,7 @@ from typing import Literal
 
 import numpy as np
 
-from .forces.waves import WaveConfig
+from .constants import GRAVITY
 from .names import check_known
 
 World = Literal["mujoco", "paper"]
@@ -97,6 +97,174 @@ RestoringAxes = Literal["horizontal", "body"]  # paper restoring moments about l
 Resistance = Literal["friction", "dsyhs"]  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
 Foils = Literal["paper", "finite"]  # the papers' foil coefficients / finite-wing slope and stall
 WaveDamping = Literal["relative", "absolute"]  # in a sea: damping on motion relative to the water / own
+
+
+# ---- the sea state ----------------------------------------------------------------------
+Spectrum = Literal["regular", "pm", "jonswap"]
+SPECTRA = typing.get_args(Spectrum)
+SEA_KINDS = ("fully_developed", "fetch_limited")
+N_COMPONENTS = 16  # -, default number of components (the cost and the error: docs/physics.md)
+GAMMA_RANGE = (1.0, 7.0)  # -, JONSWAP gamma, DNV-RP-C205 §3.5.5
+MAX_WIND = 100.0  # m/s, U10 for a wind-raised sea, as WindConfig.speed
+U19_5_PER_U10 = 1.026  # -, Stewart (2008) eq. 16.29
+PM_HS = 0.21  # -, g Hs / U19.5^2 of a fully developed sea, Stewart (2008) eq. 16.33
+PM_PEAK = 0.877  # -, omega_p U19.5 / g of a fully developed sea, Stewart (2008) eq. 16.30
+FETCH_HS = 1.6e-3  # -, g Hs/U10^2 = 1.6e-3 chi^(1/2), Shore Protection Manual (1984) eq. 3-33
+FETCH_TP = 0.2857  # -, g Tp/U10 = 0.2857 chi^(1/3), Shore Protection Manual (1984) eq. 3-34
+
+
+def _finite(name: str, value, unit: str) -> None:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ValueError(f"WaveConfig.{name} must be a finite number{unit}, got {value!r}")
+
+
+@dataclass(frozen=True)
+class WaveConfig:
+    """A sea state: spectrum, height, period, direction, spreading and seed. SI, radians.
+
+    ``hs = 0`` is calm water.
+
+    Parameters
+    ----------
+    spectrum : {"regular", "pm", "jonswap"}
+        ``"regular"``: one Airy wave; ``"pm"``: Pierson-Moskowitz; ``"jonswap"``: JONSWAP.
+    hs : float
+        Significant wave height Hs = 4 sqrt(m0), m, >= 0; for ``"regular"`` the crest-to-trough
+        height H.
+    tp : float
+        Peak period, s, > 0; for ``"regular"`` the period T.
+    direction_from : float
+        Compass bearing the waves come from, rad (0: from the north, travelling south).
+    gamma : float
+        JONSWAP peak enhancement factor, in [1, 7] (read by ``"jonswap"`` only).
+    spreading : float or None
+        None: long-crested (every component travels the mean direction); s > 0: each
+        component's direction drawn from cos^(2s)((theta - theta_0)/2). Not for ``"regular"``.
+    n_components : int
+        Number of components of a spectral sea, >= 1.
+    seed : int
+        Seeds the frequencies, phases and directions, >= 0.
+    """
+
+    spectrum: Spectrum = "jonswap"
+    hs: float = 0.0
+    tp: float = 6.0
+    direction_from: float = 0.0
+    gamma: float = 3.3
+    spreading: float | None = None
+    n_components: int = N_COMPONENTS
+    seed: int = 0
+
+    def __post_init__(self):
+        check_known([self.spectrum], SPECTRA, "WaveConfig.spectrum", kind="spectrum")
+        _finite("hs", self.hs, " (m)")
+        if self.hs < 0.0:
+            raise ValueError(f"WaveConfig.hs must be >= 0 m, got {self.hs!r}")
+        _finite("tp", self.tp, " (s)")
+        if self.tp <= 0.0:
+            raise ValueError(f"WaveConfig.tp must be > 0 s, got {self.tp!r}")
+        _finite("direction_from", self.direction_from, " (rad)")
+        _finite("gamma", self.gamma, "")
+        if not GAMMA_RANGE[0] <= self.gamma <= GAMMA_RANGE[1]:
+            raise ValueError(f"WaveConfig.gamma must be in [1, 7], got {self.gamma!r}")
+        if self.spreading is not None:
+            _finite("spreading", self.spreading, " or None")
+            if self.spreading <= 0.0:
+                raise ValueError(f"WaveConfig.spreading must be > 0 or None, got {self.spreading!r}")
+            if self.spectrum == "regular":
+                raise ValueError("WaveConfig.spreading must be None for spectrum 'regular' "
+                                 f"(a regular wave is long-crested), got {self.spreading!r}")
+        for name in ("n_components", "seed"):
+            value = getattr(self, name)
+            low = 1 if name == "n_components" else 0
+            if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
+                raise ValueError(f"WaveConfig.{name} must be an integer >= {low}, got {value!r}")
+
+    @classmethod
+    def from_wind(cls, u10: float, kind: str = "fully_developed", fetch: float | None = None,
+                  direction_from: float = 0.0, *, spreading: float | None = None,
+                  n_components: int = N_COMPONENTS, seed: int = 0) -> WaveConfig:
+        """The sea a steady wind raises: fully developed (Pierson-Moskowitz) or fetch-limited.
+
+        ``"fully_developed"``: a ``"pm"`` sea with Hs = 0.21 U19.5^2/g, omega_p = 0.877 g/U19.5,
+        U19.5 = 1.026 U10 (Pierson & Moskowitz 1964; Stewart 2008 eqs. 16.29-16.33).
+        ``"fetch_limited"``: a ``"jonswap"`` sea (gamma 3.3) with Hs = 1.6e-3 chi^(1/2) U10^2/g,
+        Tp = 0.2857 chi^(1/3) U10/g, chi = g F/U10^2 (Hasselmann et al. 1973; Shore Protection
+        Manual 1984 eqs. 3-33, 3-34), each at most its fully developed value. See
+        :mod:`sailmujoco.forces.wave_spectra`. No wind (``u10 = 0``) is calm water.
+
+        Parameters
+        ----------
+        u10 : float
+            Mean wind speed at 10 m, m/s, in [0, 100] (``WindConfig.speed``).
+        kind : {"fully_developed", "fetch_limited"}
+            Which growth stage.
+        fetch : float or None
+            Fetch, m, > 0, for ``"fetch_limited"``; None for ``"fully_developed"``.
+        direction_from : float
+            Compass bearing the wind and the waves come from, rad.
+        spreading : float or None
+            As :class:`WaveConfig`.
+        n_components : int
+            As :class:`WaveConfig`.
+        seed : int
+            As :class:`WaveConfig`.
+        """
+        check_known([kind], SEA_KINDS, "WaveConfig.from_wind", kind="kind")
+        if isinstance(u10, bool) or not isinstance(u10, (int, float)) or \
+                not 0.0 <= u10 <= MAX_WIND:
+            raise ValueError(f"WaveConfig.from_wind: u10 must be in [0, {MAX_WIND:g}] m/s, got {u10!r}")
+        if kind == "fully_developed" and fetch is not None:
+            raise ValueError(f"WaveConfig.from_wind: fetch must be None for a fully developed sea, "
+                             f"got {fetch!r}")
+        if kind == "fetch_limited" and (isinstance(fetch, bool) or not isinstance(fetch, (int, float))
+                                        or not math.isfinite(fetch) or fetch <= 0.0):
+            raise ValueError(f"WaveConfig.from_wind: fetch must be > 0 m for a fetch-limited sea, "
+                             f"got {fetch!r}")
+        spectrum = "pm" if kind == "fully_developed" else "jonswap"
+        common = dict(spectrum=spectrum, direction_from=direction_from, spreading=spreading,
+                      n_components=n_components, seed=seed)
+        if u10 == 0.0:
+            return cls(hs=0.0, **common)
+        hs, tp = fully_developed_sea(u10) if kind == "fully_developed" else fetch_limited_sea(u10, fetch)
+        return cls(hs=hs, tp=tp, **common)
+
+
+def fully_developed_sea(u10: float) -> tuple[float, float]:
+    """(Hs m, Tp s) of a fully developed sea in a wind U10 (Pierson & Moskowitz 1964).
+
+    Hs = 0.21 U19.5^2/g, Tp = 2 pi U19.5/(0.877 g), U19.5 = 1.026 U10 (Stewart 2008
+    eqs. 16.29, 16.30, 16.33).
+
+    Parameters
+    ----------
+    u10 : float
+        Mean wind speed at 10 m, m/s, > 0.
+    """
+    u = U19_5_PER_U10 * u10
+    return PM_HS * u**2 / GRAVITY, 2.0 * math.pi * u / (PM_PEAK * GRAVITY)
+
+
+def fetch_limited_sea(u10: float, fetch: float) -> tuple[float, float]:
+    """(Hs m, Tp s) of a fetch-limited sea (JONSWAP growth laws), capped at full development.
+
+    chi = g F/U10^2, Hs = 1.6e-3 chi^(1/2) U10^2/g, Tp = 0.2857 chi^(1/3) U10/g (Hasselmann
+    et al. 1973, as the Shore Protection Manual 1984 eqs. 3-33 and 3-34 write them), each
+    at most its value from :func:`fully_developed_sea`.
+
+    Parameters
+    ----------
+    u10 : float
+        Mean wind speed at 10 m, m/s, > 0.
+    fetch : float
+        Fetch, the distance the wind has blown over open water, m, > 0.
+    """
+    g = GRAVITY
+    chi = g * fetch / u10**2
+    hs_full, tp_full = fully_developed_sea(u10)
+    hs = FETCH_HS * math.sqrt(chi) * u10**2 / g
+    tp = FETCH_TP * chi ** (1.0 / 3.0) * u10 / g
+    return min(hs, hs_full), min(tp, tp_full)
 
 
 def choices(literal) -> tuple:
@@ -310,3 +478,19 @@ def wave_config(value, where: str = "waves") -> WaveConfig | None:
             raise ValueError(f"waves.direction_from_deg must be a finite number (deg), got {deg!r}")
         value["direction_from"] = math.radians(deg)
     return WaveConfig(**value)
+
+
+def check_sea(waves, dofs: int) -> None:
+    """One line unless ``waves`` is None or a WaveConfig the boat can feel (``hs > 0``: 6 DOF).
+
+    Parameters
+    ----------
+    waves : object
+        The ``waves`` given.
+    dofs : int
+        The boat's degrees of freedom (6, or 4 with heave and pitch held).
+    """
+    if waves is not None and not isinstance(waves, WaveConfig):
+        raise ValueError(f"waves must be a WaveConfig or None, got {waves!r}")
+    if waves is not None and waves.hs > 0.0 and dofs != 6:
+        raise ValueError("waves need the 6-DOF boat (dofs=6): dofs=4 holds heave and pitch")

@@ -41,13 +41,15 @@ from .boat.mjcf import compile_model
 from .boat.params import BoatParams
 from .errors import SimulationStopped
 from .forces import boat as kernels
-from .forces.foil import naca0015
-from .forces.sea_kernels import WaveConfig, check_sea, ramp_duration, sea_arrays
+from .forces.boat_parameters import pack_parameters
+from .forces.foil_sections import naca0015
+from .forces.kernel_arguments import kernel_call
+from .forces.sea_kernels import sea_arrays
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .gl_platform import import_dm_control_mujoco
 from .measurement.accessors import BoatAccessors
-from .options import ForceSwitches  # re-exported: physics.ForceSwitches
-from .step import native
+from .options import ForceSwitches, WaveConfig, check_sea  # re-exported: physics.ForceSwitches
+from .step import native, registry
 from .step.four_dof import FourDofStage, csr_address
 from .step.jit import entry_point
 
@@ -164,15 +166,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         self.switches = forces
         self.wind_config = wind
         self.wind = WindField(wind)
-        self._P = kernels.pack_parameters(
-            params, hydrostatics=forces.hydrostatics, sail=forces.sail, keel=forces.keel,
-            rudder=forces.rudder, damping=forces.damping, added_mass=forces.added_mass,
-            sail_tangential=forces.sail_tangential, wind=wind, wander_dt=WANDER_DT,
-            added_mass_coupling=forces.added_mass_coupling,
-            vertical_damping=forces.vertical_damping, restoring_axes=forces.restoring_axes,
-            resistance=forces.resistance, foils=forces.foils, keel_downwash=forces.keel_downwash,
-            windage=forces.windage, sea_ramp=ramp_duration(waves))
-        self._sea, self._grid = sea_arrays(params.hull, waves, self._P, forces)
+        self._P = pack_parameters(params, forces, wind=wind, wander_dt=WANDER_DT, waves=waves)
+        self._sea, self._grid = sea_arrays(params.hull, waves)
         self._columns = column_quadrature(params.hull).array()
         self._strips = np.ascontiguousarray(np.vstack(strip_quadrature(params.hull)))
         table = naca0015()
@@ -217,13 +212,16 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             qpos, qvel, qfrc = d.qpos, d.qvel, d.qfrc_applied
         else:
             qpos, qvel, qfrc = self._q7, self._v6, self._qfrc8
-        self._args = (qpos, qvel, self._kidx, self._P, self._columns, self._strips,
-                      *self._table, w.oscillation, w.gust_frequency, w.gust_phase, w.gust_amplitude,
-                      w.log_z,
-                      w.wander, w.gust_cos, self._external, self._terms, self._diag, qfrc,
-                      self._madd, d.M, self._csr_addr, self._work, self._sea, self._grid)
+        alpha_grid, log_re_grid, cl_table, cd_table = self._table
+        self._args = kernel_call(dict(  # the force kernel's arrays by name (forces/kernel_arguments.py)
+            qpos=qpos, qvel=qvel, idx=self._kidx, P=self._P, columns=self._columns, strips=self._strips,
+            alpha_grid=alpha_grid, log_re_grid=log_re_grid, cl_table=cl_table, cd_table=cd_table,
+            oscillation=w.oscillation, gust_f=w.gust_frequency, gust_phase=w.gust_phase,
+            gust_amp=w.gust_amplitude, log_z=w.log_z, wander=w.wander, gust_cos=w.gust_cos,
+            external=self._external, terms=self._terms, diag=self._diag, qfrc=qfrc, madd=self._madd,
+            mass_csr=d.M, csr_addr=self._csr_addr, work=self._work, sea=self._sea, grid=self._grid))
         if self.dofs == 6:
-            self._row = native.registry_row(self._args, d.act, self._warnings)
+            self._row = registry.registry_row(self._args, d.act, self._warnings)
         else:
             self._row = self._four_dof_row(d)
 
@@ -380,7 +378,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         if rk4:
             with native.Stepping(d._address, self._row) as slots:
                 status, _, warned = _RK4_STEPS(m._address, d._address, nstep,
-                                               native.REGISTRY[slots[0]], self._saved)
+                                               registry.REGISTRY[slots[0]], self._saved)
         else:  # no callback: mj_step1 would call it, and forces come after mj_step1 here
             status, _, warned = _SPLIT_STEPS(m._address, d._address, nstep, self._row)
         if status != kernels.STATUS_OK:  # before the warnings, as inside check_invalid_state
@@ -399,7 +397,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         Returns
         -------
         numpy.ndarray
-            The boat's registry row (:func:`sailmujoco.step.native.registry_row`).
+            The boat's registry row (:func:`sailmujoco.step.registry.registry_row`).
         """
         self._prepare(nstep * self.model.ptr.opt.timestep)
         np.copyto(self._warnings_before, self._warnings)

@@ -12,7 +12,7 @@ import pytest
 
 from sailmujoco import options, suite, sweep
 from sailmujoco.boat import mjcf
-from sailmujoco.forces import boat as kernels
+from sailmujoco.forces import boat_parameters as kernels
 from sailmujoco.options import ForceSwitches, PhysicsOptions
 
 # suite.load's physics defaults: the boat as built in the MuJoCo world
@@ -30,7 +30,8 @@ def test_each_choice_set_is_one_literal():
     assert options.choices(options.World) == ("mujoco", "paper")
     assert options.choices(options.Dofs) == (6, 4)
     literals = [v for v in vars(options).values() if typing.get_origin(v) is typing.Literal]
-    assert len(literals) == 11
+    assert len(literals) == 12  # with the sea's spectra (WaveConfig.spectrum)
+    assert options.SPECTRA == options.choices(options.Spectrum)
     assert options.literal_fields(PhysicsOptions) == {
         "hydrostatics": options.choices(options.Hydrostatics),
         "added_mass_coupling": options.choices(options.AddedMassCoupling),

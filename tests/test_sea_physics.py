@@ -30,9 +30,8 @@ import pytest
 from sailmujoco import suite, sweep
 from sailmujoco.boat import hull
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.forces.waves import WaveConfig
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.options import PhysicsOptions
+from sailmujoco.options import PhysicsOptions, WaveConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 BOATS = ("wille_yacht", "saoud_robot", "viel_boat")

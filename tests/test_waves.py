@@ -15,18 +15,17 @@ from scipy.signal import welch
 
 from sailmujoco.constants import GRAVITY as G
 from sailmujoco.constants import RHO_WATER
+from sailmujoco.forces.wave_spectra import spectrum_density
 from sailmujoco.forces.waves import (
-    N_COMPONENTS,
-    WaveConfig,
     components,
     dynamic_pressure,
     elevation,
     orbital_velocity,
     ramp,
-    spectrum_density,
 )
 from sailmujoco.forces.wind import WindConfig, WindField
 from sailmujoco.frames import wind_velocity
+from sailmujoco.options import N_COMPONENTS, WaveConfig
 
 H, T = 1.0, 6.0  # m, s: the regular wave
 FROM = math.radians(240.0)  # it comes from WSW, so it travels toward bearing 60 deg

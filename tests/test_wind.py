@@ -92,7 +92,8 @@ def test_wind_at_three_heights_is_each_height_alone():
     """The kernel's one evaluation for the sail, topsides and mast gives, for each
     height, the bits of the one-height evaluation, and both agree with eqs. 39-41 written out
     here with numpy (mean log profile + sum of cosines with amplitudes linear in ln z)."""
-    from sailmujoco.forces.wind import WANDER_DT, wind_velocities, wind_velocity
+    from sailmujoco.forces.wind import WANDER_DT, wind_velocity
+    from sailmujoco.forces.wind_kernels import wind_velocities
 
     config = WindConfig(speed=7.0, direction_from=0.6, seed=3, speed_oscillation=1.5,
                         direction_oscillation=0.2, oscillation_frequency=0.05)

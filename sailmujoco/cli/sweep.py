@@ -26,7 +26,7 @@ metrics = ["mean_surge", "heading_error_rms"]  # default: every metric of the ta
 [options]                     # the same for every run; keys are "<namespace>.<name>"
 "env.hydrostatics" = "geometric"   # env.: suite.load's physics options, control_timestep
 "task.wind_speed" = 5.0            # task.: the task's options (m/s)
-# "waves.hs" = 1.0                 # waves.: a sea state (sailmujoco.forces.waves.WaveConfig:
+# "waves.hs" = 1.0                 # waves.: a sea state (sailmujoco.options.WaveConfig:
                                    # hs, tp, spectrum, direction_from_deg, ...); slower than calm
 
 [grid]                        # every combination of these lists

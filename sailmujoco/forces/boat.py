@@ -3,8 +3,9 @@
 :func:`boat_forces` is a pure function of (time, generalised position and velocity, packed
 parameters, wind arrays). It calls the force models of this package and returns each term's
 wrench, the hinge moments and the generalised forces MuJoCo needs. The packing of
-:class:`~sailmujoco.boat.params.BoatParams` into the flat array ``P`` is defined in
-:mod:`sailmujoco.forces.boat_parameters`; its names are importable from here too.
+:class:`~sailmujoco.boat.params.BoatParams` and the force switches into the flat array ``P`` is
+defined in :mod:`sailmujoco.forces.boat_parameters`; the kernel's arguments are declared, in
+order, in :mod:`sailmujoco.forces.kernel_arguments`.
 
 Term order (rows of ``terms``), each a body-frame wrench about CO:
 ``TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external",
@@ -17,11 +18,7 @@ import math
 
 from ..step.jit import kernel
 from .added_mass import added_mass_velocity_terms
-from .boat_parameters import (  # noqa: F401 - the layout of P, importable from here too
-    ADDED_MASS_COUPLINGS,
-    FOIL_BLOCK_SIZE,
-    FOIL_FORMS,
-    HYDROSTATIC_MODES,
+from .boat_parameters import (
     P_A1,
     P_A2,
     P_A3,
@@ -32,7 +29,6 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_BL,
     P_BODY_DAMPING,
     P_BODY_RESTORING,
-    P_BOOM_Z,
     P_CE_AFT,
     P_CE_HEIGHT,
     P_CF_SAIL,
@@ -42,9 +38,6 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_CURRENT_E,
     P_CURRENT_N,
     P_D11,
-    P_D22,
-    P_D33,
-    P_D55,
     P_D66,
     P_FINITE_FOILS,
     P_FLOTATION_X,
@@ -88,7 +81,6 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_SAIL_AREA,
     P_SEA_BLOCK,
     P_SEA_RAMP,
-    P_SIZE,
     P_STALL,
     P_SUCTION,
     P_TANGENTIAL,
@@ -98,14 +90,9 @@ from .boat_parameters import (  # noqa: F401 - the layout of P, importable from 
     P_WIND_SPEED,
     P_WINDAGE_BLOCK,
     RESISTANCE_BLOCK_SIZE,
-    RESISTANCE_FORMS,
-    RESTORING_AXES,
-    VERTICAL_DAMPING_FORMS,
-    WINDAGE_BLOCK_SIZE,
-    pack_parameters,
 )
 from .damping import hull_damping
-from .foil import (
+from .finite_wing import (
     FB_DOWNWASH_GAIN,
     FB_KEEL_AR,
     FB_KEEL_CD_MAX,
@@ -116,11 +103,12 @@ from .foil import (
     FB_RUDDER_RATIO,
     FB_SAIL_CD_MAX,
     FB_SAIL_SLOPE,
-    sail_force,
 )
 from .hull_foils import hull_foil_force, point_flow
 from .hydrostatics import geometric_buoyancy, paper_restoring
+from .kernel_arguments import with_parameters
 from .resistance import residuary_surge_force
+from .sail import sail_force
 from .sea_hull import SMALL_SIZE as SEA_SMALL_SIZE
 from .sea_hull import hull_sea_wrench
 from .sea_kernels import (
@@ -137,7 +125,7 @@ from .sea_kernels import (
     foil_water_velocity,
     sea_stage,
 )
-from .wind import wind_velocities
+from .wind_kernels import wind_velocities
 from .windage import (
     W_AREA_FRONT,
     W_AREA_SIDE,
@@ -201,64 +189,18 @@ def _accumulate(terms, row, force, point):
 
 
 @kernel
+@with_parameters
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, gust_cos,
                 external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, grid, add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
-    Parameters
-    ----------
-    t : float
-        Time, s.
-    qpos, qvel : numpy.ndarray, shapes (nq,) and (nv,)
-        MuJoCo's generalised position and velocity: the free joint (CO's world ENU position in
-        m, quaternion body FLU -> world; world velocity of CO in m/s, body angular velocity in
-        rad/s), then the rudder and sail hinges (rad, rad/s).
-    idx : numpy.ndarray, shape (4,)
-        (qpos index of the rudder hinge, its dof, qpos index of the sail hinge, its dof).
-    P : numpy.ndarray, shape (P_SIZE,)
-        The boat's parameters as packed by :func:`pack_parameters`, laid out by the P_* indices.
-    columns : numpy.ndarray, shape (5, n)
-        The hull's columns (:func:`~sailmujoco.forces.hydrostatics.submerged_volume`).
-    strips : numpy.ndarray, shape (3, n)
-        The cross-flow strips: body x (m), weights (m), drafts (m)
-        (:func:`~sailmujoco.forces.damping.crossflow_drag`).
-    alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The section table (:func:`sailmujoco.forces.foil.section_coefficients`).
-    oscillation : numpy.ndarray, shape (3,)
-        The wind's modulation: speed (m/s), direction (rad), frequency (Hz).
-    gust_f, gust_phase, gust_amp, log_z, wander, gust_cos : numpy.ndarray
-        The wind field's tables (:class:`~sailmujoco.forces.wind.WindField`'s
-        ``gust_frequency``, ``gust_phase``, ``gust_amplitude``, ``log_z``, ``wander`` and
-        ``gust_cos``), as for :func:`~sailmujoco.forces.wind_kernels.wind_velocities`.
-    external : numpy.ndarray, shape (6,)
-        An external wrench, body frame about CO, N and N m.
-    terms : numpy.ndarray, shape (len(TERMS), 6)
-        Receives each term's body-frame wrench about CO, N and N m.
-    diag : numpy.ndarray, shape (D_SIZE,)
-        Receives the diagnostics, laid out by the D_* indices.
-    qfrc : numpy.ndarray, shape (nv,)
-        Receives the generalised forces: world force on CO (N), body torque (N m), hinge
-        moments (N m).
-    madd : numpy.ndarray, shape (3, 3)
-        Receives the world-frame translational added-mass block R diag(a1, a2, a3) R^T, kg.
-    mass_csr : numpy.ndarray
-        MuJoCo's sparse mass matrix (``qM``); with ``add_mass`` the hull's added mass is added.
-    csr_addr : numpy.ndarray, shape (9,)
-        Addresses in ``mass_csr`` of the six lower-triangle entries of the translational block
-        ((0,0), (1,0), (1,1), (2,0), (2,1), (2,2)), then the three rotational diagonal entries.
-    work : numpy.ndarray, shape (WORK_SIZE,)
-        Scratch space, so the kernel allocates nothing.
-    sea : numpy.ndarray, shape (rows, m)
-        The sea (:func:`sailmujoco.forces.sea_kernels.sea_array`); with m > 0 components the
-        geometric hydrostatics gain the sea's part (:mod:`sailmujoco.forces.sea_hull`: the
-        Froude-Krylov and diffraction forces, the water's heave and pitch rates for the
-        damping) and the keel and rudder feel the orbital velocity averaged over their spans;
-        m = 0: calm water.
-    grid : numpy.ndarray, shape (6, n)
-        The hull's coarse grid for the sea (:func:`sailmujoco.forces.sea_kernels.grid_array`).
-    add_mass : bool
-        Whether to add the added mass to ``mass_csr``.
+    The arguments are declared, in order, in :mod:`sailmujoco.forces.kernel_arguments`, which
+    writes the "Parameters" section below. With a sea (``sea`` of m > 0 components) the
+    geometric hydrostatics gain the sea's part (:mod:`sailmujoco.forces.sea_hull`: the
+    Froude-Krylov and diffraction forces, the water's heave and pitch rates for the damping)
+    and the keel and rudder feel the orbital velocity averaged over their spans; m = 0: calm
+    water.
 
     Returns
     -------
@@ -323,7 +265,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     # ---- rudder: turns by sigma about -z through its CP (Wille eqs. 34-36) ----
     if P[P_ON_RUDDER] > 0.0:
         # the keel's downwash at the rudder, from the keel's C_L of this same call:
-        # epsilon = k C_L,keel / (pi A_e,keel) (forces/foil.py, downwash_factor); 0 when off
+        # epsilon = k C_L,keel / (pi A_e,keel) (forces/finite_wing.py, downwash_factor); 0 when off
         downwash = P[fb + FB_DOWNWASH_GAIN] * keel_lift if P[P_KEEL_DOWNWASH] > 0.0 else 0.0
         if waves and P[sb + SB_FOIL_FLOW] > 0.0:
             foil_water_velocity(qpos[0:3], R, P[P_RUD_X], P[P_RUD_Z],
@@ -368,7 +310,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             wind_b[i] = R[0, i] * wind_w[0] + R[1, i] * wind_w[1] + R[2, i] * wind_w[2]
         point_flow(wind_b, v, w, point, extra, flow)
         diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
-        # Saoud's C_N (slope 0 selects it) or the finite wing's (forces/foil.py)
+        # Saoud's C_N (slope 0 selects it) or the finite wing's (forces/finite_wing.py)
         slope = P[fb + FB_SAIL_SLOPE] if finite else 0.0
         speed, alpha, c_n, c_t = sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
                                             P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA], slope,

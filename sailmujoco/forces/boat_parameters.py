@@ -1,22 +1,44 @@
 """The boat's parameters packed into the flat array the force kernel reads.
 
-:func:`pack_parameters` flattens a :class:`~sailmujoco.boat.params.BoatParams` and the force
-switches into ``P``, laid out by the ``P_*`` indices below; blocks of ``P`` are owned by one
-force module each, which defines the offsets inside its block. numba dispatches a flat array
+:func:`pack_parameters` flattens a :class:`~sailmujoco.boat.params.BoatParams`, the force
+switches (every field of :class:`~sailmujoco.options.ForceSwitches`, at the slots of
+:data:`SWITCH_SLOTS`), the wind's mean and the sea's ramp and grid into ``P``, laid out by the
+``P_*`` indices below; blocks of ``P`` are owned by one force module each, which defines the
+offsets inside its block. numba dispatches a flat array
 in well under a microsecond; a record of 60 fields takes many.
 """
 
 from __future__ import annotations
+
+from dataclasses import fields
 
 import numpy as np
 
 from ..boat import hull as hull_geometry
 from ..boat.params import BoatParams
 from ..constants import GRAVITY
-from ..options import AddedMassCoupling, Foils, Hydrostatics, Resistance, RestoringAxes, VerticalDamping
+from ..options import (
+    AddedMassCoupling,
+    Foils,
+    ForceSwitches,
+    Hydrostatics,
+    Resistance,
+    RestoringAxes,
+    VerticalDamping,
+    WaveConfig,
+)
 from ..options import choices as literal_choices
 from .finite_wing import pack_foil_block
 from .resistance import delft_hull, pack_resistance
+from .sea_kernels import (
+    SB_DIFFRACTION,
+    SB_FOIL_FLOW,
+    SB_HULL,
+    SB_PRESSURE_DECAY,
+    SB_RAMP,
+    SB_RELATIVE_DAMPING,
+    pack_sea_block,
+)
 from .windage import pack_windage
 
 HYDROSTATIC_MODES = literal_choices(Hydrostatics)  # the index is the kernel's code for the mode
@@ -47,46 +69,89 @@ P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
 P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/finite_wing.py (finite-wing forms)
 P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
 P_SEA_BLOCK, SEA_BLOCK_SIZE = 165, 10  # forces/sea_kernels.py (ramp, switches, the hull's grid)
-P_SEA_RAMP = P_SEA_BLOCK  # s, the waves' start-up ramp T_r; 0 in calm water
-P_SIZE = 175
+P_SEA_RAMP = P_SEA_BLOCK + SB_RAMP  # s, the waves' start-up ramp T_r; 0 in calm water
+P_NEW_SWITCHES = 175  # then one slot for each switch that has no slot of its own below
 
 
-def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: bool = True,
-                    keel: bool = True, rudder: bool = True, damping: bool = True,
-                    added_mass: bool = True, sail_tangential: bool = True, wind=None,
-                    wander_dt: float = 0.1, added_mass_coupling: str = "manoeuvring",
-                    vertical_damping: str = "world", restoring_axes: str = "horizontal",
-                    resistance: str = "dsyhs", foils: str = "finite", keel_downwash: bool = True,
-                    windage: bool = True, sea_ramp: float = 0.0) -> np.ndarray:
+# The force switches' slots, one per field of ForceSwitches: (slot, the value packed as 1.0);
+# any other value packs 0.0, and hydrostatics (None) packs its index in HYDROSTATIC_MODES.
+SWITCH_SLOTS = {
+    "hydrostatics": (P_HYDRO_MODE, None),
+    "sail": (P_ON_SAIL, True),
+    "keel": (P_ON_KEEL, True),
+    "rudder": (P_ON_RUDDER, True),
+    "damping": (P_ON_DAMPING, True),
+    "added_mass": (P_ON_ADDED, True),
+    "sail_tangential": (P_TANGENTIAL, True),
+    "added_mass_coupling": (P_FULL_KIRCHHOFF, "kirchhoff"),
+    "vertical_damping": (P_BODY_DAMPING, "body"),
+    "restoring_axes": (P_BODY_RESTORING, "body"),
+    "resistance": (P_RESISTANCE_DSYHS, "dsyhs"),
+    "foils": (P_FINITE_FOILS, "finite"),
+    "keel_downwash": (P_KEEL_DOWNWASH, True),
+    "windage": (P_ON_WINDAGE, True),
+    "wave_hull": (P_SEA_BLOCK + SB_HULL, True),
+    "wave_foil_flow": (P_SEA_BLOCK + SB_FOIL_FLOW, True),
+    "wave_diffraction": (P_SEA_BLOCK + SB_DIFFRACTION, True),
+    "wave_damping": (P_SEA_BLOCK + SB_RELATIVE_DAMPING, "relative"),
+    "wave_pressure_decay": (P_SEA_BLOCK + SB_PRESSURE_DECAY, True),
+}
+# A force added to ForceSwitches as an on/off field gets its slot here, after the blocks, in the
+# order of the fields; the force reads it as P[switch_slot(name)] (docs/architecture.md, "Add a
+# force"), so a new force needs no edit of this file.
+_NEW_SWITCHES = [f.name for f in fields(ForceSwitches) if f.name not in SWITCH_SLOTS]
+SWITCH_SLOTS.update({name: (P_NEW_SWITCHES + k, True) for k, name in enumerate(_NEW_SWITCHES)})
+P_SIZE = P_NEW_SWITCHES + len(_NEW_SWITCHES)
+
+
+def switch_slot(name: str) -> int:
+    """The slot of ``P`` that holds the force switch ``name`` (a field of ForceSwitches).
+
+    Parameters
+    ----------
+    name : str
+        The switch's field name.
+
+    Returns
+    -------
+    int
+    """
+    return SWITCH_SLOTS[name][0]
+
+
+def pack_switches(switches: ForceSwitches, P: np.ndarray) -> None:
+    """Write every force switch into its slot of ``P`` (:data:`SWITCH_SLOTS`).
+
+    Parameters
+    ----------
+    switches : ForceSwitches
+        The physics' force switches (checked when they were made).
+    P : numpy.ndarray, shape (P_SIZE,)
+        The packed parameters, written in place.
+    """
+    for name, (slot, on) in SWITCH_SLOTS.items():
+        value = getattr(switches, name)
+        P[slot] = HYDROSTATIC_MODES.index(value) if on is None else float(value == on)
+
+
+def pack_parameters(p: BoatParams, switches: ForceSwitches | None = None, *, wind=None,
+                    wander_dt: float = 0.1, waves: WaveConfig | None = None) -> np.ndarray:
     """Flatten boat parameters and force switches into ``P`` (P_SIZE,), laid out by the P_* indices.
 
     Parameters
     ----------
     p : BoatParams
         The boat (SI units; positions in the body frame FLU about CO).
-    hydrostatics, added_mass_coupling, vertical_damping, restoring_axes, resistance, foils : str
-        The modelling forms, one of ``HYDROSTATIC_MODES``, ``ADDED_MASS_COUPLINGS``,
-        ``VERTICAL_DAMPING_FORMS``, ``RESTORING_AXES``, ``RESISTANCE_FORMS``, ``FOIL_FORMS``.
-    sail, keel, rudder, damping, added_mass, keel_downwash, windage : bool
-        Whether each force term is on (``keel_downwash``: the keel's downwash at the rudder;
-        ``windage``: the topsides' and mast's).
-    sail_tangential : bool
-        Whether the sail has a tangential coefficient (False: C_T = 0).
+    switches : ForceSwitches, optional
+        Which force models act and in which form (default ``ForceSwitches()``); every field
+        is packed (:func:`pack_switches`).
     wind : WindConfig or None
         Mean speed (m/s), bearing it comes from (rad), current (m/s east, north); None: all 0.
     wander_dt : float
         Time step of the wind's wander series, s.
-    sea_ramp : float
-        The waves' start-up ramp T_r, s (0 in calm water).
+    waves : WaveConfig or None
+        The sea: its ramp T_r (0 in calm water) and the hull's grid go into the sea's block.
     """
-    for name, value, choices in (("hydrostatics", hydrostatics, HYDROSTATIC_MODES),
-                                 ("added_mass_coupling", added_mass_coupling, ADDED_MASS_COUPLINGS),
-                                 ("vertical_damping", vertical_damping, VERTICAL_DAMPING_FORMS),
-                                 ("restoring_axes", restoring_axes, RESTORING_AXES),
-                                 ("resistance", resistance, RESISTANCE_FORMS),
-                                 ("foils", foils, FOIL_FORMS)):
-        if value not in choices:
-            raise ValueError(f"unknown {name} {value!r}; choose one of {choices}")
     h = p.hull
     volume = p.displaced_volume
     P = np.zeros(P_SIZE)
@@ -109,25 +174,16 @@ def pack_parameters(p: BoatParams, *, hydrostatics: str = "geometric", sail: boo
     P[P_CE_AFT], P[P_CE_HEIGHT] = s.ce_aft, s.ce_height
     P[P_SUCTION], P[P_STALL], P[P_CF_SAIL] = (s.suction_efficiency, s.suction_stall,
                                               s.friction_coefficient)
-    P[P_ON_SAIL], P[P_ON_KEEL], P[P_ON_RUDDER] = float(sail), float(keel), float(rudder)
-    P[P_HYDRO_MODE] = HYDROSTATIC_MODES.index(hydrostatics)
-    P[P_ON_DAMPING], P[P_ON_ADDED], P[P_TANGENTIAL] = (float(damping), float(added_mass),
-                                                       float(sail_tangential))
+    pack_switches(ForceSwitches() if switches is None else switches, P)
     if wind is not None:
         P[P_WIND_SPEED], P[P_WIND_FROM] = wind.speed, wind.direction_from
         P[P_CURRENT_E], P[P_CURRENT_N] = wind.current_east, wind.current_north
     P[P_WANDER_DT] = wander_dt
     P[P_FLOTATION_X] = hull_geometry.centre_of_flotation_x(h)
-    P[P_FULL_KIRCHHOFF] = float(added_mass_coupling == "kirchhoff")
-    P[P_BODY_DAMPING] = float(vertical_damping == "body")
-    P[P_BODY_RESTORING] = float(restoring_axes == "body")
-    P[P_RESISTANCE_DSYHS] = float(resistance == "dsyhs")
     block = pack_resistance(delft_hull(h), p.rho_water, GRAVITY)
     P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + block.size] = block
-    P[P_FINITE_FOILS] = float(foils == "finite")
     block = pack_foil_block(p)
     P[P_FOIL_BLOCK:P_FOIL_BLOCK + block.size] = block
-    P[P_KEEL_DOWNWASH], P[P_ON_WINDAGE] = float(keel_downwash), float(windage)
     pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
-    P[P_SEA_RAMP] = sea_ramp  # forces/sea_kernels.py, ramp_duration
+    pack_sea_block(h, waves, P[P_SEA_BLOCK:P_SEA_BLOCK + SEA_BLOCK_SIZE])
     return P

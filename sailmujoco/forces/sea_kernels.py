@@ -25,38 +25,20 @@ import math
 import numpy as np
 
 from ..boat.hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
+from ..options import WaveConfig
 from ..step.jit import kernel
-from .boat_parameters import P_SEA_BLOCK
 from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
-from .waves import RAMP_PERIODS, WaveConfig, components
+from .waves import RAMP_PERIODS, components
 
 SEA_ROWS = 13  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kappa_x, kappa_y, kappa_z;
 #                a foil's phasor (cos, sin)
 _M1, _M2, _M3, _M4, _M5, _M6, _M7 = (1.0 / math.factorial(n + 1) for n in range(1, 8))  # 1/(n+1)!
-# The sea's mechanisms (physics options, sailmujoco.options.ForceSwitches), each packed as 1.0 (on)
-# or 0.0 in this order after the ramp in the sea's block of P (forces/boat_parameters.py,
-# P_SEA_BLOCK); wave_damping packs 1.0 for "relative". wave_hull and wave_foil_flow split the
-# sea's paths into the boat (the hull's, the foils'); the other three refine the hull's:
-SEA_SWITCHES = ("wave_hull", "wave_foil_flow", "wave_diffraction", "wave_damping", "wave_pressure_decay")
+# The sea's block of P (forces/boat_parameters.py, P_SEA_BLOCK): the ramp T_r, the five switches
+# of the sea's mechanisms (packed with the other force switches by pack_parameters), then the
+# hull's grid (sailmujoco/boat/hull_grid.py): its steps and counts (pack_sea_block).
 SB_RAMP, SB_HULL, SB_FOIL_FLOW, SB_DIFFRACTION, SB_RELATIVE_DAMPING, SB_PRESSURE_DECAY = range(6)
-SB_DX, SB_DY, SB_NX, SB_NY = range(6, 10)  # the hull's grid (sailmujoco/boat/hull_grid.py): steps, counts
-
-
-def check_sea(config, dofs: int) -> None:
-    """One line unless ``config`` is None or a WaveConfig the boat can feel (``hs > 0``: 6 DOF).
-
-    Parameters
-    ----------
-    config : object
-        The ``waves`` given.
-    dofs : int
-        The boat's degrees of freedom (6, or 4 with heave and pitch held).
-    """
-    if config is not None and not isinstance(config, WaveConfig):
-        raise ValueError(f"waves must be a WaveConfig or None, got {config!r}")
-    if config is not None and config.hs > 0.0 and dofs != 6:
-        raise ValueError("waves need the 6-DOF boat (dofs=6): dofs=4 holds heave and pitch")
+SB_DX, SB_DY, SB_NX, SB_NY = range(6, 10)
 
 
 def sea_array(config: WaveConfig | None, depths=()) -> np.ndarray:
@@ -86,10 +68,9 @@ def sea_array(config: WaveConfig | None, depths=()) -> np.ndarray:
     return np.ascontiguousarray(sea)
 
 
-def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> np.ndarray:
+def grid_array(grid: HullGrid, shares: np.ndarray) -> np.ndarray:
     """The kernel's ``grid`` array (6, 2 nx ny): the grid's columns (rows x, y, area, z_bottom,
-    z_top) and in row 5 each station's share of the added mass; the grid's steps and counts
-    and the sea's switches into the sea's block of ``P``.
+    z_top) and in row 5 each station's share of the added mass.
 
     Parameters
     ----------
@@ -97,27 +78,16 @@ def grid_array(grid: HullGrid, shares: np.ndarray, P: np.ndarray, switches) -> n
         The hull's coarse grid (:func:`sailmujoco.boat.hull_grid.hull_grid`).
     shares : numpy.ndarray, shape (nx,)
         Each station's share of the added mass (:func:`sailmujoco.boat.hull_grid.section_weights`).
-    P : numpy.ndarray
-        The packed parameters, written in place.
-    switches : ForceSwitches
-        The physics' switches; those of :data:`SEA_SWITCHES` are packed (1.0 on; wave_damping
-        1.0 for "relative").
     """
     out = np.zeros((6, max(grid.columns.shape[1], grid.nx)))
     out[:5] = grid.columns
     out[5, :grid.nx] = shares
-    block = P_SEA_BLOCK
-    P[block + SB_DX], P[block + SB_DY] = grid.dx, grid.dy
-    P[block + SB_NX], P[block + SB_NY] = grid.nx, grid.ny
-    for k, name in enumerate(SEA_SWITCHES):
-        value = getattr(switches, name)
-        P[block + SB_HULL + k] = float(value is True or value == "relative")
     return np.ascontiguousarray(out)
 
 
-def sea_arrays(hull, config: WaveConfig | None, P: np.ndarray, switches):
+def sea_arrays(hull, config: WaveConfig | None):
     """The kernel's ``sea`` and ``grid`` arrays for a hull in a sea state (:func:`sea_array`,
-    :func:`grid_array`), with the grid's numbers and the switches packed into ``P``.
+    :func:`grid_array`).
 
     Parameters
     ----------
@@ -125,14 +95,28 @@ def sea_arrays(hull, config: WaveConfig | None, P: np.ndarray, switches):
         The canoe body.
     config : WaveConfig or None
         The sea state.
-    P : numpy.ndarray
-        The packed parameters, written in place.
-    switches : ForceSwitches
-        The physics' switches.
     """
     grid = hull_grid(hull)
     sea = sea_array(config, section_depths(hull, grid))
-    return sea, grid_array(grid, section_weights(hull, grid), P, switches)
+    return sea, grid_array(grid, section_weights(hull, grid))
+
+
+def pack_sea_block(hull, config: WaveConfig | None, block: np.ndarray) -> None:
+    """The sea's block of ``P`` but its switches: the ramp T_r and the hull's grid (steps, counts).
+
+    Parameters
+    ----------
+    hull : HullShape
+        The canoe body.
+    config : WaveConfig or None
+        The sea state.
+    block : numpy.ndarray
+        The sea's block of ``P`` (``P[P_SEA_BLOCK:]``), written in place at the SB_* offsets.
+    """
+    grid = hull_grid(hull)
+    block[SB_RAMP] = ramp_duration(config)
+    block[SB_DX], block[SB_DY] = grid.dx, grid.dy
+    block[SB_NX], block[SB_NY] = grid.nx, grid.ny
 
 
 def ramp_duration(config: WaveConfig | None) -> float:

@@ -1,4 +1,4 @@
-"""Wave spectra, directional spreading and the sea state a wind raises.
+"""Wave spectra and directional spreading.
 
 The spectra are one-sided densities in angular frequency, S(omega) in m^2 s/rad, with
 m0 = integral of S d omega = Hs^2 / 16 (Hs the significant wave height, 4 sqrt(m0)), as in
@@ -16,7 +16,9 @@ Directional spreading: the cos-2s distribution (Longuet-Higgins, Cartwright & Sm
 D(theta) proportional to cos^(2s)((theta - theta_0)/2) on (-pi, pi], sampled by its inverse
 cumulative distribution on a grid.
 
-The sea a wind raises, from the wind speed at 10 m, U10:
+The sea a wind raises (:meth:`sailmujoco.options.WaveConfig.from_wind`, whose formulas
+:func:`~sailmujoco.options.fully_developed_sea` and :func:`~sailmujoco.options.fetch_limited_sea`
+live beside the sea's configuration), from the wind speed at 10 m, U10:
 
 * fully developed (Pierson & Moskowitz 1964, as Stewart 2008 §16.3 writes it):
   Hs = 0.21 U19.5^2/g (eq. 16.33), omega_p = 0.877 g/U19.5 (eq. 16.30), with
@@ -33,16 +35,9 @@ import math
 
 import numpy as np
 
-from .. import constants as c
-
 JONSWAP_SIGMA_LOW = 0.07  # -, peak width below omega_p, Hasselmann et al. (1973)
 JONSWAP_SIGMA_HIGH = 0.09  # -, peak width above omega_p
 JONSWAP_NORMALISATION = 0.287  # -, A_gamma = 1 - 0.287 ln gamma, DNV-RP-C205 eq. 3.5.5.4
-U19_5_PER_U10 = 1.026  # -, Stewart (2008) eq. 16.29
-PM_HS = 0.21  # -, g Hs / U19.5^2 of a fully developed sea, Stewart (2008) eq. 16.33
-PM_PEAK = 0.877  # -, omega_p U19.5 / g of a fully developed sea, Stewart (2008) eq. 16.30
-FETCH_HS = 1.6e-3  # -, g Hs/U10^2 = 1.6e-3 chi^(1/2), Shore Protection Manual (1984) eq. 3-33
-FETCH_TP = 0.2857  # -, g Tp/U10 = 0.2857 chi^(1/3), Shore Protection Manual (1984) eq. 3-34
 _SPREAD_GRID = 4097  # points of the cos-2s inverse-CDF grid on [-pi, pi] (odd: holds theta = 0)
 
 
@@ -151,40 +146,3 @@ def spreading_offsets(s: float, uniform: np.ndarray) -> np.ndarray:
     pdf = np.cos(0.5 * theta) ** (2.0 * s)
     cdf = np.concatenate([[0.0], np.cumsum(0.5 * (pdf[1:] + pdf[:-1]) * np.diff(theta))])
     return np.interp(uniform, cdf / cdf[-1], theta)
-
-
-def fully_developed_sea(u10: float) -> tuple[float, float]:
-    """(Hs m, Tp s) of a fully developed sea in a wind U10 (Pierson & Moskowitz 1964).
-
-    Hs = 0.21 U19.5^2/g, Tp = 2 pi U19.5/(0.877 g), U19.5 = 1.026 U10 (Stewart 2008
-    eqs. 16.29, 16.30, 16.33).
-
-    Parameters
-    ----------
-    u10 : float
-        Mean wind speed at 10 m, m/s, > 0.
-    """
-    u = U19_5_PER_U10 * u10
-    return PM_HS * u**2 / c.GRAVITY, 2.0 * math.pi * u / (PM_PEAK * c.GRAVITY)
-
-
-def fetch_limited_sea(u10: float, fetch: float) -> tuple[float, float]:
-    """(Hs m, Tp s) of a fetch-limited sea (JONSWAP growth laws), capped at full development.
-
-    chi = g F/U10^2, Hs = 1.6e-3 chi^(1/2) U10^2/g, Tp = 0.2857 chi^(1/3) U10/g (Hasselmann
-    et al. 1973, as the Shore Protection Manual 1984 eqs. 3-33 and 3-34 write them), each
-    at most its value from :func:`fully_developed_sea`.
-
-    Parameters
-    ----------
-    u10 : float
-        Mean wind speed at 10 m, m/s, > 0.
-    fetch : float
-        Fetch, the distance the wind has blown over open water, m, > 0.
-    """
-    g = c.GRAVITY
-    chi = g * fetch / u10**2
-    hs_full, tp_full = fully_developed_sea(u10)
-    hs = FETCH_HS * math.sqrt(chi) * u10**2 / g
-    tp = FETCH_TP * chi ** (1.0 / 3.0) * u10 / g
-    return min(hs, hs_full), min(tp, tp_full)

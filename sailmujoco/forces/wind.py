@@ -29,16 +29,7 @@ import numpy as np
 
 from .. import constants as c
 from ..tomlfile import read_toml
-from .wind_kernels import (  # noqa: F401 - the compiled wind, importable from here too
-    gust_cosines,
-    gust_speed,
-    gust_sum,
-    gust_sums3,
-    mean_speed,
-    wander_angle,
-    wind_velocities,
-    wind_velocity,
-)
+from .wind_kernels import gust_speed, wander_angle, wind_velocity
 
 F_MAX = 0.4  # Hz, upper end of the simulated gust band (Wille §2.1)
 MAX_SPEED = 100.0  # m/s, U10: well above any hurricane's; the force models are not meant for more

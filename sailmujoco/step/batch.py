@@ -138,7 +138,7 @@ class BoatBatch:
 class BatchEnvironment:
     """N environments of the suite stepped together: ``step(actions)`` gives N TimeSteps.
 
-    Each environment is a :class:`~sailmujoco.tasks.base.SailEnvironment` as ``suite.load``
+    Each environment is a :class:`~sailmujoco.tasks.environment.SailEnvironment` as ``suite.load``
     builds it (its own seed and options). Their MuJoCo boats (6 or 4 DOF) step in one compiled
     call per control step (:class:`BoatBatch`); the paper worlds step one at a time behind the
     same interface. Every environment gives exactly the TimeSteps it gives

@@ -20,7 +20,8 @@ import numpy as np
 from ..boat import stability
 from ..boat.params import BoatParams
 from ..forces import boat as kernels
-from . import native
+from ..forces.boat_parameters import HYDROSTATIC_MODES, P_G, P_HYDRO_MODE, P_K_HEAVE
+from . import native, registry
 from .jit import entry_point
 
 # the compiled 4-DOF stage, called past numba's type dispatch (one signature)
@@ -83,14 +84,14 @@ class FourDofStage:
             # boat floats at every heel: its hydrostatics come from the freely floating
             # hull at the current heel (stability.FloatingTable), added in _forces_4dof
             self._floating = floating_table(params)
-            self._P[kernels.P_HYDRO_MODE] = kernels.HYDROSTATIC_MODES.index("off")
+            self._P[P_HYDRO_MODE] = HYDROSTATIC_MODES.index("off")
         elif forces.hydrostatics == "paper":
             # the joints hold CO's height, not the CG's: heeled, a CG off the waterline
             # moves by z_G (cos(phi) - 1) and the heave spring, acting through the CG, would
             # add a roll moment k_z z_G^2 (1 - cos(phi)) sin(phi) (+26 % of eq. 4 at 10 deg
             # on the robot with l_phi = 1 m, 3.3x at 30 deg). The reduced models hold the
             # CG's height: buoyancy = weight through the CG, eq. 20 / eq. 4 alone.
-            self._P[kernels.P_K_HEAVE] = 0.0
+            self._P[P_K_HEAVE] = 0.0
 
     def _four_dof_row(self, d) -> np.ndarray:
         """The registry row of the 4-DOF stage: MuJoCo's arrays and the stage's own."""
@@ -101,7 +102,7 @@ class FourDofStage:
             np.array([self.params.mass, self.params.cg_x, self.params.cg_z], dtype=float),
             np.zeros(0) if table is None else np.ascontiguousarray(table.heel, dtype=float),
             np.zeros(0) if table is None else np.ascontiguousarray(table.righting, dtype=float))
-        return native.registry_row(self._args, d.act, self._warnings,
+        return registry.registry_row(self._args, d.act, self._warnings,
                                    (d.qpos, d.qvel, d.qfrc_applied), self._bound_4dof)
 
     def _fill_pseudo(self) -> np.ndarray:
@@ -132,7 +133,7 @@ class FourDofStage:
         table, p = self._floating, self.params
         heel = float(self.data.ptr.qpos[3])
         righting = float(np.interp(heel, table.heel, table.righting))
-        force_b = p.mass * self._P[kernels.P_G] * rot[2, :]  # the weight, world vertical, body axes
+        force_b = p.mass * self._P[P_G] * rot[2, :]  # the weight, world vertical, body axes
         # (cg_x, 0, cg_z) x force_b, the products and differences np.cross forms (bit for bit;
         # np.cross itself costs 10 us, a third of this stage)
         (fx, fy, fz), cx, cz = force_b, p.cg_x, p.cg_z

@@ -24,10 +24,12 @@ import numba
 from . import compile_notice
 
 _PACKAGE = Path(__file__).resolve().parents[1]
-_SOURCES = sorted([_PACKAGE / "step" / "jit.py", _PACKAGE / "boat" / "hull_grid.py",
-                   *(_PACKAGE / "forces").glob("*.py"),
-                   *(_PACKAGE / "reference").glob("*.py")])  # the paper worlds' kernels call forces/;
-# the kernels freeze hull_grid.py's grid size into the sea's scratch size
+# Every file whose code is compiled into a cached kernel: the kernels and the step (step/), the
+# paper worlds' kernels (which call forces/), frames.wrap_angle (inlined where it is called) and
+# hull_grid.py (its grid size is frozen into the sea's scratch size).
+_SOURCES = sorted([*(_PACKAGE / "step").glob("*.py"), *(_PACKAGE / "forces").glob("*.py"),
+                   *(_PACKAGE / "reference").glob("*.py"), _PACKAGE / "frames.py",
+                   _PACKAGE / "boat" / "hull_grid.py"])
 
 
 def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:
@@ -56,7 +58,17 @@ compile_notice.install()
 
 def clear_stale_cache(module_file: str) -> None:
     """For kernels outside the package's own modules (a controller's): empty the cache beside
-    ``module_file`` when it, or any package kernel its kernels may call, has changed."""
+    ``module_file`` when it, or any package kernel its kernels may call, has changed.
+
+    Parameters
+    ----------
+    module_file : str
+        The path of the module whose kernels are cached (its ``__file__``). Its numba cache
+        files (``*.nbi``, ``*.nbc``) in the ``__pycache__`` folder beside it are deleted unless
+        the stamp there matches the SHA-256 digest of the package's kernel sources and this
+        file; the new digest is then written as the stamp. On a read-only install nothing is
+        done (numba caches elsewhere).
+    """
     module = Path(module_file).resolve()
     _clear_stale_cache((*_SOURCES, module), {module.parent / "__pycache__"})
 
@@ -71,6 +83,27 @@ def kernel(fn=None, *, inline: bool = False, reassociate: bool = False):
     a sum over wave components runs on vector registers; its last bits then differ from the
     interpreted path's (the tests compare the two to 1e-10). Only the sea's sums use it: calm
     water's arithmetic stays in its written order.
+
+    Every kernel is compiled with ``cache=True``, ``nogil=True`` and ``error_model="numpy"``
+    (a division by zero gives inf or NaN, as in numpy, rather than raising).
+
+    Parameters
+    ----------
+    fn : function, optional
+        The kernel's Python function. None when the decorator is written with arguments
+        (``@kernel(inline=True)``).
+    inline : bool, optional
+        Inline the kernel into its compiled callers (numba's ``inline="always"``); default
+        False (``inline="never"``).
+    reassociate : bool, optional
+        Let LLVM reorder and fuse floating-point operations (fastmath flags ``reassoc`` and
+        ``contract`` only); default False (strict IEEE order).
+
+    Returns
+    -------
+    numba dispatcher or callable
+        The compiled kernel (the plain function with NUMBA_DISABLE_JIT); with ``fn`` None, the
+        decorator that compiles the function it is given.
     """
     def build(f):
         return numba.njit(cache=True, nogil=True, error_model="numpy",
@@ -118,6 +151,21 @@ class LazyEntry:
         return self._entry is not None
 
     def __call__(self, *args):
+        """Call the kernel: through the dispatcher the first time (which compiles it or loads it
+        from the cache), then, if it has exactly one signature, straight through its compiled
+        entry point (no type dispatch: the arguments must then have that signature's types).
+
+        Parameters
+        ----------
+        *args
+            The kernel's positional arguments, as its signature takes them (numpy arrays,
+            floats, ints, bools).
+
+        Returns
+        -------
+        object
+            What the kernel returns.
+        """
         if self._entry is None:
             result = self._dispatcher(*args)
             if len(self._dispatcher.signatures) == 1:

@@ -1,6 +1,6 @@
 """The moving sea of the display model: a height field that follows the waves around the boat.
 
-With a sea state (:class:`~sailmujoco.forces.waves.WaveConfig`, ``hs > 0``) the display model's
+With a sea state (:class:`~sailmujoco.options.WaveConfig`, ``hs > 0``) the display model's
 flat ``sea_surface`` plane gives way to
 
 * a MuJoCo height field (``sea_waves``: visual only, ``contype = conaffinity = 0``, the group

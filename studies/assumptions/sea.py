@@ -5,7 +5,7 @@ run in calm water:
 
 * the wind plane (:func:`plane_sea_specs`): each boat at every point of the study's wind
   plane, in the fetch-limited JONSWAP sea that point's wind raises
-  (:meth:`sailmujoco.forces.waves.WaveConfig.from_wind`) over the boat's fetch (``FETCH``),
+  (:meth:`sailmujoco.options.WaveConfig.from_wind`) over the boat's fetch (``FETCH``),
   the waves from the wind's bearing; the calm runs are the same specs without the sea;
 * Wille's roll controller (:func:`table1_sea_jobs`): Table 1's three simulations in
   fully developed Pierson-Moskowitz seas of the heights ``SEA_HS`` (:func:`developed_sea`),
@@ -28,9 +28,7 @@ import math
 import numpy as np
 
 from sailmujoco import constants
-from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK
-from sailmujoco.forces.waves import N_COMPONENTS, WaveConfig
-from sailmujoco.options import ForceSwitches
+from sailmujoco.options import N_COMPONENTS, PM_HS, PM_PEAK, ForceSwitches, WaveConfig
 from sailmujoco.study import Runs
 from sailmujoco.suite import TASKS
 

@@ -30,7 +30,8 @@ from sailmujoco import constants
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.boat.check import natural_periods
 from sailmujoco.forces.wave_spectra import pierson_moskowitz
-from sailmujoco.forces.waves import WaveConfig, components
+from sailmujoco.forces.waves import components
+from sailmujoco.options import WaveConfig
 from sailmujoco.study import Results, Runs
 from sailmujoco.suite import TASKS
 

@@ -13,8 +13,8 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import constants
-from sailmujoco.forces.wave_spectra import PM_HS, PM_PEAK, U19_5_PER_U10, fully_developed_sea
 from sailmujoco.forces.waves import BAND
+from sailmujoco.options import PM_HS, PM_PEAK, U19_5_PER_U10, fully_developed_sea
 
 from ..kit import save_figure, setup_matplotlib
 from ..kit.saoud import TRUE_WIND
