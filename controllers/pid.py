@@ -11,11 +11,9 @@ from __future__ import annotations
 
 import math
 
+from sailmujoco.frames import wrap_angle
+
 from .base import scalar
-
-
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 def _sign(x: float) -> float:
@@ -77,7 +75,7 @@ class PIDHeading:
         desired = self.desired_heading
         if desired is None:
             desired = scalar(observation, self.reference_key)
-        return _wrap(scalar(observation, "heading") - desired)
+        return wrap_angle(scalar(observation, "heading") - desired)
 
     def __call__(self, observation: dict) -> float:
         """The rudder angle for this observation (PID on the heading error, anti-windup).

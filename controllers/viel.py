@@ -3,7 +3,7 @@
 Laws, all written in Viel's planar frame (:mod:`sailmujoco.reference.viel`: theta ccw from
 east, psi_tw/psi_aw the directions the wind blows *towards*, rudder/sail positive with the
 trailing edge to starboard). The observation is converted to that frame in one place,
-:func:`viel_view`, and the action back with :func:`~sailmujoco.reference.viel.action_from_viel`.
+:func:`viel_view`, and the action back with :func:`~sailmujoco.reference.viel_model.action_from_viel`.
 
 * rudder, eqs. 10-11, steering the course phi when it is within epsilon_theta of the heading;
 * sail, eqs. 12-17: the sail angle is moved at a rate set by the error between the desired
@@ -39,17 +39,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from sailmujoco.reference.viel import action_from_viel
+from sailmujoco.frames import wrap_angle
+from sailmujoco.reference.viel_model import action_from_viel
 
 from .base import scalar
 
 # Modes reported in ``VielController.info["mode"]``: step 1, step 2, step 3, step 4 (eqs. 19-20, 21-22).
 GO_DIRECT, GO_ROUND, TACK = "direct", "go_round", "tack"
 UPWIND_STOP, UPWIND_DRIVE = "upwind_v>0", "upwind_v<=0"
-
-
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 def _sign(x: float) -> float:
@@ -123,9 +120,9 @@ def viel_view(observation: dict, target=None) -> VielView:
     """
     x, y = _pair(observation["position"])
     vx, vy = _pair(observation["velocity"])
-    # frames.yaw_from_heading, reference.viel.psi_aw_from_awa and psi_tw_from_direction on
+    # frames.yaw_from_heading, reference.viel_model.psi_aw_from_awa and psi_tw_from_direction on
     # floats: the same operations (numpy's remainder is fmod-based, as Python's %)
-    theta = _wrap(np.pi / 2.0 - scalar(observation, "heading"))
+    theta = wrap_angle(np.pi / 2.0 - scalar(observation, "heading"))
     c, s = math.cos(theta), math.sin(theta)
     if target is None:
         if "target_position" not in observation:
@@ -136,8 +133,8 @@ def viel_view(observation: dict, target=None) -> VielView:
     values = dict(
         x=x, y=y, theta=theta, phi=math.atan2(vy, vx), v=vx * c + vy * s, u=-vx * s + vy * c,
         omega=scalar(observation, "yaw_rate"), a_aw=scalar(observation, "apparent_wind_speed"),
-        psi_aw=_wrap(math.pi - scalar(observation, "apparent_wind_angle")),
-        psi_tw=_wrap(-0.5 * math.pi - scalar(observation["true_state"], "wind_direction")),
+        psi_aw=wrap_angle(math.pi - scalar(observation, "apparent_wind_angle")),
+        psi_tw=wrap_angle(-0.5 * math.pi - scalar(observation["true_state"], "wind_direction")),
         x_T=x_T, y_T=y_T)
     for name, value in values.items():
         if not math.isfinite(value):
@@ -425,7 +422,7 @@ class VielController:
             vdot_star = desired_acceleration(s.v, s.u, s.theta, alpha, distance, self.k_v, self.k_p)
             sail = adaptive_sail(self.sail, vdot_star, vdot, s.psi_aw, s.psi_tw, theta_bar, self.k_s,
                                  self.dt, self.epsilon_sail, self.sail_max)
-        theta_bar = _wrap(theta_bar)
+        theta_bar = wrap_angle(theta_bar)
         rudder = rudder_law(s.theta, s.phi, theta_bar, self.rudder_max, self.epsilon_theta)
         self.sail = sail
         self.info = dict(mode=mode, theta_bar=theta_bar, vdot_star=vdot_star, vdot=vdot, q=self.q,

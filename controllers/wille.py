@@ -24,13 +24,10 @@ import numpy as np
 
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.boat.params import BoatParams, Foil
-from sailmujoco.forces.foil import hydrofoil_coefficients, naca0015
+from sailmujoco.forces.foil_sections import hydrofoil_coefficients, naca0015
+from sailmujoco.frames import wrap_angle
 
 from .base import scalar
-
-
-def _wrap(angle: float) -> float:
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 def lift_slope(foil: Foil, reynolds: float = 1e6) -> float:
@@ -149,9 +146,9 @@ class WilleHeading:
             desired = scalar(observation, key)
         if self.course:
             self.last_beta_b = self.correction(s)
-            e1 = _wrap(s["psi"] + self.last_beta_b - desired)  # eq. 52
+            e1 = wrap_angle(s["psi"] + self.last_beta_b - desired)  # eq. 52
         else:
-            e1 = _wrap(s["psi"] - desired)  # eq. 46
+            e1 = wrap_angle(s["psi"] - desired)  # eq. 46
         e2 = s["r"]  # eq. 47
         moment = -(s["N_sail"] + s["N_keel"] + s["N_added"]) - self.kp * e1 - self.kd * e2  # eq. 48
         # eq. 34 with eq. 31: the water's angle at the rudder
@@ -163,5 +160,5 @@ class WilleHeading:
         denominator = l4 * p.rho_water * p.rudder.area * self.cl0_rudder * speed2 * math.cos(beta_cr)
         if abs(denominator) < 1e-6:
             return 0.0
-        sigma = _wrap(beta_cr - math.pi) + 2.0 * moment / denominator  # eq. 51
+        sigma = wrap_angle(beta_cr - math.pi) + 2.0 * moment / denominator  # eq. 51
         return float(np.clip(sigma, -p.rudder.max_angle, p.rudder.max_angle))

@@ -28,12 +28,15 @@ Angles (all radians inside the package)
   from, measured in the body x-y plane, positive when it comes from starboard.
   Saoud's Theta_V (the angle of v_as = v - v_w, counter-clockwise, in the heading frame) is
   ``-AWA`` up to the heel projection: ``tan AWA = -cos(phi) tan(Theta_V)`` (Saoud §IV).
-* Angle of attack of a foil: see :mod:`sailmujoco.forces.foil`.
+* Angle of attack of a foil: see :mod:`sailmujoco.forces.foil_geometry`.
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
+from numba.extending import register_jitable
 
 # Permutation/sign matrices between frames (vectors, not rotations of the boat).
 _ENU_TO_NED = np.array([[0.0, 1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, -1.0]])
@@ -41,20 +44,27 @@ _ENU_TO_NWU = np.array([[0.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
 _FLU_TO_FRD = np.diag([1.0, -1.0, -1.0])
 
 
+@register_jitable(nogil=True, error_model="numpy")
 def wrap_angle(angle):
-    """Wrap an angle (or array) to [-pi, pi).
+    """Wrap an angle (or array of angles) to [-pi, pi): ``(angle + pi) % (2 pi) - pi``.
+
+    The package's one angle wrap. It runs on a Python float (Python's ``%``), on a numpy
+    scalar or array (numpy's remainder) and inside a compiled kernel (numba compiles it into
+    its caller, with the kernels' flags of :func:`sailmujoco.step.jit.kernel`). All three
+    take C's ``fmod`` and move a remainder of the wrong sign onto the divisor's side, so a
+    float, an array element and a kernel give the same bits for the same angle.
 
     Parameters
     ----------
-    angle : float or array_like
-        Angle(s), rad.
+    angle : float or numpy.ndarray
+        Angle(s), rad (a list: convert it with ``np.asarray`` first).
 
     Returns
     -------
-    numpy.ndarray
-        The same angle(s) in [-pi, pi), rad.
+    float or numpy.ndarray
+        The same angle(s) in [-pi, pi), rad, of the type of ``angle`` (a float for a float).
     """
-    return (np.asarray(angle) + np.pi) % (2.0 * np.pi) - np.pi
+    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 def ned_from_enu(v):

@@ -34,17 +34,18 @@ from .boat.params import BoatParams
 from .names import check_known
 from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
 from .physics import BoatPhysics
-from .tasks.base import PaperPhysics, SailEnvironment, check_number
-from .tasks.registry import TASKS, register_task
+from .tasks.base import check_number
+from .tasks.environment import SailEnvironment
+from .tasks.registry import TASKS
+from .tasks.world import PaperPhysics, VielPhysics
 
 # isort: off
 # the built-in tasks register on import, in this order (the order of TASKS, SUITE and the gym ids)
-from .tasks.sailing import BeamReachRoll, CourseHold, HeadingHold, SpeedTrial  # noqa: F401
-from .tasks.position import VielPhysics
+from .tasks import sailing  # noqa: F401
+from .tasks import position  # noqa: F401
 # isort: on
 
-__all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "register_task", "rollout",
-           "task_options"]
+__all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "rollout", "task_options"]
 WORLDS = choices(World)
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS)
 # keywords of load that are neither task options nor physics fields
@@ -232,10 +233,12 @@ def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = N
                              for seed, extra in zip(seeds, options, strict=True)])
 
 
-def rollout(env, controller):
+def rollout(env, controller, record=None):
     """Run one episode of ``env`` with ``controller``; a pandas DataFrame, one row per control
     step: t, x, y (m), heading, heel (rad) and heel_deg, roll_rate, yaw_rate (rad/s), u, v,
-    speed (m/s), rudder, sail (rad), awa (rad), aws (m/s).
+    speed (m/s), rudder, sail (rad), awa (rad), aws (m/s), or the rows ``record`` gives.
+
+    The one episode loop: every study runs its episodes through it.
 
     Parameters
     ----------
@@ -247,10 +250,22 @@ def rollout(env, controller):
         and a sail law (``law(observation) -> angle``) go together into
         ``sailmujoco.controllers.base.Composite(rudder, sail)``; given anything else, the first
         step says what is needed, in one line.
+    record : callable, optional
+        ``record(step, timestep, action) -> dict or None``, called with the reset's TimeStep
+        (step 0, action None), then after every step (step k >= 1, with the action that led to
+        it), before the controller sees that TimeStep: the row of that step, or None for no
+        row. It may read ``env`` and the controller's state there. Default: the row above, at
+        every step.
+
+    Returns
+    -------
+    pandas.DataFrame
+        The rows, in step order.
     """
     import pandas as pd
 
-    def row(observation):
+    def row(step, timestep, action):
+        observation = timestep.observation
         ts = observation["true_state"]
         return {"t": float(ts["time"]), "x": float(observation["position"][0]),
                 "y": float(observation["position"][1]), "heading": float(observation["heading"]),
@@ -262,19 +277,30 @@ def rollout(env, controller):
                 "awa": float(observation["apparent_wind_angle"]),
                 "aws": float(observation["apparent_wind_speed"])}
 
+    record = row if record is None else record
+    rows = []
+
+    def keep(step, timestep, action):
+        kept = record(step, timestep, action)
+        if kept is not None:
+            rows.append(kept)
+
     if isinstance(controller, (tuple, list)) or not callable(controller):
         raise TypeError(f"suite.rollout: the controller must be callable, controller(timestep) -> "
                         f"[rudder, sail], got {type(controller).__name__}; {_LAWS}")
     if hasattr(controller, "reset"):
         controller.reset(env.task.seed)
     timestep = env.reset()
-    rows = [row(timestep.observation)]
+    step = 0
+    keep(step, timestep, None)
     if not timestep.last():
-        timestep = env.step(_first_action(env, controller, timestep))
-        rows.append(row(timestep.observation))
+        action = _first_action(env, controller, timestep)
+        timestep, step = env.step(action), 1
+        keep(step, timestep, action)
     while not timestep.last():
-        timestep = env.step(controller(timestep))
-        rows.append(row(timestep.observation))
+        action = controller(timestep)
+        timestep, step = env.step(action), step + 1
+        keep(step, timestep, action)
     return pd.DataFrame(rows)
 
 

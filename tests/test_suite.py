@@ -88,3 +88,36 @@ def test_gymnasium_checker_passes():
         check_env(env, skip_render_check=True)
         observation, _ = env.reset(seed=1)
         assert env.observation_space.contains(observation)
+
+
+def test_rollout_records_each_step_with_the_action_that_led_to_it():
+    """``record`` sees the reset (step 0, no action), then every step with the action just taken,
+    before the controller sees it; its None rows are left out, and the episode is the default one."""
+
+    class Counting:
+        def __init__(self):
+            self.calls, self.seed = 0, None
+
+        def reset(self, seed):
+            self.seed = seed
+
+        def __call__(self, timestep):
+            self.calls += 1
+            return np.array([0.01 * self.calls, -0.3])
+
+    seen = []
+
+    def record(step, timestep, action):
+        seen.append((step, controller.calls, None if action is None else float(action[0])))
+        return None if step % 2 else {"step": step, "t": float(timestep.observation["true_state"]["time"])}
+
+    env = suite.load("saoud_robot", "heading_hold", seed=3, time_limit=(STEPS - 0.5) * 0.1)
+    controller = Counting()
+    rows = suite.rollout(env, controller, record=record)
+    assert controller.seed == 3
+    n = len(seen)  # the reset and every step
+    assert n > 4 and seen == [(k, k, None if k == 0 else 0.01 * k) for k in range(n)]
+    assert rows["step"].tolist() == list(range(0, n, 2))
+    default = suite.rollout(env, Counting())
+    assert len(default) == n
+    assert rows["t"].tolist() == default["t"].iloc[::2].tolist()

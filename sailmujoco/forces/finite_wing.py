@@ -11,9 +11,10 @@ import math
 
 import numpy as np
 
+from ..frames import wrap_angle
 from ..step.jit import kernel
 from .damping import ittc_friction_coefficient
-from .foil_sections import section_coefficients, wrap_pi
+from .foil_sections import section_coefficients
 
 # ---- finite-wing forms (ForceSwitches.foils = "finite") -------------------------------------
 #
@@ -120,7 +121,7 @@ def finite_sail_normal_coefficient(x, slope, stall, cd_max):
     Parameters
     ----------
     x : float
-        sin(alpha), alpha the angle of attack (foil frame of :mod:`sailmujoco.forces.foil`).
+        sin(alpha), alpha the angle of attack (foil frame of :mod:`sailmujoco.forces.foil_geometry`).
     slope : float
         Lift slope at zero incidence, 1/rad (:func:`helmbold_lift_slope`).
     stall : float
@@ -167,7 +168,7 @@ def finite_hydrofoil_coefficients(alpha, reynolds, lift_ratio, aspect_ratio, cd_
     Parameters
     ----------
     alpha : float
-        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil`); wrapped to [-pi, pi).
+        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil_geometry`); wrapped to [-pi, pi).
     reynolds : float
         Reynolds number on the chord, -.
     lift_ratio : float
@@ -190,7 +191,7 @@ def finite_hydrofoil_coefficients(alpha, reynolds, lift_ratio, aspect_ratio, cd_
     c_lift, c_drag : float
         C_L and C_D on the foil's planform area.
     """
-    a = wrap_pi(alpha)
+    a = wrap_angle(alpha)
     sign = 1.0 if a >= 0.0 else -1.0
     phi = abs(a)
     if phi > 0.5 * math.pi:

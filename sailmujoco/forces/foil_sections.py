@@ -3,7 +3,7 @@
 The Sheldahl & Klimas (1981, SAND80-2114) NACA 0015 table through 180 deg at eleven Reynolds
 numbers, its bilinear lookup in (alpha, log10 Re), and the finite-span C_L, C_D that Wille
 (2016a) eqs. 23-24 build from it. The foil frame and the sign of alpha are those of
-:mod:`sailmujoco.forces.foil`.
+:mod:`sailmujoco.forces.foil_geometry`.
 """
 
 from __future__ import annotations
@@ -14,6 +14,7 @@ from importlib import resources
 
 import numpy as np
 
+from ..frames import wrap_angle
 from ..step.jit import kernel
 from .damping import ittc_friction_coefficient
 
@@ -27,7 +28,7 @@ class SectionTable:
     ----------
     alpha : array_like, shape (n_alpha,)
         Section angles of attack, rad, ascending, shared by every Reynolds number (the foil
-        frame of :mod:`sailmujoco.forces.foil`).
+        frame of :mod:`sailmujoco.forces.foil_geometry`).
     log_re : array_like, shape (n_re,)
         log10 of the Reynolds number of each table, ascending.
     cl, cd : array_like, shape (n_re, n_alpha)
@@ -91,18 +92,6 @@ def naca0015() -> SectionTable:
 
 
 @kernel
-def wrap_pi(angle):
-    """Wrap an angle to [-pi, pi).
-
-    Parameters
-    ----------
-    angle : float
-        Angle, rad.
-    """
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
-
-
-@kernel
 def section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_table):
     """Section (2-D) c_l, c_d at ``alpha`` (rad) and Reynolds number, bilinear in (alpha, log Re).
 
@@ -112,7 +101,7 @@ def section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_
     Parameters
     ----------
     alpha : float
-        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil`; wrapped to
+        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil_geometry`; wrapped to
         [-pi, pi).
     reynolds : float
         Reynolds number on the chord, -.
@@ -127,7 +116,7 @@ def section_coefficients(alpha, reynolds, alpha_grid, log_re_grid, cl_table, cd_
     c_l, c_d : float
         Section lift and drag coefficients.
     """
-    a = wrap_pi(alpha)
+    a = wrap_angle(alpha)
     n = alpha_grid.shape[0]
     i = np.searchsorted(alpha_grid, a) - 1
     i = min(max(i, 0), n - 2)
@@ -166,7 +155,7 @@ def hydrofoil_coefficients(alpha, reynolds, aspect_ratio, thickness_ratio,
     Parameters
     ----------
     alpha : float
-        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil`.
+        Angle of attack, rad, in the foil frame of :mod:`sailmujoco.forces.foil_geometry`.
     reynolds : float
         Reynolds number on the chord, -.
     aspect_ratio : float

@@ -22,6 +22,7 @@ from gymnasium import spaces
 
 from ..constants import RHO_WATER
 from ..forces.wind import MAX_SPEED
+from ..frames import wrap_angle
 
 PI = math.pi
 MAX_BOAT_SPEED = 50.0  # m/s: above the sailing speed record, 65.45 kn = 33.7 m/s (Sailrocket 2, 2012)
@@ -140,10 +141,6 @@ def observation_space(spec, limits: dict) -> spaces.Dict:
     return spaces.Dict(boxes)
 
 
-def _wrap(value: np.ndarray) -> np.ndarray:
-    return (value + PI) % (2.0 * PI) - PI
-
-
 def gym_observation(observation, space: spaces.Dict) -> dict:
     """The observation as the space declares it: flat, 1-D float32 arrays, angle references and
     the yaw wrapped, every number clipped into its bounds (which changes only the last
@@ -161,7 +158,7 @@ def gym_observation(observation, space: spaces.Dict) -> dict:
         box = space.spaces[key]
         value = np.array(value, dtype=np.float64).reshape(box.shape)
         if path in WRAPPED:
-            value = _wrap(value)
+            value = wrap_angle(value)
         out[key] = np.asarray(np.clip(value.astype(np.float32), box.low, box.high), dtype=np.float32)
     return out
 
@@ -185,7 +182,7 @@ def outside(measured: dict, limits: dict) -> str | None:
             continue
         value = np.asarray(value, dtype=np.float64)
         if key in WRAPPED:
-            value = _wrap(value)
+            value = wrap_angle(value)
         if not np.all((value >= low) & (value <= high)):  # NaN is outside too
             if top in ("position", "target_position"):
                 return f"left the sailing area (|x| or |y| > {high:g} m)"

@@ -26,21 +26,12 @@ import math
 
 import numpy as np
 
+from ..frames import wrap_angle
+
 OFF_NORMAL = math.radians(45.0)  # the camera's bearing from the sail's normal, towards astern
 SIDE_HYSTERESIS = math.radians(4.0)  # the boom must cross the centre line by this to switch sides
 ELEVATION_DEG = -24.0  # default follow camera elevation (looking down)
 DISTANCE_MASTHEADS = 2.7  # default follow distance, masthead heights
-
-
-def wrap(angle: float) -> float:
-    """``angle`` wrapped to [-pi, pi).
-
-    Parameters
-    ----------
-    angle : float
-        rad.
-    """
-    return (angle + math.pi) % (2.0 * math.pi) - math.pi
 
 
 def yaw_of(rotation: np.ndarray) -> float:
@@ -112,7 +103,7 @@ class FollowCamera:
     def _smooth(self, previous, target: float, dt: float) -> float:
         if previous is None or self.lag <= 0.0:
             return target
-        return previous + wrap(target - previous) * (1.0 - math.exp(-dt / self.lag))
+        return previous + wrap_angle(target - previous) * (1.0 - math.exp(-dt / self.lag))
 
     def pose(self, time: float, position, rotation, boom: float) -> tuple[np.ndarray, float, float, float]:
         """(look-at point, distance, azimuth deg, elevation deg) of MuJoCo's free camera now.

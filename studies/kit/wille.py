@@ -15,7 +15,6 @@ import dataclasses
 import math
 
 import numpy as np
-import pandas as pd
 
 from sailmujoco import suite, sweep
 from sailmujoco.boat.catalogue import get_boat
@@ -133,15 +132,10 @@ def table1_simulate(job: dict) -> dict:
         sail.lqr = dataclasses.replace(sail.lqr, K=np.array(PAPER_GAIN))
     if job.get("band_deg") is not None:  # the hysteresis band
         sail.heel_off = max(sail.heel_on - math.radians(job["band_deg"]), 0.0)
-    controller.reset(job["seed"])
-    timestep = env.reset()
-    rows = []
-    while True:
-        rows.append(_row(timestep.observation, sail, env.physics if job.get("moments") else None))
-        if timestep.last():
-            break
-        timestep = env.step(controller(timestep))
-    return {"metrics": env.task.metrics(), "trajectory": pd.DataFrame(rows)}
+    physics = env.physics if job.get("moments") else None
+    trajectory = suite.rollout(env, controller, record=lambda step, timestep, action: _row(
+        timestep.observation, sail, physics))
+    return {"metrics": env.task.metrics(), "trajectory": trajectory}
 
 
 def _row(obs, sail, physics) -> dict:

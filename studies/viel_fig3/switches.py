@@ -12,12 +12,13 @@ import math
 
 import numpy as np
 
-from sailmujoco import frames, sweep
+from sailmujoco import frames, suite, sweep
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
-from sailmujoco.tasks.base import SailEnvironment
-from sailmujoco.tasks.position import PositionKeeping, VielPhysics
+from sailmujoco.tasks.environment import SailEnvironment
+from sailmujoco.tasks.position import PositionKeeping
+from sailmujoco.tasks.world import VielPhysics
 
 from ..kit import run_episode, timer
 from .measures import after_entry, behaviour, drift_after_stop
@@ -51,7 +52,7 @@ class StartedPositionKeeping(PositionKeeping):
 
         Parameters
         ----------
-        physics : sailmujoco.physics.BoatPhysics or sailmujoco.tasks.position.VielPhysics
+        physics : sailmujoco.physics.BoatPhysics or sailmujoco.tasks.world.VielPhysics
             The episode's physics.
         """
         super().initialize_episode(physics)
@@ -100,27 +101,26 @@ def simulate(spec: dict) -> dict:
     env = SailEnvironment(physics, task, time_limit=s["duration"], control_timestep=s["dt"],
                           legacy_step=False)
     policy = sweep.make_controller("viel", env, **{**PAPER_GAINS, "d_T": d_t, "d_M": d_m})
-    policy.reset(s["seed"])
-    timestep = env.reset()
     every = max(1, int(round(1.0 / (TRAJECTORY_RATE * s["dt"]))))
-    t, x, y, step = [], [], [], 0
+    t, x, y = [], [], []
     samples = {"surge": [], "sway": [], "awa": [], "rudder": [], "heel": [], "sail": [], "mode": []}
-    while not timestep.last():
-        action = policy(timestep)
-        timestep = env.step(action)
-        step += 1
-        if step % every == 0:
-            o = timestep.observation
-            t.append(float(o["true_state"]["time"]))
-            x.append(float(o["position"][0]))
-            y.append(float(o["position"][1]))
-            samples["surge"].append(float(o["true_state"]["u"]))
-            samples["sway"].append(float(o["true_state"]["v"]))
-            samples["sail"].append(float(action[1]))
-            samples["awa"].append(float(o["apparent_wind_angle"]))
-            samples["rudder"].append(float(action[0]))
-            samples["heel"].append(float(o["heel"]))
-            samples["mode"].append(policy.info.get("mode", ""))
+
+    def sample(step, timestep, action):  # every `every` steps after the start, into the lists above
+        if step == 0 or step % every:
+            return
+        o = timestep.observation
+        t.append(float(o["true_state"]["time"]))
+        x.append(float(o["position"][0]))
+        y.append(float(o["position"][1]))
+        samples["surge"].append(float(o["true_state"]["u"]))
+        samples["sway"].append(float(o["true_state"]["v"]))
+        samples["sail"].append(float(action[1]))
+        samples["awa"].append(float(o["apparent_wind_angle"]))
+        samples["rudder"].append(float(action[0]))
+        samples["heel"].append(float(o["heel"]))
+        samples["mode"].append(policy.info.get("mode", ""))
+
+    suite.rollout(env, policy, record=sample)
     metrics = env.task.metrics()
     out = {**spec, "d_T": d_t, "d_M": d_m, "status": "stopped" if metrics.get("stopped") else "ok",
            **{k: float(metrics[k]) for k in ("entered_at", "max_distance_after_entry",

@@ -19,12 +19,11 @@ from __future__ import annotations
 
 import math
 
-import pandas as pd
 from sailmujoco.controllers.base import Composite
 from sailmujoco.controllers.wille import WilleHeading
 from sailmujoco.controllers.wille_roll import WilleRollSail
 
-from sailmujoco import sweep
+from sailmujoco import suite, sweep
 from sailmujoco.study import Runs
 
 from ..kit.wille import make_env
@@ -97,27 +96,23 @@ def simulate(job: dict) -> dict:
     env = make_env("course_hold", job["world"], control_timestep=job["dt"],
                    sail_factor=job.get("sail_factor", 1.0), time_limit=job["duration"], **job.get("env", {}))
     controller = _controller(env, job["law"])
-    controller.reset(0)
     every = max(1, int(round(0.1 / job["dt"])))
-    timestep = env.reset()
-    rows, step = [], 0
-    while True:
-        if step % every == 0:
-            obs = timestep.observation
-            ts = obs["true_state"]
-            ve, vn = obs["velocity"]
-            rows.append({"t": float(ts["time"]), "east": float(obs["position"][0]),
-                         "north": float(obs["position"][1]),
-                         "course_deg": math.degrees(math.atan2(ve, vn)),
-                         "heading_deg": math.degrees(math.remainder(float(obs["heading"]), 2 * math.pi)),
-                         "rudder_deg": math.degrees(float(ts["rudder"])), "u": float(ts["u"]),
-                         "heel_deg": math.degrees(float(obs["heel"])),
-                         "beta_b_deg": math.degrees(getattr(controller.rudder, "last_beta_b", 0.0))})
-        if timestep.last():
-            break
-        timestep = env.step(controller(timestep))
-        step += 1
-    return {"metrics": env.task.metrics(), "trajectory": pd.DataFrame(rows)}
+
+    def row(step, timestep, action):
+        if step % every:
+            return None
+        obs = timestep.observation
+        ts = obs["true_state"]
+        ve, vn = obs["velocity"]
+        return {"t": float(ts["time"]), "east": float(obs["position"][0]), "north": float(obs["position"][1]),
+                "course_deg": math.degrees(math.atan2(ve, vn)),
+                "heading_deg": math.degrees(math.remainder(float(obs["heading"]), 2 * math.pi)),
+                "rudder_deg": math.degrees(float(ts["rudder"])), "u": float(ts["u"]),
+                "heel_deg": math.degrees(float(obs["heel"])),
+                "beta_b_deg": math.degrees(getattr(controller.rudder, "last_beta_b", 0.0))}
+
+    trajectory = suite.rollout(env, controller, record=row)
+    return {"metrics": env.task.metrics(), "trajectory": trajectory}
 
 
 def jobs_for(smoke: bool) -> list[dict]:
