@@ -14,7 +14,7 @@ The sail is trimmed to maximise the longitudinal sail force under the roll equil
     beta = m g l_phi / (lambda_s h_s |V|^2),   lambda_s = rho_air S_s / 2
 
 with f = C_N, the sail's normal force coefficient as a function of sin alpha_s
-(:func:`sailmujoco.forces.foil.saoud_normal_coefficient`). The longitudinal sail force is
+(:func:`sailmujoco.forces.sail.saoud_normal_coefficient`). The longitudinal sail force is
 F_s1 = -lambda_s |V|^2 J (eq. 3), so minimising J maximises the thrust.
 
 Frames and signs (Saoud's own, used by every function here except the controllers' output)
@@ -61,7 +61,7 @@ Readings of the text (two extractions: 000_3829400af9344756.txt and 001_a17fd473
       :func:`controllers.saoud_optimum.eq13_roots` for the fallback.
     * Fig. 5's breakpoints survive only in 001 (see :mod:`controllers.briere`).
 
-Differences from our 6-DOF sail (:mod:`sailmujoco.forces.foil`): Saoud normalises the angle of
+Differences from our 6-DOF sail (:mod:`sailmujoco.forces.sail`): Saoud normalises the angle of
 attack by the full |V| (sin alpha_s = -v_as2^S / |V|, spanwise flow included) where our sail
 drops the spanwise flow; and with lambda = -delta_s the sail normal n equals j_s, so our
 alpha is -alpha_s while C_N(alpha) n = C_N(alpha_s) j_s (the force agrees; a test checks it
@@ -74,7 +74,7 @@ import math
 from dataclasses import dataclass
 
 from sailmujoco import constants
-from sailmujoco.forces.foil import saoud_normal_coefficient
+from sailmujoco.forces.sail import saoud_normal_coefficient
 from sailmujoco.frames import saoud_theta_v, wrap_angle
 
 # --- the solvers' tolerances (shared by the readable and the compiled solver) --------------

@@ -19,7 +19,7 @@ import math
 import numpy as np
 from scipy import optimize
 
-from sailmujoco.forces.foil import saoud_normal_coefficient
+from sailmujoco.forces.sail import saoud_normal_coefficient
 from sailmujoco.frames import wrap_angle
 
 from .saoud_model import (

@@ -4,7 +4,7 @@ The sail law has three parts.
 
 1. **Off-line look-up tables** (§2.1-2.2, eqs. 60-63). For the apparent-wind angle at the sail
    CE, beta_ws, on a 1 deg grid, every feasible sail angle lambda (eqs. 61-62, with lambda_sat)
-   is traversed with *our* sail force model (:mod:`sailmujoco.forces.foil`, the same functions
+   is traversed with *our* sail force model (:mod:`sailmujoco.forces.sail`, the same functions
    the physics kernel calls) for a unit apparent wind. This gives the relative surge force
    S_x'r = S_x' / V_ws^2 and relative roll moment S_phi_r = S_phi / V_ws^2. Stored per row:
    lambda_100 (maximum surge force) and lambda_67, lambda_33, lambda_0 (maximum surge force

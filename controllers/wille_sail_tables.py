@@ -2,7 +2,7 @@
 
 * **Off-line look-up tables** (§2.1-2.2, eqs. 60-63). For the apparent-wind angle at the sail
   CE, beta_ws, on a 1 deg grid, every feasible sail angle lambda (eqs. 61-62, with lambda_sat)
-  is traversed with *our* sail force model (:mod:`sailmujoco.forces.foil`, the same functions
+  is traversed with *our* sail force model (:mod:`sailmujoco.forces.sail`, the same functions
   the physics kernel calls) for a unit apparent wind. This gives the relative surge force
   S_x'r = S_x' / V_ws^2 and relative roll moment S_phi_r = S_phi / V_ws^2. Stored per row:
   lambda_100 (maximum surge force) and lambda_67, lambda_33, lambda_0 (maximum surge force
@@ -30,7 +30,7 @@ beta_ws = 0: wind from astern; +pi/2: the air blows to starboard, i.e. the wind 
 port; +-pi: head to wind. beta_ws > 0 (wind from port) heels the boat to starboard (phi > 0)
 and needs lambda <= 0 (boom to starboard); beta_ws < 0 is the mirror image. Wille's lambda and
 our sail angle are the same number (trailing edge to port positive, :mod:`sailmujoco.frames`).
-Our angle of attack (foil.py) is minus Wille's alpha_s of eq. 28; the tables never use either.
+Our angle of attack (forces/foil_geometry.py) is minus Wille's alpha_s of eq. 28; the tables never use either.
 S_x' is the body-x force (the same axis in FRD and FLU); S_phi = h1 S_y'(FRD) (eq. 29, third
 row) is the roll moment about CO, which in FLU is -h1 F_y: positive heels to starboard, our
 heel sign. The tables hold the *whole* force of our model (our flat AR 5 sail, C_N and C_T),
@@ -56,7 +56,7 @@ import numpy as np
 
 from sailmujoco.boat.catalogue import wille_yacht
 from sailmujoco.boat.params import BoatParams
-from sailmujoco.forces.foil import sail_forces
+from sailmujoco.forces.sail import sail_forces
 
 # ---- numbers of Wille (2016b) §2 and ours ---------------------------------------------------
 FRACTIONS = (0.67, 0.33, 0.0)  # §2.2, moment limits of lambda_67, lambda_33, lambda_0

@@ -12,8 +12,8 @@ import pytest
 
 from sailmujoco import suite
 from sailmujoco.boat.catalogue import BOATS
+from sailmujoco.measurement.observation import measure
 from sailmujoco.physics import BoatPhysics, SimulationStopped
-from sailmujoco.tasks.base import measure
 
 BEFORE, AFTER = 4, 4  # control steps before the copy, and compared after it
 

@@ -23,7 +23,7 @@ from sailmujoco.controllers.wille_roll import SailCommand
 
 from sailmujoco import suite
 from sailmujoco.frames import saoud_theta_v, yaw_from_heading
-from sailmujoco.reference.viel import psi_aw_from_awa, psi_tw_from_direction
+from sailmujoco.reference.viel_model import psi_aw_from_awa, psi_tw_from_direction
 
 
 # ---- the readable references (numpy forms of the fast paths) ------------------------------

@@ -12,7 +12,7 @@ import pytest
 from conftest import load
 
 from sailmujoco.boat.catalogue import saoud_robot, wille_yacht
-from sailmujoco.forces import boat, foil
+from sailmujoco.forces import boat, finite_wing, foil_sections, sail
 from sailmujoco.forces.wind import WindConfig
 
 TWO_PI = 2.0 * math.pi
@@ -34,7 +34,7 @@ def vc_cd_max(aspect_ratio):
 
 
 def table():
-    t = foil.naca0015()
+    t = foil_sections.naca0015()
     return t.alpha, t.log_re, t.cl, t.cd
 
 
@@ -42,26 +42,26 @@ def table():
 
 def test_helmbold_slope_limits_and_value_at_ar5():
     # lifting line a0 / (1 + a0/(pi A)) for large A, Jones' slender wing pi A / 2 for small A
-    assert foil.helmbold_lift_slope(TWO_PI, 200.0) == pytest.approx(TWO_PI / (1 + 2 / 200.0), rel=1e-4)
-    assert foil.helmbold_lift_slope(TWO_PI, 0.02) == pytest.approx(math.pi * 0.02 / 2, rel=1e-3)
-    a5 = foil.helmbold_lift_slope(TWO_PI, 5.0)
+    assert finite_wing.helmbold_lift_slope(TWO_PI, 200.0) == pytest.approx(TWO_PI / (1 + 2 / 200.0), rel=1e-4)
+    assert finite_wing.helmbold_lift_slope(TWO_PI, 0.02) == pytest.approx(math.pi * 0.02 / 2, rel=1e-3)
+    a5 = finite_wing.helmbold_lift_slope(TWO_PI, 5.0)
     assert a5 == pytest.approx(TWO_PI / (math.sqrt(1 + 0.4**2) + 0.4), rel=1e-14)
     assert 4.2 < a5 < TWO_PI / 1.4  # below lifting line's 4.49 /rad, well below Saoud's 7.15
-    assert foil.viterna_corrigan_cd_max(5.0) == pytest.approx(1.20)
+    assert finite_wing.viterna_corrigan_cd_max(5.0) == pytest.approx(1.20)
 
 
 def test_packed_constants_are_the_formulas():
     p = wille_yacht()
-    block = foil.pack_foil_block(p)
-    assert block[foil.FB_SAIL_SLOPE] == pytest.approx(helmbold(TWO_PI, 5.0), rel=1e-14)
-    assert block[foil.FB_SAIL_CD_MAX] == pytest.approx(1.20, rel=1e-14)
+    block = finite_wing.pack_foil_block(p)
+    assert block[finite_wing.FB_SAIL_SLOPE] == pytest.approx(helmbold(TWO_PI, 5.0), rel=1e-14)
+    assert block[finite_wing.FB_SAIL_CD_MAX] == pytest.approx(1.20, rel=1e-14)
     # keel: Appendix A Asp_k = 1.75, doubled by the hull as an end plate
-    assert block[foil.FB_KEEL_AR] == pytest.approx(3.5)
-    assert block[foil.FB_KEEL_RATIO] == pytest.approx(helmbold(TWO_PI, 3.5) / TWO_PI, rel=1e-14)
-    assert block[foil.FB_KEEL_CD_MAX] == pytest.approx(vc_cd_max(3.5))
+    assert block[finite_wing.FB_KEEL_AR] == pytest.approx(3.5)
+    assert block[finite_wing.FB_KEEL_RATIO] == pytest.approx(helmbold(TWO_PI, 3.5) / TWO_PI, rel=1e-14)
+    assert block[finite_wing.FB_KEEL_CD_MAX] == pytest.approx(vc_cd_max(3.5))
     # rudder: Asp_r = 2.97, no end plate
-    assert block[foil.FB_RUDDER_AR] == pytest.approx(2.97)
-    assert block[foil.FB_RUDDER_RATIO] == pytest.approx(helmbold(TWO_PI, 2.97) / TWO_PI, rel=1e-14)
+    assert block[finite_wing.FB_RUDDER_AR] == pytest.approx(2.97)
+    assert block[finite_wing.FB_RUDDER_RATIO] == pytest.approx(helmbold(TWO_PI, 2.97) / TWO_PI, rel=1e-14)
 
 
 # ---- sail --------------------------------------------------------------------------------------
@@ -70,29 +70,30 @@ def test_finite_sail_slope_at_zero_incidence():
     slope = helmbold(TWO_PI, 5.0)
     h = 1e-6
     for tangential in (False, True):
-        cp = foil.finite_sail_coefficients(h, tangential, 0.3, math.radians(15), 0.005, slope, 1.2)[0]
-        cm = foil.finite_sail_coefficients(-h, tangential, 0.3, math.radians(15), 0.005, slope, 1.2)[0]
+        cp = sail.finite_sail_coefficients(h, tangential, 0.3, math.radians(15), 0.005, slope, 1.2)[0]
+        cm = sail.finite_sail_coefficients(-h, tangential, 0.3, math.radians(15), 0.005, slope, 1.2)[0]
         assert (cp - cm) / (2 * h) == pytest.approx(slope, rel=1e-9)
-    assert foil.finite_sail_normal_coefficient(0.0, slope, math.radians(15), 1.2) == 0.0
+    assert finite_wing.finite_sail_normal_coefficient(0.0, slope, math.radians(15), 1.2) == 0.0
 
 
 def test_finite_sail_normal_force_at_90_deg_is_viterna_corrigan():
     slope = helmbold(TWO_PI, 5.0)
-    c_n = foil.finite_sail_normal_coefficient(1.0, slope, math.radians(15), vc_cd_max(5.0))
+    c_n = finite_wing.finite_sail_normal_coefficient(1.0, slope, math.radians(15), vc_cd_max(5.0))
     assert c_n == pytest.approx(1.20, abs=1e-12)  # Hoerner's flat plate of AR 5: about 1.2
-    assert foil.finite_sail_normal_coefficient(-1.0, slope, math.radians(15), 1.2) == pytest.approx(-1.20)
+    assert finite_wing.finite_sail_normal_coefficient(-1.0, slope, math.radians(15), 1.2) == \
+        pytest.approx(-1.20)
 
 
 def test_finite_sail_stalls_and_is_continuous():
     slope, stall = helmbold(TWO_PI, 5.0), math.radians(15)
     x_s = math.sin(stall)
-    below = foil.finite_sail_normal_coefficient(x_s * (1 - 1e-9), slope, stall, 1.2)
-    above = foil.finite_sail_normal_coefficient(x_s * (1 + 1e-9), slope, stall, 1.2)
+    below = finite_wing.finite_sail_normal_coefficient(x_s * (1 - 1e-9), slope, stall, 1.2)
+    above = finite_wing.finite_sail_normal_coefficient(x_s * (1 + 1e-9), slope, stall, 1.2)
     assert below == pytest.approx(slope * x_s, rel=1e-8) and above == pytest.approx(below, rel=1e-6)
     # past the stall the normal force first falls (a stall), then rises to C_D,max
-    assert foil.finite_sail_normal_coefficient(math.sin(math.radians(25)), slope, stall, 1.2) < below
+    assert finite_wing.finite_sail_normal_coefficient(math.sin(math.radians(25)), slope, stall, 1.2) < below
     xs = np.linspace(-1, 1, 2001)
-    cn = np.array([foil.finite_sail_normal_coefficient(x, slope, stall, 1.2) for x in xs])
+    cn = np.array([finite_wing.finite_sail_normal_coefficient(x, slope, stall, 1.2) for x in xs])
     assert np.all(np.abs(np.diff(cn)) < 0.01)  # no jumps
     assert cn == pytest.approx(-cn[::-1], abs=1e-12)  # odd in sin(alpha)
 
@@ -129,9 +130,9 @@ def test_hydrofoil_finite_slope_at_zero_incidence(aspect_ratio):
     """C_L slope = the table's 2-D slope times Helmbold's a/a0 (the table is linear to 3 deg)."""
     ratio = helmbold(TWO_PI, aspect_ratio) / TWO_PI
     h = math.radians(1.0)  # 3-D angle: the section angle h * ratio stays inside 0-3 deg
-    cp = foil.finite_hydrofoil_coefficients(h, 1e6, ratio, aspect_ratio, vc_cd_max(aspect_ratio),
+    cp = finite_wing.finite_hydrofoil_coefficients(h, 1e6, ratio, aspect_ratio, vc_cd_max(aspect_ratio),
                                             math.radians(20), 0.09, *table())[0]
-    cm = foil.finite_hydrofoil_coefficients(-h, 1e6, ratio, aspect_ratio, vc_cd_max(aspect_ratio),
+    cm = finite_wing.finite_hydrofoil_coefficients(-h, 1e6, ratio, aspect_ratio, vc_cd_max(aspect_ratio),
                                             math.radians(20), 0.09, *table())[0]
     assert (cp - cm) / (2 * h) == pytest.approx(SK_SLOPE_1E6 * ratio, rel=1e-9)
     # the chosen formula with the table's 6.30 /rad in place of 2 pi: within 0.3 %
@@ -142,16 +143,17 @@ def test_hydrofoil_finite_slope_at_zero_incidence(aspect_ratio):
 def test_symmetric_hydrofoil_gives_no_lift_at_zero_and_is_odd(re):
     ratio = helmbold(TWO_PI, 3.5) / TWO_PI
     args = (re, ratio, 3.5, vc_cd_max(3.5), math.radians(20), 0.09, *table())
-    assert foil.finite_hydrofoil_coefficients(0.0, *args)[0] == 0.0
+    assert finite_wing.finite_hydrofoil_coefficients(0.0, *args)[0] == 0.0
     for a in np.radians([2.0, 15.0, 40.0, 89.0, 120.0, 175.0]):
-        p, m = foil.finite_hydrofoil_coefficients(a, *args), foil.finite_hydrofoil_coefficients(-a, *args)
+        p = finite_wing.finite_hydrofoil_coefficients(a, *args)
+        m = finite_wing.finite_hydrofoil_coefficients(-a, *args)
         assert p[0] == pytest.approx(-m[0], abs=1e-12) and p[1] == pytest.approx(m[1], abs=1e-12)
 
 
 def test_hydrofoil_post_stall_is_viterna_corrigan_not_the_2d_table():
     for aspect_ratio in (3.5, 2.97):
         ratio = helmbold(TWO_PI, aspect_ratio) / TWO_PI
-        c_l, c_d = foil.finite_hydrofoil_coefficients(math.pi / 2, 1e6, ratio, aspect_ratio,
+        c_l, c_d = finite_wing.finite_hydrofoil_coefficients(math.pi / 2, 1e6, ratio, aspect_ratio,
                                                       vc_cd_max(aspect_ratio), math.radians(20), 0.09,
                                                       *table())
         assert c_l == pytest.approx(0.0, abs=1e-12)
@@ -160,8 +162,8 @@ def test_hydrofoil_post_stall_is_viterna_corrigan_not_the_2d_table():
     ratio = helmbold(TWO_PI, 3.5) / TWO_PI
     args = (1e6, ratio, 3.5, vc_cd_max(3.5), math.radians(20), 0.09, *table())
     for a in (math.radians(20) / ratio, math.pi / 2, math.pi):
-        lo = np.array(foil.finite_hydrofoil_coefficients(a - 1e-9, *args))
-        hi = np.array(foil.finite_hydrofoil_coefficients(a + 1e-9, *args))
+        lo = np.array(finite_wing.finite_hydrofoil_coefficients(a - 1e-9, *args))
+        hi = np.array(finite_wing.finite_hydrofoil_coefficients(a + 1e-9, *args))
         assert np.max(np.abs(hi - lo)) < 1e-6
 
 
@@ -183,7 +185,7 @@ def test_kernel_keel_lift_slope_and_side_force_at_90_deg():
         return keel_force(beta) @ lift_dir / q_area
 
     h = math.radians(0.5)
-    slope = (lift_coefficient(h) - lift_coefficient(-h)) / (2 * h)  # alpha = beta (forces/foil.py)
+    slope = (lift_coefficient(h) - lift_coefficient(-h)) / (2 * h)  # alpha = beta (forces/foil_geometry.py)
     assert slope == pytest.approx(SK_SLOPE_1E6 * helmbold(TWO_PI, 2 * 1.75) / TWO_PI, rel=1e-9)
     # broadside: pure drag, Viterna-Corrigan's C_D,max of the keel's effective aspect ratio
     f = keel_force(math.pi / 2)
@@ -198,7 +200,7 @@ def test_paper_sail_force_is_saoud_polynomial():
     chord, normal, out = np.zeros(3), np.zeros(3), np.zeros(3)
     for alpha_deg in (3.0, 20.0, 70.0):
         flow = -5.0 * np.array([math.cos(math.radians(alpha_deg)), -math.sin(math.radians(alpha_deg)), 0.0])
-        speed, alpha, c_n, c_t = foil.flat_sail_force(flow, 0.0, False, 0.3, 0.26, 0.005, 1.225, 2.0,
+        speed, alpha, c_n, c_t = sail.flat_sail_force(flow, 0.0, False, 0.3, 0.26, 0.005, 1.225, 2.0,
                                                       chord, normal, out)
         x = abs(math.sin(alpha))
         assert x == pytest.approx(math.sin(math.radians(alpha_deg)))
@@ -208,7 +210,7 @@ def test_paper_sail_force_is_saoud_polynomial():
         assert out @ normal == pytest.approx(-0.5 * 1.225 * 25.0 * 2.0 * expected, rel=1e-12)
         # sail_force with no finite slope is the same call, bit for bit
         again = np.zeros(3)
-        assert foil.sail_force(flow, 0.0, False, 0.3, 0.26, 0.005, 1.225, 2.0, 0.0, 1.2, chord, normal,
+        assert sail.sail_force(flow, 0.0, False, 0.3, 0.26, 0.005, 1.225, 2.0, 0.0, 1.2, chord, normal,
                                again) == (speed, alpha, c_n, c_t)
         assert np.array_equal(again, out)
 
@@ -265,8 +267,8 @@ def test_downwash_off_or_without_keel_leaves_the_rudder_as_before():
     downwash_state(physics)
     p = physics.params
     speed = 3.0
-    t = foil.naca0015()
-    c_l, c_d = foil.hydrofoil_coefficients(math.radians(4.0), speed * p.rudder.chord / p.nu_water,
+    t = foil_sections.naca0015()
+    c_l, c_d = foil_sections.hydrofoil_coefficients(math.radians(4.0), speed * p.rudder.chord / p.nu_water,
                                            2.97, 0.15, t.alpha, t.log_re, t.cl, t.cd)
     w_hat = -physics.data.ptr.qvel[0:3] / speed
     q_area = 0.5 * p.rho_water * speed**2 * p.rudder.area
@@ -284,6 +286,6 @@ def test_downwash_off_or_without_keel_leaves_the_rudder_as_before():
 def test_robot_downwash_factor():
     p = saoud_robot()
     x, s = p.keel.x - p.rudder.x, 0.25 * math.pi * p.keel.span
-    assert foil.downwash_factor(x, p.keel.span) == pytest.approx(1 + x / math.hypot(x, s))
-    assert foil.downwash_factor(0.0, 1.0) == 1.0  # Prandtl: at the lifting line, half the far wake
-    assert foil.downwash_factor(1e6, 1.0) == pytest.approx(2.0)
+    assert finite_wing.downwash_factor(x, p.keel.span) == pytest.approx(1 + x / math.hypot(x, s))
+    assert finite_wing.downwash_factor(0.0, 1.0) == 1.0  # Prandtl: at the lifting line, half the far wake
+    assert finite_wing.downwash_factor(1e6, 1.0) == pytest.approx(2.0)

@@ -2,7 +2,7 @@
 one, bit for bit; every world meets the World protocol.
 
 ``BoatPhysics.measure`` (one rotation, the physics' arrays) against
-:func:`sailmujoco.tasks.base.measure` (the named accessors, the definition of the observation)
+:func:`sailmujoco.measurement.observation.measure` (the named accessors, the definition of the observation)
 and the record against the record built from the accessors (kept here), on
 real trajectories: heeled and moving in gusts, with a current, 4 and 6 DOF, both
 hydrostatics, a sheeted sail, and the states the tasks' own episodes pass through.
@@ -15,11 +15,11 @@ import pytest
 
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig
+from sailmujoco.measurement.observation import measure
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielWorld
 from sailmujoco.reference.wille import Wille4DOF
-from sailmujoco.tasks.base import PaperPhysics, measure
-from sailmujoco.tasks.world import VielPhysics, World
+from sailmujoco.tasks.world import PaperPhysics, VielPhysics, World
 
 
 def assert_identical(new, ref, path="observation"):

@@ -12,7 +12,7 @@ import pytest
 
 from sailmujoco.forces.wind import WindConfig, WindField
 from sailmujoco.physics import SimulationStopped
-from sailmujoco.reference import viel, wille_model
+from sailmujoco.reference import viel_model, wille_model
 from sailmujoco.reference.hypot import hypot
 from sailmujoco.reference.integrators import integrate
 from sailmujoco.reference.viel import VielParams, VielWorld
@@ -47,7 +47,7 @@ import json, math
 import numpy as np
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.reference import viel, wille_model
+from sailmujoco.reference import viel_model, wille_model
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.reference.wille import Wille4DOF
 wind = WindConfig(speed=8, direction_from=1, seed=1)  # an int speed, as a user may write it
@@ -62,7 +62,7 @@ for law in ("linear", "printed"):
     world.reset([0, 0, 1, 1, 0, 0], time=3)
     world.step([0.1, 0.5], 0.01)
     world.step(np.array([0, 1]), 1)
-print(json.dumps([len(wille_model.advance.signatures), len(viel.advance.signatures)]))
+print(json.dumps([len(wille_model.advance.signatures), len(viel_model.advance.signatures)]))
 """
 
 
@@ -145,7 +145,7 @@ def test_viel_theta_infinite_is_a_runaway_and_forces_raise():
     with pytest.raises(FloatingPointError, match=r"the state ran away: math domain error"):
         world.step([0.0, 0.0], 0.1)
     with pytest.raises(ValueError, match="math domain error"):
-        viel.model_rates(VielParams(), [0, 0, math.inf, 1, 0, 0], 0.1, 0.2, 5.0, 1.0)
+        viel_model.model_rates(VielParams(), [0, 0, math.inf, 1, 0, 0], 0.1, 0.2, 5.0, 1.0)
 
 
 def test_packed_parameters_follow_a_new_boat_or_switch():
@@ -157,4 +157,4 @@ def test_packed_parameters_follow_a_new_boat_or_switch():
     assert world._packed()[wille_model.RIGID] == 1.0
     w = VielWorld()
     w.params = VielParams(p5=1000.0)
-    assert w._packed()[viel.P5] == 1000.0
+    assert w._packed()[viel_model.P5] == 1000.0

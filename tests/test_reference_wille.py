@@ -112,7 +112,7 @@ def test_calm_water_terminal_speed_by_hand():
     from scipy.optimize import brentq
 
     from sailmujoco.forces.damping import surge_resistance
-    from sailmujoco.forces.foil import hydrofoil_coefficients, naca0015
+    from sailmujoco.forces.foil_sections import hydrofoil_coefficients, naca0015
 
     p = get_boat("wille_yacht")
     paper = Wille4DOF(params=p, wind=CALM, switches=ForceSwitches(sail=False))

@@ -22,7 +22,7 @@ from sailmujoco.controllers.saoud import (
 )
 
 from sailmujoco import suite, sweep
-from sailmujoco.forces import foil
+from sailmujoco.forces import foil_geometry, sail
 from sailmujoco.frames import apparent_wind_angle
 
 DEG = math.radians(1.0)
@@ -39,7 +39,7 @@ def _constraint(delta, phi, theta_v, speed, l_phi):
     """beta sin(phi) + f(sin alpha_s) cos(delta_s), zero on the roll equilibrium (eq. 5)."""
     x = math.cos(theta_v) * math.sin(delta) - math.sin(theta_v) * math.cos(phi) * math.cos(delta)
     beta = SaoudParams().beta(l_phi, speed)
-    return beta * math.sin(phi) + foil.saoud_normal_coefficient(x) * math.cos(delta)
+    return beta * math.sin(phi) + sail.saoud_normal_coefficient(x) * math.cos(delta)
 
 
 def _random_cases(n, seed):
@@ -126,7 +126,7 @@ def test_head_to_wind_and_running_limits():
     assert head.cost == 0.0 and head.phi == 0.0 and abs(head.delta) < 1e-12
     run = optimal_sail(math.pi, 6.0, 0.5)
     assert abs(abs(run.delta) - math.pi / 2) < 1e-9 and abs(run.phi) < 1e-9
-    assert run.cost == pytest.approx(-foil.saoud_normal_coefficient(1.0), rel=1e-9)
+    assert run.cost == pytest.approx(-sail.saoud_normal_coefficient(1.0), rel=1e-9)
 
 
 @pytest.mark.parametrize("kwargs", [dict(apparent_speed=0.0), dict(l_phi=-0.1), dict(phi_max=0.0),
@@ -297,13 +297,13 @@ def test_conversion_matches_the_library_sail_force(rng):
         chord = np.array([math.cos(lam), -math.sin(lam), 0.0])
         normal = np.array([math.sin(lam), math.cos(lam), 0.0])
         flow = np.array([-v[0], -v[1], 0.0])  # the air relative to the sail
-        wc, wn, speed, alpha = foil.section_flow(flow, chord, normal)
-        c_n, c_t = foil.sail_coefficients(alpha, False, 0.3, 0.26, 0.005)
+        wc, wn, speed, alpha = foil_geometry.section_flow(flow, chord, normal)
+        c_n, c_t = sail.sail_coefficients(alpha, False, 0.3, 0.26, 0.005)
         q_area = 0.5 * params.rho_air * speed**2 * params.sail_area
         ours = np.zeros(3)
-        foil.foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, ours)
+        foil_geometry.foil_world_force(q_area * c_t, -q_area * c_n, chord, normal, ours)
         sin_alpha_s = -(-v[0] * math.sin(delta) + v[1] * math.cos(delta)) / np.hypot(*v)  # §IV
-        theirs = params.lambda_s * foil.saoud_normal_coefficient(sin_alpha_s) * (v @ v) * np.array(
+        theirs = params.lambda_s * sail.saoud_normal_coefficient(sin_alpha_s) * (v @ v) * np.array(
             [-math.sin(delta), math.cos(delta), 0.0])
         np.testing.assert_allclose(ours, theirs, atol=1e-9 * max(1.0, np.abs(theirs).max()))
 
@@ -324,7 +324,7 @@ def test_sail_goes_to_leeward(source):
         boom = -np.array([math.cos(opt.delta), math.sin(opt.delta)])  # -i_s in the body
         assert boom[1] > 0.0 and math.sin(lam) > 0.0  # our trailing edge (-cos l, sin l): to port
         # Saoud §IV: F_s = lambda_s C_N(alpha_s) |V|^2 j_s, j_s = (-sin delta_s, cos delta_s)
-        c_n = foil.saoud_normal_coefficient(math.sin(opt.alpha))
+        c_n = sail.saoud_normal_coefficient(math.sin(opt.alpha))
         force = SaoudParams().lambda_s * c_n * 36.0 * np.array([-math.sin(opt.delta), math.cos(opt.delta)])
         assert force[0] > 0.0 and force[1] > 0.0
         law.reset()

@@ -10,8 +10,9 @@ from test_reports import layout_problems
 
 from sailmujoco import study, sweep
 from sailmujoco.reference.viel import VielWorld
-from sailmujoco.tasks.base import SailEnvironment
-from sailmujoco.tasks.position import CASES, VielPhysics
+from sailmujoco.tasks.environment import SailEnvironment
+from sailmujoco.tasks.position import CASES
+from sailmujoco.tasks.world import VielPhysics
 
 
 @pytest.fixture(scope="module")

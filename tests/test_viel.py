@@ -15,19 +15,18 @@ from scipy.optimize import brentq
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig, WindField
 from sailmujoco.frames import apparent_wind_angle, heading_from_yaw, wind_velocity
-from sailmujoco.reference.viel import (
+from sailmujoco.reference.viel import VielWorld, observation_from_world
+from sailmujoco.reference.viel_model import (
     VielParams,
-    VielWorld,
     action_from_viel,
     awa_from_psi_aw,
     direction_from_psi_tw,
-    observation_from_world,
     psi_aw_from_awa,
     psi_tw_from_direction,
     rudder_forces,
     viel_from_action,
 )
-from sailmujoco.tasks.position import VielPhysics
+from sailmujoco.tasks.world import VielPhysics
 
 P = VielParams()
 FROM_SOUTH = math.pi  # compass bearing the wind comes from: Viel's psi_tw = pi/2 (blows north)

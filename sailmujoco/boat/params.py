@@ -79,7 +79,7 @@ class Sail:
     The centre of effort (CE) lies ``ce_aft`` behind the mast along the boom and ``ce_height``
     above the waterline; luff and foot follow from area and aspect ratio (a triangle: CE at a
     third of the luff above the boom). The last three fields shape the tangential-force model
-    of the flat sail (:func:`sailmujoco.forces.foil.sail_coefficients`).
+    of the flat sail (:func:`sailmujoco.forces.sail.sail_coefficients`).
 
     Parameters
     ----------

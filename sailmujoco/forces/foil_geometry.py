@@ -1,7 +1,26 @@
 """Geometry of a foil section: the flow in the section plane, lift and drag on its axes.
 
-The conventions (chord axis c, normal axis n, angle of attack alpha, F = q A (C_T c - C_N n))
-are those of :mod:`sailmujoco.forces.foil`, which describes them for all three foils.
+One convention for all three foils (the keel, the rudder and the sail); the keel's and the
+rudder's forces are assembled in :mod:`sailmujoco.forces.hull_foils`, the sail's in
+:mod:`sailmujoco.forces.sail`.
+
+Geometry of a foil section
+    chord axis ``c``: in the section plane, pointing from the trailing edge to the leading edge
+    (forward for the keel and for an undeflected rudder, from the clew to the mast for the sail);
+    normal axis ``n`` = span x c (to port when undeflected); span axis up the mast/keel.
+    ``w`` is the velocity of the fluid relative to the foil (where it flows to), projected on
+    the section plane: spanwise flow is dropped (the cross-flow principle), which is how the
+    force stays in the foil's own plane when the boat heels.
+Angle of attack
+    The fluid comes from d = -w. alpha = atan2(d.n, d.c), so alpha > 0 when the fluid comes
+    from the +n side. This is Wille's alpha = -beta + pi (eqs. 28, 32, 35) written in the foil
+    frame. Saoud's angle (§IV) has the opposite sign, alpha = -alpha_s, because his sail angle
+    turns the other way (delta_s = -lambda, see controllers/saoud.py); the forces agree.
+Lift and drag
+    F = q A (C_L (span x w_hat) + C_D w_hat), q = rho |w|^2 / 2 (Wille eqs. 21-22): drag along
+    the flow, lift perpendicular to it, away from the side the fluid comes from.
+    In chord/normal components this is F = q A (C_T c - C_N n) with
+    C_T = C_L sin(alpha) - C_D cos(alpha), C_N = C_L cos(alpha) + C_D sin(alpha) (Saoud §IV).
 """
 
 from __future__ import annotations

@@ -10,13 +10,9 @@ from __future__ import annotations
 import math
 
 from ..step.jit import kernel
-from .foil import (
-    finite_hydrofoil_coefficients,
-    foil_world_force,
-    hydrofoil_coefficients,
-    lift_drag_components,
-    section_flow,
-)
+from .finite_wing import finite_hydrofoil_coefficients
+from .foil_geometry import foil_world_force, lift_drag_components, section_flow
+from .foil_sections import hydrofoil_coefficients
 
 
 @kernel
@@ -51,8 +47,8 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
     (cos, -sin, 0), normal (sin, cos, 0). The flow is the water's velocity relative to that
     point (``water_b`` less the hull's motion, the foil's own turn rate neglected); C_L, C_D from
     the section table at the chord Reynolds number, corrected for the aspect ratio
-    (:func:`sailmujoco.forces.foil.hydrofoil_coefficients`), or with ``finite`` the finite
-    wing's (:func:`sailmujoco.forces.foil.finite_hydrofoil_coefficients`). ``downwash``, when
+    (:func:`sailmujoco.forces.foil_sections.hydrofoil_coefficients`), or with ``finite`` the finite
+    wing's (:func:`sailmujoco.forces.finite_wing.finite_hydrofoil_coefficients`). ``downwash``, when
     not 0, turns the inflow about the span by that angle against the angle of attack (the
     keel's downwash at the rudder): alpha -> alpha - downwash, same speed; lift and drag follow
     the turned flow.
@@ -71,7 +67,7 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
         The water's velocity at the foil (the current, plus the waves' orbital velocity in a
         sea; m/s), the velocity of CO (m/s) and the angular velocity (rad/s), body frame.
     alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+        The section table (:func:`sailmujoco.forces.foil_sections.section_coefficients`).
     zero3, point, flow, chord, normal : numpy.ndarray, shape (3,)
         A zero vector (no point velocity beyond the hull's); work arrays, left holding this
         foil's point (m), flow (m/s), chord and normal axes (body frame).
@@ -81,7 +77,7 @@ def hull_foil_force(angle, x, z, chord_length, aspect_ratio, thickness, area, rh
         The finite-wing coefficients instead of Wille's eqs. 23-24.
     lift_ratio, aspect_ratio_e, cd_max, match_angle : float
         The finite wing's a/a0 (-), effective aspect ratio (-), C_D,max (-) and matching angle
-        (rad), from the boat's ``FB_*`` block (:func:`~sailmujoco.forces.foil.pack_foil_block`).
+        (rad), from the boat's ``FB_*`` block (:func:`~sailmujoco.forces.finite_wing.pack_foil_block`).
     downwash : float
         Inflow turn epsilon, rad (0: none).
 

@@ -3,7 +3,7 @@
 Saoud et al. (2015) §VII-A's C_N of the flat AR 5 sail, the tangential coefficient this
 project models for it, the finite-wing C_N (``foils = "finite"``), and the sail force in the
 frame of the flow handed in. The foil frame and the sign of alpha are those of
-:mod:`sailmujoco.forces.foil`.
+:mod:`sailmujoco.forces.foil_geometry`.
 """
 
 from __future__ import annotations
@@ -28,7 +28,7 @@ def saoud_normal_coefficient(x):
     Parameters
     ----------
     x : float
-        sin(alpha), alpha the sail's angle of attack (foil frame of :mod:`sailmujoco.forces.foil`).
+        sin(alpha), alpha the sail's angle of attack (foil frame of :mod:`sailmujoco.forces.foil_geometry`).
     """
     ax = abs(x)
     p1, p2, p3, p4, p5 = 7.15, -23.07, 39.45, -33.79, 11.52
@@ -55,7 +55,7 @@ def sail_coefficients(alpha, tangential, suction_efficiency, suction_stall, fric
     Parameters
     ----------
     alpha : float
-        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil`).
+        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil_geometry`).
     tangential : bool
         Whether the sail has a tangential coefficient; False sets C_T = 0 exactly.
     suction_efficiency : float
@@ -244,7 +244,7 @@ def finite_sail_coefficients(alpha, tangential, suction_efficiency, suction_stal
     Parameters
     ----------
     alpha : float
-        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil`).
+        Angle of attack, rad (foil frame of :mod:`sailmujoco.forces.foil_geometry`).
     tangential : bool
         Whether the sail has a tangential coefficient; False sets C_T = 0 exactly.
     suction_efficiency : float

@@ -1,4 +1,4 @@
-"""Windage: the air drag of the hull's topsides and of the mast (the sail is forces/foil.py).
+"""Windage: the air drag of the hull's topsides and of the mast (the sail is forces/sail.py).
 
 Neither Wille's nor Saoud's model has it; Viel's has it as p1 a_tw^2 on the true wind (eqs.
 4-5). Here it acts on the apparent wind at each element, with the drag areas taken from the

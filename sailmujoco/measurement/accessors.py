@@ -8,10 +8,10 @@ outputs (``_terms``, ``_diag``) after bringing them up to the current state
 (``_ensure_fresh``), and the joint addresses of rudder and sail (``_idx``): members that
 :mod:`sailmujoco.physics` defines.
 
-:meth:`BoatAccessors.measure` is the boat's side of :meth:`sailmujoco.tasks.world.World.measure`:
-the observation of :func:`sailmujoco.tasks.base.measure` and the task's record, read from one
-rotation matrix and the physics' arrays (no accessor called twice, none re-deriving the
-rotation or the Euler angles), the same numbers bit for bit. :meth:`BoatAccessors.diagnostic_record`
+:meth:`BoatAccessors.truth` is the boat's side of :meth:`sailmujoco.tasks.world.World.truth`:
+its true state for :mod:`sailmujoco.measurement.observation`, read from one rotation matrix and
+the physics' arrays (no accessor called twice, none re-deriving the rotation or the Euler
+angles), the accessors' numbers bit for bit. :meth:`BoatAccessors.diagnostic_record`
 is what the assumption study measures at one step.
 """
 
@@ -24,7 +24,7 @@ import numpy as np
 
 from .. import frames
 from ..forces import boat as kernels
-from .observation import PI, euler_of, observation_dict, rotation_of, wrap, wrench_rows
+from .observation import Truth, euler_of, observation_and_record, rotation_of, wrench_rows
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 _WRENCH_KEYS, _WRENCH_ROWS = wrench_rows(kernels.TERMS)
@@ -246,21 +246,16 @@ class BoatAccessors:
         return float(self._diag[kernels.D_CN]), float(self._diag[kernels.D_CT])
 
     # ------------------------------------------------------------------ the task's measurement
-    def measure(self) -> tuple[dict, dict]:
-        """(observation, record) of the boat now.
+    def truth(self) -> Truth:
+        """The boat's true state now, for :mod:`sailmujoco.measurement.observation`.
 
-        The observation equals :func:`sailmujoco.tasks.base.measure` of the boat: the same keys
-        in the same order, shapes, dtypes and values, in plain dicts (a paper world's
-        observation is one too); the record (``t``, ``position``, ``heading``, ``heel``,
-        ``roll_rate``, ``surge``, ``course``, ``speed``) holds what the tasks' metrics read,
-        equal to the accessors' values.
+        Equal, bit for bit, to :func:`~sailmujoco.measurement.observation.accessor_truth` of
+        the boat (the accessors' values), read from one rotation matrix and the physics' arrays.
 
         Returns
         -------
-        observation : dict
-            The observation of the controllers (without the task's references).
-        record : dict
-            The task's per-step record.
+        Truth
+            The boat's true state.
         """
         d = self.data.ptr
         qpos, qvel = self._free_state()
@@ -273,7 +268,7 @@ class BoatAccessors:
         current_body = rot_t @ current
         t = d.time
         heel, pitch, yaw = euler_of(rot)
-        heading = wrap(PI / 2.0 - yaw)  # frames.heading_from_yaw
+        heading = frames.wrap_angle(math.pi / 2.0 - yaw)  # frames.heading_from_yaw
         idx = self._idx
         rudder, sail = float(d.qpos[idx[0]]), float(d.qpos[idx[2]])
 
@@ -291,22 +286,33 @@ class BoatAccessors:
 
         terms = np.zeros((_N_TERMS + 1, 6))  # with a row of zeros for a wrench the physics lacks
         terms[:_N_TERMS] = self._terms
-        observation = observation_dict(
-            body, current_body, rates, (yaw, heel, pitch, rudder, sail, heading, awa, aws), wind, t,
-            diag[_D_WIND:_D_WIND + 2].copy(), diag[_D_FLOW:_D_FLOW + 2].copy(),
-            dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)), qpos[0:2].copy(),
-            qvel[0:2].copy())
-        v0, v1 = qvel[0], qvel[1]
-        record = {"t": t, "position": qpos[0:2].copy(), "heading": heading, "heel": heel,
-                  "roll_rate": float(rates[0]), "surge": float(body[0]),
-                  "course": float(math.atan2(v1, v0)), "speed": float(np.hypot(v0, v1))}
-        return observation, record
+        return Truth(
+            time=t, position=qpos[0:2].copy(), velocity=qvel[0:2].copy(), body_velocity=body,
+            current_body=current_body, rates=rates, yaw=yaw, heel=heel, pitch=pitch, heading=heading,
+            rudder=rudder, sail=sail, apparent_wind_angle=awa, apparent_wind_speed=aws,
+            true_wind=diag[_D_WIND:_D_WIND + 2].copy(), apparent_wind_ce=diag[_D_FLOW:_D_FLOW + 2].copy(),
+            wind_speed_10=wind.config.speed, wind_direction_from=wind.direction_from(t),
+            current=np.array(current[:2], dtype=np.float64),
+            wrenches=dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)))
+
+    def measure(self) -> tuple[dict, dict]:
+        """(observation, record) of the boat now:
+        :func:`~sailmujoco.measurement.observation.observation_and_record` of its :meth:`truth`.
+
+        Returns
+        -------
+        observation : dict
+            The observation of the controllers (without the task's references).
+        record : dict
+            The task's per-step record.
+        """
+        return observation_and_record(self)
 
     def diagnostic_record(self) -> dict:
         """What the assumption study measures at one step of the boat (our frames, SI).
 
-        Read from one rotation and the force kernel's arrays (as :meth:`measure` reads the
-        observation); the named accessors (``sail_coefficients``, ``force_terms``,
+        Read from one rotation and the force kernel's arrays (as :meth:`truth` reads the
+        true state); the named accessors (``sail_coefficients``, ``force_terms``,
         ``rotation``, ``heel``, ``pitch``, ``drift_angle``, ...) give the same values bit for
         bit at a few times the cost (tests/test_assumptions.py keeps them as the reference).
 

@@ -1,13 +1,24 @@
-"""The observation every world hands a task, built from measured values.
+"""Where a world's measurement becomes the observation: one place, for every world.
 
-The observation is the dict of :func:`sailmujoco.tasks.base.measure` (the definition, from a
-world's named accessors): the keys the controllers read (``controllers/base.py``) and the
-``true_state`` of the full-state controllers. A world measures itself once per control step
-(:meth:`sailmujoco.tasks.world.World.measure`); the MuJoCo boat and Wille's paper world build
-the dict here, from one rotation matrix and the arrays they hold, with the same operations on
-the same numbers as the accessors (the same numpy and MuJoCo functions where a library
-computes a value, since numpy's SIMD transcendental functions need not agree with ``math``'s
-to the last bit), so the observation is identical bit for bit (``tests/test_measurement.py``).
+A world supplies its true state once per control step as a :class:`Truth`, its ``truth()``
+(:class:`sailmujoco.tasks.world.World`): the MuJoCo boat in
+:meth:`sailmujoco.measurement.accessors.BoatAccessors.truth`, Wille's 4-DOF paper world in
+:meth:`sailmujoco.reference.wille.Wille4DOF.truth`, Viel's 3-DOF world in
+:meth:`sailmujoco.reference.viel.VielWorld.truth`. Everything a task reads is made from it
+here, by :func:`observation_and_record`:
+
+* each key of the observation is one function of the truth, in :data:`OBSERVATION` (the keys
+  the controllers read, ``controllers/base.py``) or :data:`TRUE_STATE` (the privileged
+  ``true_state`` of the full-state controllers, followed by the world's force wrenches); a
+  sensor model (noise, a lag, a vane at the masthead) is the function of its key, and a new
+  measurement is one more entry (docs/architecture.md, "Add a measurement");
+* the task's per-step record is :func:`record`.
+
+:func:`measure` is the definition: the observation from a world's named accessors, which each
+world's faster ``truth()`` gives bit for bit (``tests/test_measurement.py``; the worlds read one
+rotation matrix and the arrays they hold, with the same numpy and MuJoCo functions where a
+library computes a value, since numpy's SIMD transcendental functions need not agree with
+``math``'s to the last bit).
 
 A task hands its ``true_state`` out as a :class:`TrueState`: read by name like a dict, and one
 float64 array to numpy and to dm_control (``dm_control.rl.control.flatten_observation``).
@@ -16,17 +27,90 @@ float64 array to numpy and to dm_control (``dm_control.rl.control.flatten_observ
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
+from operator import attrgetter
+from typing import NamedTuple
 
 import mujoco
 import numpy as np
+
+from ..frames import wrap_angle
 
 # force term of a world -> key of the observation's "<key>_wrench" (true_state)
 WRENCH_KEYS = {"sail": "sail", "keel": "keel", "rudder": "rudder", "damping": "damping",
                "added_mass": "added_mass", "hydrostatics": "restoring", "restoring": "restoring"}
 WRENCH_NAMES = ("sail", "keel", "rudder", "damping", "added_mass", "restoring")
 
-PI = math.pi
-TWO_PI = 2.0 * math.pi
+
+class Truth(NamedTuple):
+    """A world's true state at one instant, as its ``truth()`` supplies it (our frames: world x
+    east, y north, z up; body x forward, y port, z up; SI).
+
+    Parameters
+    ----------
+    time : float
+        Simulated time, s.
+    position : numpy.ndarray, shape (2,)
+        World position (east, north) of CO, m.
+    velocity : numpy.ndarray, shape (2,)
+        World velocity (east, north) of CO over ground, m/s.
+    body_velocity : numpy.ndarray, shape (3,)
+        Body-frame velocity of CO (u, v, w), m/s.
+    current_body : numpy.ndarray, shape (3,)
+        The water current in body axes, m/s.
+    rates : numpy.ndarray, shape (3,)
+        Body angular velocity (p, q, r), rad/s.
+    yaw : float
+        ENU yaw, rad, counter-clockwise from east.
+    heel : float
+        Heel, rad, positive starboard down.
+    pitch : float
+        Pitch, rad, positive bow up.
+    heading : float
+        Compass heading, rad, clockwise from north, in [-pi, pi).
+    rudder : float
+        Rudder angle, rad, positive trailing edge to port.
+    sail : float
+        Sail (boom) angle, rad, positive trailing edge to port.
+    apparent_wind_angle : float
+        Apparent wind angle at the masthead, rad, positive from starboard.
+    apparent_wind_speed : float
+        Apparent wind speed at the masthead, body x-y plane, m/s.
+    true_wind : numpy.ndarray, shape (2,)
+        World wind at the sail (east, north), m/s.
+    apparent_wind_ce : numpy.ndarray, shape (2,)
+        Air velocity relative to the sail CE, body x-y, m/s.
+    wind_speed_10 : float
+        The wind's configured mean speed at 10 m, m/s.
+    wind_direction_from : float
+        Compass bearing the true wind comes from now, rad (not wrapped).
+    current : numpy.ndarray, shape (2,)
+        The water current (east, north), m/s.
+    wrenches : dict
+        ``"<key>_wrench"`` -> body-frame wrench (Fx, Fy, Fz, Mx, My, Mz) about CO, N and N m, in
+        the order the observation lists them.
+    """
+
+    time: float
+    position: np.ndarray
+    velocity: np.ndarray
+    body_velocity: np.ndarray
+    current_body: np.ndarray
+    rates: np.ndarray
+    yaw: float
+    heel: float
+    pitch: float
+    heading: float
+    rudder: float
+    sail: float
+    apparent_wind_angle: float
+    apparent_wind_speed: float
+    true_wind: np.ndarray
+    apparent_wind_ce: np.ndarray
+    wind_speed_10: float
+    wind_direction_from: float
+    current: np.ndarray
+    wrenches: dict
 
 
 class TrueState(dict):
@@ -97,22 +181,6 @@ def wrench_rows(terms: tuple[str, ...]) -> tuple[tuple[str, ...], np.ndarray]:
     return tuple(rows), np.array(list(rows.values()), dtype=np.int64)
 
 
-def wrap(angle: float) -> float:
-    """frames.wrap_angle on a float: the same operations (fmod-based remainder) as numpy's.
-
-    Parameters
-    ----------
-    angle : float
-        Angle, rad.
-
-    Returns
-    -------
-    float
-        The angle in [-pi, pi), rad.
-    """
-    return (angle + PI) % TWO_PI - PI
-
-
 def rotation_of(qpos) -> np.ndarray:
     """The hull's body->world rotation (3x3) from its free-joint qpos: MuJoCo's mju_quat2Mat.
 
@@ -155,58 +223,179 @@ def euler_of(rot) -> tuple[float, float, float]:
     return heel, float(np.arcsin(sin_pitch)), float(np.arctan2(rot[1, 0], rot[0, 0]))
 
 
-def observation_dict(body, current_body, rates, angles, wind, t, true_wind, apparent_wind_ce,
-                     wrenches, position, velocity) -> dict:
-    """The observation dict of measure(), keys in its order, from the measured values.
+# key -> its value from the truth: a number (handed out as a 0-d float64 array) or a float64 array
+Reading = Callable[[Truth], object]
+
+OBSERVATION: dict[str, Reading] = {  # the keys the controllers read, in this order
+    "position": attrgetter("position"),  # (2,) m, world east, north
+    "velocity": attrgetter("velocity"),  # (2,) m/s over ground, world east, north
+    "heading": attrgetter("heading"),  # rad, compass
+    "heel": attrgetter("heel"),  # rad, starboard down
+    "roll_rate": lambda truth: truth.rates[0],  # rad/s, body x
+    "yaw_rate": lambda truth: truth.rates[2],  # rad/s, body z
+    "apparent_wind_angle": attrgetter("apparent_wind_angle"),  # rad, from starboard positive
+    "apparent_wind_speed": attrgetter("apparent_wind_speed"),  # m/s
+}
+
+TRUE_STATE: dict[str, Reading] = {  # the privileged true_state, then the world's wrenches
+    "u": lambda truth: truth.body_velocity[0],
+    "v": lambda truth: truth.body_velocity[1],
+    "w": lambda truth: truth.body_velocity[2],
+    "u_r": lambda truth: truth.body_velocity[0] - truth.current_body[0],  # through the water
+    "v_r": lambda truth: truth.body_velocity[1] - truth.current_body[1],
+    "yaw": attrgetter("yaw"),
+    "heel": attrgetter("heel"),
+    "pitch": attrgetter("pitch"),
+    "roll_rate": lambda truth: truth.rates[0],
+    "pitch_rate": lambda truth: truth.rates[1],
+    "yaw_rate": lambda truth: truth.rates[2],
+    "rudder": attrgetter("rudder"),
+    "sail": attrgetter("sail"),
+    "true_wind": attrgetter("true_wind"),
+    "wind_speed_10": attrgetter("wind_speed_10"),
+    "wind_direction": lambda truth: wrap_angle(truth.wind_direction_from),
+    "apparent_wind_ce": attrgetter("apparent_wind_ce"),
+    "current": attrgetter("current"),
+    "time": attrgetter("time"),
+}
+
+
+def observe(truth: Truth) -> dict:
+    """The observation of a world's truth: each key of :data:`OBSERVATION`, then
+    ``true_state`` (each key of :data:`TRUE_STATE`, then the world's wrenches).
+
+    Every number becomes a 0-d float64 array of its own (views into one array: one allocation).
 
     Parameters
     ----------
-    body : numpy.ndarray
-        Body-frame velocity of CO (u, v, w), m/s.
-    current_body : numpy.ndarray
-        The water current in body axes, m/s.
-    rates : numpy.ndarray
-        Body angular velocity (p, q, r), rad/s.
-    angles : tuple of float
-        (yaw, heel, pitch, rudder, sail, heading, apparent wind angle, apparent wind speed),
-        rad (the speed in m/s).
-    wind : sailmujoco.forces.wind.WindField
-        The world's wind (its configured speed, direction and current).
-    t : float
-        Simulated time, s.
-    true_wind : numpy.ndarray
-        World wind at the sail (east, north), m/s.
-    apparent_wind_ce : numpy.ndarray
-        Air velocity relative to the sail CE, body x-y, m/s.
-    wrenches : dict
-        ``"<key>_wrench"`` -> body-frame wrench (6,), in the order of :func:`wrench_rows`.
-    position : numpy.ndarray
-        World position (east, north) of CO, m.
-    velocity : numpy.ndarray
-        World velocity (east, north) of CO, m/s.
+    truth : Truth
+        The world's true state now (its ``truth()``).
 
     Returns
     -------
     dict
         The observation, ``true_state`` nested.
     """
-    yaw, heel, pitch, rudder, sail, heading, awa, aws = angles
-    # every scalar a 0-d float64 array of its own (views into one array: one allocation)
-    scalars = np.array([
-        body[0], body[1], body[2], body[0] - current_body[0], body[1] - current_body[1],
-        yaw, heel, pitch, rates[0], rates[1], rates[2], rudder, sail,
-        wind.config.speed, wrap(wind.direction_from(t)), t,
-        heading, heel, rates[0], rates[2], awa, aws])
-    (u, v, w, u_r, v_r, yaw_, heel_, pitch_, p, q, r, rudder_, sail_, speed_10, direction, time_,
-     heading_, heel_top, p_top, r_top, awa_, aws_) = [scalars[i, ...] for i in range(22)]
-    true_state = {
-        "u": u, "v": v, "w": w, "u_r": u_r, "v_r": v_r, "yaw": yaw_, "heel": heel_,
-        "pitch": pitch_, "roll_rate": p, "pitch_rate": q, "yaw_rate": r, "rudder": rudder_,
-        "sail": sail_, "true_wind": true_wind, "wind_speed_10": speed_10,
-        "wind_direction": direction, "apparent_wind_ce": apparent_wind_ce,
-        "current": np.array(wind.current[:2], dtype=np.float64), "time": time_}
-    true_state.update(wrenches)
-    return {
-        "position": position, "velocity": velocity, "heading": heading_,
-        "heel": heel_top, "roll_rate": p_top, "yaw_rate": r_top, "apparent_wind_angle": awa_,
-        "apparent_wind_speed": aws_, "true_state": true_state}
+    values = [read(truth) for read in TRUE_STATE.values()]
+    n_state = len(values)
+    values += [read(truth) for read in OBSERVATION.values()]
+    packed = np.array([v for v in values if not isinstance(v, np.ndarray)], dtype=np.float64)
+    views = iter([packed[i, ...] for i in range(len(packed))])
+    values = [v if isinstance(v, np.ndarray) else next(views) for v in values]
+    true_state = dict(zip(TRUE_STATE, values[:n_state], strict=True))
+    true_state.update(truth.wrenches)
+    observation = dict(zip(OBSERVATION, values[n_state:], strict=True))
+    observation["true_state"] = true_state
+    return observation
+
+
+def record(truth: Truth) -> dict:
+    """The task's per-step record of a world's truth: what the tasks' metrics read.
+
+    Parameters
+    ----------
+    truth : Truth
+        The world's true state now (its ``truth()``).
+
+    Returns
+    -------
+    dict
+        ``t`` (s), ``position`` (m, east and north), ``heading`` (rad, compass), ``heel`` (rad),
+        ``roll_rate`` (rad/s), ``surge`` (m/s), ``course`` (rad, ENU) and ``speed`` (m/s, over
+        ground).
+    """
+    east, north = truth.velocity
+    return {"t": truth.time, "position": truth.position.copy(), "heading": truth.heading,
+            "heel": truth.heel, "roll_rate": float(truth.rates[0]), "surge": float(truth.body_velocity[0]),
+            "course": float(math.atan2(north, east)), "speed": float(np.hypot(east, north))}
+
+
+def observation_and_record(world) -> tuple[dict, dict]:
+    """(observation, record) of a world now: what a task asks of it, from its ``truth()``.
+
+    Parameters
+    ----------
+    world : sailmujoco.tasks.world.World
+        The world (anything with a ``truth()`` that returns a :class:`Truth`).
+
+    Returns
+    -------
+    observation : dict
+        :func:`observe` of the truth (without the task's references).
+    record : dict
+        :func:`record` of the truth.
+    """
+    truth = world.truth()
+    return observe(truth), record(truth)
+
+
+def wrenches_of(terms: dict) -> dict:
+    """The ``"<key>_wrench"`` entries of the observation from a world's force terms by name.
+
+    Parameters
+    ----------
+    terms : dict
+        Force term name -> body-frame wrench (6,) (a world's ``force_terms()``).
+
+    Returns
+    -------
+    dict
+        ``"<key>_wrench"`` -> float64 wrench, in the order of :func:`wrench_rows`; zeros for a
+        wrench the world lacks.
+    """
+    out = {}
+    for name, key in WRENCH_KEYS.items():
+        if name in terms:
+            out[f"{key}_wrench"] = np.asarray(terms[name], dtype=np.float64)
+    for key in WRENCH_NAMES:
+        out.setdefault(f"{key}_wrench", np.zeros(6))
+    return out
+
+
+def accessor_truth(world) -> Truth:
+    """The truth of a world read from its named SI accessors: the definition that each world's
+    faster ``truth()`` equals bit for bit.
+
+    Parameters
+    ----------
+    world : object
+        A world with the named accessors of :class:`sailmujoco.physics.BoatPhysics`
+        (``rotation``, ``body_velocity``, ``heel``, ... ``force_terms``) and a ``wind``.
+
+    Returns
+    -------
+    Truth
+        The world's true state now.
+    """
+    rot = world.rotation()
+    current = world.wind.current
+    t = world.time()
+    return Truth(
+        time=t, position=np.asarray(world.position()[:2], dtype=np.float64),
+        velocity=np.asarray(world.ground_velocity(), dtype=np.float64),
+        body_velocity=world.body_velocity(), current_body=rot.T @ current,
+        rates=world.angular_velocity(), yaw=world.yaw(), heel=world.heel(), pitch=world.pitch(),
+        heading=world.heading(), rudder=world.rudder_angle(), sail=world.sail_angle(),
+        apparent_wind_angle=world.apparent_wind_angle(), apparent_wind_speed=world.apparent_wind_speed(),
+        true_wind=np.asarray(world.sail_wind()[:2], dtype=np.float64),
+        apparent_wind_ce=np.asarray(world.apparent_wind_ce()[:2], dtype=np.float64),
+        wind_speed_10=world.wind.config.speed, wind_direction_from=world.wind.direction_from(t),
+        current=np.array(current[:2], dtype=np.float64), wrenches=wrenches_of(world.force_terms()))
+
+
+def measure(world) -> dict:
+    """The observation of a world from its named accessors (:func:`accessor_truth`): the
+    definition of the observation, which the worlds' own ``truth()`` gives by a faster path.
+
+    Parameters
+    ----------
+    world : object
+        A world with the named accessors of :class:`sailmujoco.physics.BoatPhysics` and a
+        ``wind``.
+
+    Returns
+    -------
+    dict
+        The observation, ``true_state`` nested.
+    """
+    return observe(accessor_truth(world))

@@ -56,39 +56,19 @@ import numpy as np
 
 from ..forces.wind import WANDER_DT, WindConfig, WindField
 from ..frames import heading_from_yaw, wrap_angle
+from ..measurement.observation import Truth, observe
 from .integrators import DOMAIN_ERROR, INTEGRATORS, MESSAGES, STATUS_RAN_AWAY, integrate, steps_for
-from .viel_model import (  # noqa: F401  (the model's names, imported from here too)
+from .viel_model import (
     FORCE_NAMES,
-    P1,
-    P2,
-    P3,
-    P4,
-    P5,
-    P6,
-    P7,
-    P8,
-    P9,
-    P10,
-    P11,
-    PRINTED,
     RK4_MAX_STEP,
-    RUDDER_LAWS,
     STATE_NAMES,
     VielParams,
-    action_from_viel,
     advance,
     apparent_wind,
     awa_from_psi_aw,
-    direction_from_psi_tw,
     forces_kernel,
-    model_forces,
-    model_rates,
     pack_parameters,
-    psi_aw_from_awa,
-    psi_tw_from_direction,
     rates_kernel,
-    rudder_forces,
-    stage_rates,
     viel_from_action,
 )
 
@@ -352,6 +332,33 @@ class VielWorld:
         """Compass bearing the true wind comes from now [rad] (mean, schedule, oscillation, wander)."""
         return float(wrap_angle(self.wind.direction_from(self._time)))
 
+    def truth(self) -> Truth:
+        """The world's true state now, for :mod:`sailmujoco.measurement.observation`.
+
+        Planar world: heel, pitch, roll and pitch rates, ``w`` are zero; no current (the
+        water is at rest: ``u_r = u``); the apparent wind is Viel's §2.3 one, at the sail
+        and at the masthead alike (no masthead height in the model); ``wind_speed_10`` is the
+        WindConfig's mean speed at 10 m.
+
+        Returns
+        -------
+        Truth
+            The world's true state.
+        """
+        x, y, theta, v, u, omega = self._state
+        a_tw, psi_tw = wind = self.true_wind()  # once: apparent wind and wrenches take it
+        a_aw, psi_aw = self.apparent_wind(wind)
+        action = self._action
+        return Truth(
+            time=self._time, position=np.array([x, y]), velocity=self.velocity(),
+            body_velocity=np.array([v, u, 0.0]), current_body=np.zeros(3), rates=np.array([0.0, 0.0, omega]),
+            yaw=theta, heel=0.0, pitch=0.0, heading=self.heading(), rudder=action[0], sail=action[1],
+            apparent_wind_angle=awa_from_psi_aw(psi_aw), apparent_wind_speed=a_aw,
+            true_wind=np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)]),
+            apparent_wind_ce=np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)]),  # blows to
+            wind_speed_10=self.wind.config.speed, wind_direction_from=self.wind.direction_from(self._time),
+            current=np.zeros(2), wrenches=self.wrenches(wind))
+
     def wrenches(self, true_wind=None) -> dict:
         """Body (FLU) wrenches (Fx, Fy, Fz, Mx, My, Mz) [N, N m] of the eq. 4-6 terms, now.
 
@@ -381,12 +388,9 @@ class VielWorld:
 
 
 def observation_from_world(world: VielWorld, target=None) -> dict:
-    """The observation dict of :mod:`sailmujoco.controllers.base` from a :class:`VielWorld`.
+    """The observation of :mod:`sailmujoco.controllers.base` from a :class:`VielWorld`:
+    :func:`~sailmujoco.measurement.observation.observe` of its :meth:`~VielWorld.truth`.
 
-    Planar world: ``heel``, ``pitch``, roll and pitch rates, ``w`` are zero; no current
-    (``u_r = u``); the apparent wind is Viel's §2.3 one (no masthead height in the model);
-    ``wind_speed_10`` is the WindConfig's mean speed at 10 m and ``wind_direction`` the
-    compass bearing the wind comes from (as in :mod:`sailmujoco.tasks.base`).
     ``target`` (x east, y north) [m], if given, becomes ``target_position``.
 
     Parameters
@@ -396,25 +400,7 @@ def observation_from_world(world: VielWorld, target=None) -> dict:
     target : array_like, shape (2,), optional
         Target position (x east, y north), m.
     """
-    x, y, theta, v, u, omega = world.state
-    a_tw, psi_tw = wind = world.true_wind()  # once: apparent wind and wrenches take it
-    a_aw, psi_aw = world.apparent_wind(wind)
-    flow_body = np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)])  # where it blows to
-    true_wind = np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)])
-    action = world.action
-    heading = world.heading()
-    true_state = dict(
-        u=np.array(v), v=np.array(u), w=np.array(0.0), u_r=np.array(v), v_r=np.array(u),
-        yaw=np.array(theta), heel=np.array(0.0), pitch=np.array(0.0), roll_rate=np.array(0.0),
-        pitch_rate=np.array(0.0), yaw_rate=np.array(omega), rudder=np.array(action[0]),
-        sail=np.array(action[1]), true_wind=true_wind, wind_speed_10=np.array(world.wind.config.speed),
-        wind_direction=np.array(world.wind_direction()), apparent_wind_ce=flow_body,
-        current=np.zeros(2), time=np.array(world.time), **world.wrenches(wind))
-    obs = dict(
-        position=np.array([x, y]), velocity=world.velocity(), heading=np.array(heading),
-        heel=np.array(0.0), roll_rate=np.array(0.0), yaw_rate=np.array(omega),
-        apparent_wind_angle=np.array(awa_from_psi_aw(psi_aw)), apparent_wind_speed=np.array(a_aw),
-        true_state=true_state)
+    obs = observe(world.truth())
     if target is not None:
         obs["target_position"] = np.asarray(target, dtype=float).reshape(2).copy()
     return obs

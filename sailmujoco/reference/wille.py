@@ -51,9 +51,9 @@ from ..boat.catalogue import get_boat
 from ..boat.hull import strip_quadrature
 from ..boat.params import BoatParams
 from ..errors import SimulationStopped  # the same stop as in 6 DOF
-from ..forces.foil import naca0015
+from ..forces.foil_sections import naca0015
 from ..forces.wind import WANDER_DT, WindConfig, WindField
-from ..measurement.observation import PI, observation_dict, wrap, wrench_rows
+from ..measurement.observation import Truth, observation_and_record, wrench_rows
 from ..options import PaperModel, choices
 from ..physics import ForceSwitches  # the same switches as in 6 DOF
 from . import wille_model
@@ -440,25 +440,14 @@ class Wille4DOF:
         return float(np.hypot(*self.apparent_wind_masthead()[:2]))
 
     # ------------------------------------------------------------------ the task's measurement
-    def measure(self) -> tuple[dict, dict]:
-        """(observation, record) of the world now, as the MuJoCo boat's
-        :meth:`~sailmujoco.measurement.accessors.BoatAccessors.measure`: what
-        :func:`sailmujoco.tasks.base.measure` and the accessors give, bit for bit, from one
-        rotation, one masthead flow and one packing of the kernels' arguments for the force terms
-        and the sail flow.
-
-        Returns
-        -------
-        observation : dict
-            The observation of the controllers (without the task's references).
-        record : dict
-            The task's per-step record (``t``, ``position``, ``heading``, ``heel``, ``roll_rate``,
-            ``surge``, ``course``, ``speed``).
-        """
+    def truth(self) -> Truth:
+        """The world's true state now (:class:`~sailmujoco.measurement.observation.Truth`): the
+        accessors' values bit for bit (:func:`~sailmujoco.measurement.observation.accessor_truth`),
+        from one rotation, one masthead flow and one packing of the kernels' arguments."""
         state, t, wind = self.state, self._time, self.wind
         heel = float(state[2])  # heel(); pitch() is 0
-        yaw = float(wrap(PI / 2.0 - state[3]))  # yaw(): frames.yaw_from_heading
-        heading = float(wrap(state[3]))  # heading()
+        yaw = float(frames.wrap_angle(math.pi / 2.0 - state[3]))  # yaw(): frames.yaw_from_heading
+        heading = float(frames.wrap_angle(state[3]))  # heading()
         rot = frames.matrix_from_euler(heel, 0.0, yaw)  # rotation()
         body = self.body_velocity()
         rates = self.angular_velocity()
@@ -476,17 +465,19 @@ class Wille4DOF:
         terms[:_N_TERMS, 3] = frd[:, 2]
         terms[:_N_TERMS, 4] = -frd[:, 4]
         terms[:_N_TERMS, 5] = -frd[:, 3]
-        ground = self.ground_velocity()
-        position = np.array([state[1], state[0]])
-        observation = observation_dict(
-            body, current_body, rates, (yaw, heel, 0.0, state[8], state[9], heading, awa, aws), wind,
-            t, np.asarray(true_wind[:2], dtype=np.float64), np.array([vws_u, -vws_v]),
-            dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)), position, ground)
-        record = {"t": t, "position": position.copy(), "heading": heading, "heel": heel,
-                  "roll_rate": float(rates[0]), "surge": float(body[0]),
-                  "course": float(math.atan2(ground[1], ground[0])),
-                  "speed": float(np.hypot(*ground))}
-        return observation, record
+        return Truth(
+            time=t, position=np.array([state[1], state[0]]), velocity=self.ground_velocity(),
+            body_velocity=body, current_body=current_body, rates=rates, yaw=yaw, heel=heel, pitch=0.0,
+            heading=heading, rudder=state[8], sail=state[9], apparent_wind_angle=awa,
+            apparent_wind_speed=aws, true_wind=np.asarray(true_wind[:2], dtype=np.float64),
+            apparent_wind_ce=np.array([vws_u, -vws_v]), wind_speed_10=wind.config.speed,
+            wind_direction_from=wind.direction_from(t), current=np.array(wind.current[:2], dtype=np.float64),
+            wrenches=dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)))
+
+    def measure(self) -> tuple[dict, dict]:
+        """(observation, record) of the world now
+        (:func:`~sailmujoco.measurement.observation.observation_and_record`)."""
+        return observation_and_record(self)
 
     def diagnostic_record(self) -> dict:
         """The assumption study's per-step diagnostics: none for a paper world.

@@ -19,14 +19,10 @@ import numpy as np
 from ..constants import GRAVITY
 from ..forces.added_mass import kirchhoff_terms
 from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
-from ..forces.foil import (
-    flat_sail_force,
-    foil_world_force,
-    hydrofoil_coefficients,
-    lift_drag_components,
-    section_flow,
-)
+from ..forces.foil_geometry import foil_world_force, lift_drag_components, section_flow
+from ..forces.foil_sections import hydrofoil_coefficients
 from ..forces.hydrostatics import paper_righting_moment
+from ..forces.sail import flat_sail_force
 from ..forces.wind import wind_velocity
 from ..step.jit import kernel
 from .integrators import STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
@@ -190,7 +186,7 @@ def force_terms(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, stri
         Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
         (:func:`sailmujoco.forces.damping.crossflow_drag`).
     alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil_sections.section_coefficients`).
     current : numpy.ndarray, shape (3,)
         The current, world ENU, m/s (where the water goes).
     speed10, direction_from : float
@@ -310,7 +306,7 @@ def rates(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draf
         Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
         (:func:`sailmujoco.forces.damping.crossflow_drag`).
     alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil_sections.section_coefficients`).
     current : numpy.ndarray, shape (3,)
         The current, world ENU, m/s (where the water goes).
     speed10, direction_from : float
@@ -414,7 +410,7 @@ def advance(t0, y, dt, n, P, sigma_d, lam_d, external, a, strip_x, strip_w, stri
         Cross-flow strips: x forward of CO (m), quadrature weights (m), drafts (m)
         (:func:`sailmujoco.forces.damping.crossflow_drag`).
     alpha_grid, log_re_grid, cl_table, cd_table : numpy.ndarray
-        The NACA 0015 section table (:func:`sailmujoco.forces.foil.section_coefficients`).
+        The NACA 0015 section table (:func:`sailmujoco.forces.foil_sections.section_coefficients`).
     current : numpy.ndarray, shape (3,)
         The current, world ENU, m/s (where the water goes).
     speed10, direction_from : float

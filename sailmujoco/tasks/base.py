@@ -1,8 +1,9 @@
 """The task layer: dm_control-style tasks that run on any world (MuJoCo 6-DOF or a paper world).
 
 A *world* meets :class:`sailmujoco.tasks.world.World`: ``step``, ``time``, ``timestep``,
-``set_control``, ``place``, ``action_bounds``, ``stop_reason``, and ``measure``, which gives
-the observation defined by :func:`measure` (from the named SI accessors) and the task's record.
+``set_control``, ``place``, ``action_bounds``, ``stop_reason``, and ``truth``, its true state,
+which :mod:`sailmujoco.measurement.observation` turns into the observation and the task's
+record (:func:`~sailmujoco.measurement.observation.observation_and_record`).
 MuJoCo boats are :class:`sailmujoco.physics.BoatPhysics`; the papers' reduced models are
 wrapped by :class:`~sailmujoco.tasks.world.PaperPhysics` and
 :class:`~sailmujoco.tasks.world.VielPhysics` so that ``dm_control.rl.control.Environment`` can
@@ -21,10 +22,11 @@ Ending early never pays
     of sailing on: an agent cannot learn to capsize its way out of a bad episode.
 
 Observation
-    The world's measurement (:func:`measure`) plus the task's references; its ``true_state``
-    is a :class:`sailmujoco.measurement.observation.TrueState` (a dict that flattens as one array, so
-    ``dm_control.rl.control.flatten_observation`` and ``flat_observation=True`` work), or left
-    out with ``include_true_state=False``. The reward reads the whole measurement either way.
+    The world's measurement (:mod:`sailmujoco.measurement.observation`) plus the task's
+    references; its ``true_state`` is a :class:`sailmujoco.measurement.observation.TrueState`
+    (a dict that flattens as one array, so ``dm_control.rl.control.flatten_observation`` and
+    ``flat_observation=True`` work), or left out with ``include_true_state=False``. The reward
+    reads the whole measurement either way.
 """
 
 from __future__ import annotations
@@ -37,69 +39,8 @@ from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..measurement.observation import WRENCH_KEYS, WRENCH_NAMES, TrueState
-from .environment import SailEnvironment  # noqa: F401  (imported from here too)
-from .world import PaperPhysics, World  # noqa: F401  (PaperPhysics: imported from here too)
-
-
-def _scalar(x) -> np.ndarray:
-    return np.asarray(float(x), dtype=np.float64)
-
-
-def measure(world) -> OrderedDict:
-    """The observation of controllers/base.py from a world's accessors (our frames, SI).
-
-    The definition of the observation: each world's :meth:`~sailmujoco.tasks.world.World.measure`
-    gives it (the MuJoCo boat and Wille's paper world by equal, faster paths, compared with
-    this one in tests/test_measurement.py).
-
-    Parameters
-    ----------
-    world : object
-        A world with the named accessors of :class:`sailmujoco.physics.BoatPhysics`
-        (``rotation``, ``body_velocity``, ``heel``, ... ``force_terms``) and a ``wind``.
-
-    Returns
-    -------
-    OrderedDict
-        The observation, ``true_state`` nested.
-    """
-    rot = world.rotation()
-    body = world.body_velocity()
-    rates = world.angular_velocity()
-    current = world.wind.current
-    current_body = rot.T @ current
-    t = world.time()
-    true_state = OrderedDict(
-        u=_scalar(body[0]), v=_scalar(body[1]), w=_scalar(body[2]),
-        u_r=_scalar(body[0] - current_body[0]), v_r=_scalar(body[1] - current_body[1]),
-        yaw=_scalar(world.yaw()), heel=_scalar(world.heel()), pitch=_scalar(world.pitch()),
-        roll_rate=_scalar(rates[0]), pitch_rate=_scalar(rates[1]), yaw_rate=_scalar(rates[2]),
-        rudder=_scalar(world.rudder_angle()), sail=_scalar(world.sail_angle()),
-        true_wind=np.asarray(world.sail_wind()[:2], dtype=np.float64),
-        wind_speed_10=_scalar(world.wind.config.speed),
-        wind_direction=_scalar(frames.wrap_angle(world.wind.direction_from(t))),
-        apparent_wind_ce=np.asarray(world.apparent_wind_ce()[:2], dtype=np.float64),
-        current=np.array(current[:2], dtype=np.float64),
-        time=_scalar(t),
-    )
-    terms = world.force_terms()
-    for name, key in WRENCH_KEYS.items():
-        if name in terms:
-            true_state[f"{key}_wrench"] = np.asarray(terms[name], dtype=np.float64)
-    for key in WRENCH_NAMES:
-        true_state.setdefault(f"{key}_wrench", np.zeros(6))
-    return OrderedDict(
-        position=np.asarray(world.position()[:2], dtype=np.float64),
-        velocity=np.asarray(world.ground_velocity(), dtype=np.float64),
-        heading=_scalar(world.heading()),
-        heel=_scalar(world.heel()),
-        roll_rate=_scalar(rates[0]),
-        yaw_rate=_scalar(rates[2]),
-        apparent_wind_angle=_scalar(world.apparent_wind_angle()),
-        apparent_wind_speed=_scalar(world.apparent_wind_speed()),
-        true_state=true_state,
-    )
+from ..measurement.observation import TrueState, observation_and_record
+from .world import World
 
 
 def check_number(name: str, value, low: float | None = None, high: float | None = None, *,
@@ -201,7 +142,7 @@ class SailTask(control.Task):
         physics : World
             The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
         observation : dict
-            The observation of this state (:func:`measure` plus the task's references).
+            The observation of this state (the world's measurement plus the task's references).
         """
         raise NotImplementedError
 
@@ -293,8 +234,8 @@ class SailTask(control.Task):
         return specs.BoundedArray((2,), np.float64, low, high, name=action_name(physics))
 
     def measurement(self, physics: World) -> tuple[dict, dict]:
-        """(observation with the task's references, record) of the current state: the
-        world's :meth:`~sailmujoco.tasks.world.World.measure`.
+        """(observation with the task's references, record) of the current state:
+        :func:`~sailmujoco.measurement.observation.observation_and_record` of the world.
 
         dm_control asks for the record (after_step), the reward and the observation of one
         state in turn: it is measured once and handed to all three; get_observation hands it
@@ -308,7 +249,7 @@ class SailTask(control.Task):
         measured = self._measured
         if measured is not None and measured[0] == physics.time():
             return measured[1], measured[2]  # nothing moved since
-        obs, row = physics.measure()
+        obs, row = observation_and_record(physics)
         for key, value in self.references(physics).items():
             obs[key] = np.asarray(value, dtype=np.float64)
         self._measured = (physics.time(), obs, row)

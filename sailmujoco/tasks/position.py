@@ -40,7 +40,6 @@ from .. import frames
 from ..forces.wind import WindConfig
 from .base import SailTask, check_number
 from .registry import register_task
-from .world import VielPhysics  # noqa: F401  (imported from here too)
 
 # case: (mean a_tw m/s, speed oscillation m/s, direction oscillation rad)
 FAR = 100.0  # target radii d_T: the distance term's floor, -FAR

@@ -1,6 +1,6 @@
 """Sailing tasks: hold a heading, hold a course, beam reach in a blow, a speed trial.
 
-Observation (all tasks): the dict of :func:`sailmujoco.tasks.base.measure`,
+Observation (all tasks): the dict of :mod:`sailmujoco.measurement.observation`,
 
 ======================  =====  ===================================================
 key                     unit   frame / meaning

@@ -1,8 +1,9 @@
 """The world a task runs on: one protocol, met by the MuJoCo boat and both paper worlds.
 
 A task (:class:`sailmujoco.tasks.base.SailTask`) never asks what kind of world it drives: it
-places the boat, sets the control, steps, and asks the world to measure itself. Three worlds
-meet :class:`World`:
+places the boat, sets the control, steps, and reads the world's true state (``truth()``), which
+:mod:`sailmujoco.measurement.observation` turns into the observation. Three worlds meet
+:class:`World`:
 
 * :class:`sailmujoco.physics.BoatPhysics`, the 6-DOF (or 4-DOF) MuJoCo boat;
 * :class:`PaperPhysics` around :class:`sailmujoco.reference.wille.Wille4DOF`, Wille's 4-DOF
@@ -13,7 +14,7 @@ meet :class:`World`:
 The two adapters give the paper worlds dm_control's Physics methods (``reset``,
 ``after_reset``, ``copy``, ``reset_context``) so that ``dm_control.rl.control.Environment`` can
 drive them. A world of your own needs the methods of :class:`World` (and those of
-dm_control's Physics if it runs in a :class:`~sailmujoco.tasks.base.SailEnvironment`).
+dm_control's Physics if it runs in a :class:`~sailmujoco.tasks.environment.SailEnvironment`).
 """
 
 from __future__ import annotations
@@ -26,7 +27,7 @@ import numpy as np
 from dm_control.rl import control
 
 from ..errors import SimulationStopped
-from ..reference.viel import observation_from_world
+from ..measurement.observation import Truth, observation_and_record, observe
 
 
 @runtime_checkable
@@ -81,18 +82,15 @@ class World(Protocol):
     def action_bounds(self) -> tuple[np.ndarray, np.ndarray]:
         """(low, high) of the commands [rudder, sail]."""
 
-    def measure(self) -> tuple[dict, dict]:
-        """(observation, record) of the world now.
+    def truth(self) -> Truth:
+        """The world's true state now; :mod:`sailmujoco.measurement.observation` makes the
+        observation (:func:`~sailmujoco.measurement.observation.observe`) and the task's record
+        (:func:`~sailmujoco.measurement.observation.record`) from it.
 
         Returns
         -------
-        observation : dict
-            The observation of :func:`sailmujoco.tasks.base.measure` (the controllers' input),
-            without the task's references.
-        record : dict
-            What the tasks' metrics read at each step: ``t`` (s), ``position`` (m, east and
-            north), ``heading`` (rad, compass), ``heel`` (rad), ``roll_rate`` (rad/s),
-            ``surge`` (m/s), ``course`` (rad, ENU) and ``speed`` (m/s, over ground).
+        Truth
+            The world's true state.
         """
 
     def diagnostic_record(self) -> dict:
@@ -117,9 +115,14 @@ class PaperPhysics(control.Physics):
     def __init__(self, world):
         self.world = world
 
+    def truth(self) -> Truth:
+        """The world's true state now (:meth:`World.truth`)."""
+        return self.world.truth()
+
     def measure(self) -> tuple[dict, dict]:
-        """(observation, record) of the world now (:meth:`World.measure`)."""
-        return self.world.measure()
+        """(observation, record) of the world now
+        (:func:`~sailmujoco.measurement.observation.observation_and_record`)."""
+        return observation_and_record(self)
 
     def diagnostic_record(self) -> dict:
         """The world's diagnostics (:meth:`World.diagnostic_record`)."""
@@ -297,20 +300,19 @@ class VielPhysics:
         self.world.reset(state=[position[0], position[1], yaw, surge, 0.0, 0.0])
 
     # what the tasks read
+    def truth(self) -> Truth:
+        """The world's true state now (:meth:`World.truth`,
+        :meth:`sailmujoco.reference.viel.VielWorld.truth`)."""
+        return self.world.truth()
+
     def measure(self) -> tuple[dict, dict]:
-        """(observation, record) of the world now (:meth:`World.measure`): the observation
-        of :meth:`observation`, the record from the accessors below."""
-        observation = self.observation()
-        body = self.body_velocity()
-        record = {"t": self.time(), "position": np.array(self.position()[:2]),
-                  "heading": self.heading(), "heel": self.heel(),
-                  "roll_rate": float(self.angular_velocity()[0]), "surge": float(body[0]),
-                  "course": self.course(), "speed": self.speed_over_ground()}
-        return observation, record
+        """(observation, record) of the world now
+        (:func:`~sailmujoco.measurement.observation.observation_and_record`)."""
+        return observation_and_record(self)
 
     def observation(self) -> dict:
-        """The observation of :func:`sailmujoco.reference.viel.observation_from_world`."""
-        return observation_from_world(self.world)
+        """The observation of the world now (:func:`~sailmujoco.measurement.observation.observe`)."""
+        return observe(self.truth())
 
     def diagnostic_record(self) -> dict:
         """None for Viel's 3-DOF world (:meth:`World.diagnostic_record`): an empty dict."""

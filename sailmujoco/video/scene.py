@@ -95,7 +95,7 @@ def snapshot_physics(physics, references: dict | None = None) -> Snapshot:
 
 
 def snapshot_observation(observation) -> Snapshot:
-    """The state from a task observation (:func:`sailmujoco.tasks.base.measure`), for any world.
+    """The state from a task observation (:mod:`sailmujoco.measurement.observation`), for any world.
 
     Parameters
     ----------

@@ -70,7 +70,7 @@ target area".
 Runs: the task's start (-30, 40) m, 0.5 m/s on a heading drawn from seed 0, the paper's control
 period dt = {PAPER_DT:g} s (§5.1) in all three worlds, the paper's gains unchanged. The paper world's
 rudder forces (eqs. 7-8) are read linear in the speed, as Table 1's unit of p5 (kg/s) and
-Jaulin's model it comes from have them (:func:`sailmujoco.reference.viel.rudder_forces`). The
+Jaulin's model it comes from have them (:func:`sailmujoco.reference.viel_model.rudder_forces`). The
 paper world also runs from five start positions and two headings (seeds 0, 1) on the sweep
 engine. One difference at a time is switched (paper world: eqs. 7-8 as printed with v², the
 suite's control period 0.1 s, no hull-wind term p1; 6-DOF boats: starting under way on the
