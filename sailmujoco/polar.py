@@ -9,21 +9,20 @@ and downwind (max -v cos TWA, TWA > 90) are marked.
 grid is sailed and the fastest steady speed kept, point by point.
 
 A point whose run fails (its controller raises, or gives a bad action) is left out. ``sailmujoco
-polar`` then keeps the CSVs of what finished, says in one line why and when the first failed point
-failed (it runs that point again in its own process to find out) and exits with status 2.
+polar`` (:mod:`sailmujoco.cli.polar`) then keeps the CSVs of what finished, says in one line why and
+when the first failed point failed (:func:`first_failure` runs that point again in its own process
+to find out) and exits with status 2.
 """
 
 from __future__ import annotations
 
 import math
-import sys
 from pathlib import Path
 
 import numpy as np
 
 from . import sweep
 from .boat.catalogue import boat_label
-from .cli.arguments import controller_options, out_folder
 from .errors import ControllerFailed, act, one_line
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
@@ -115,7 +114,7 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
     """
     table, _ = sweep_table(boat, controller, out, tws=tws, twa=twa, world=world, duration=duration,
                            scheduler=scheduler, workers=workers, progress=progress, options=options)
-    return _finished(table, controller)
+    return finished_points(table, controller)
 
 
 def sweep_table(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
@@ -146,8 +145,21 @@ def sweep_table(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT
     return table, spec
 
 
-def _finished(table, controller: str):
-    """The polar of the runs that finished (for ``best``, the fastest sail at each point)."""
+def finished_points(table, controller: str):
+    """The polar of the runs that finished (for ``best``, the fastest sail at each point).
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A polar's sweep table (:func:`sweep_table`).
+    controller : str
+        The controller it was sailed with.
+
+    Returns
+    -------
+    pandas.DataFrame
+        ``tws``, ``twa``, ``speed``, ``heel`` (and ``sail_deg`` for ``best``), by TWS and TWA.
+    """
     ok = table[table["status"] == "ok"]
     if controller == "best":  # the fastest fixed sail at each point
         idx = ok.groupby(["tws", "twa"])["speed"].idxmax()
@@ -156,9 +168,19 @@ def _finished(table, controller: str):
     return ok[["tws", "twa", "speed", "heel"]].sort_values(["tws", "twa"])
 
 
-def _first_failure(table, spec: dict, controller: str) -> str | None:
+def first_failure(table, spec: dict, controller: str) -> str | None:
     """Why the first failed run failed, one line with the simulated time (the sweep records the
-    error, not when: the run is simulated again here, each action checked); None if none failed."""
+    error, not when: the run is simulated again here, each action checked); None if none failed.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        A polar's sweep table (:func:`sweep_table`).
+    spec : dict
+        Its sweep description (:func:`polar_spec`).
+    controller : str
+        The controller it was sailed with.
+    """
     failed = table[table["status"] == "failed"]
     if failed.empty:
         return None
@@ -399,85 +421,3 @@ def comparison_markdown(table, summary, command: str = "", settings: str = "") -
 
 def _cell(value, digits: int) -> str:
     return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
-
-
-DESCRIPTION = f"""\
-The steady speed of BOAT at every true wind speed x true wind angle, each point a heading_hold
-run in a steady wind (no gusts) from TWA off the starboard bow, its speed the mean over the
-last {STEADY_WINDOW_S:g} s. Writes polar_<controller>.png and .csv into --out, and prints the best VMG upwind
-and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept."""
-
-
-def run_cli(args) -> int:
-    """The ``polar`` sub-command: the polar of a boat and sail law (and comparisons), PNG + CSV.
-
-    Parameters
-    ----------
-    args : argparse.Namespace
-        ``boat``, ``controller``, ``option`` (``(key, value)`` pairs of the controller's
-        options), ``compare`` (comma separated, or None), ``world``, ``tws``,
-        ``twa``, ``seconds`` (simulated seconds per point), ``out``, ``scheduler``, ``workers``,
-        ``no_progress``.
-
-    Returns
-    -------
-    int
-        0; 2 where a point failed (one line on stderr: why the first failed point failed and
-        when; the CSVs written so far are kept).
-    """
-    from .boat.catalogue import get_boat
-
-    get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
-    if args.option and args.controller == "best":
-        raise ValueError("--option: 'best' is every fixed sail angle and takes no options")
-    own = {} if args.controller == "best" else controller_options(args)  # checked before any run
-    label = sweep.controller_label(args.controller)
-    out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
-    names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
-    frames, kept = {}, []
-    for name in names:
-        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
-              f"({args.world}, {args.seconds:g} s per point)")
-        table, spec = sweep_table(args.boat, name, out, tws=args.tws, twa=args.twa,
-                                  world=args.world, duration=args.seconds,
-                                  scheduler=args.scheduler, workers=args.workers,
-                                  progress=not args.no_progress,
-                                  options={f"controller.{key}": value for key, value in own.items()}
-                                  if name == args.controller else None)
-        frames[name] = _finished(table, name)
-        csv = out / f"polar_{sweep.controller_label(name)}.csv"
-        frames[name].to_csv(csv, index=False)
-        n_points = len(frames[name])
-        kept.append(f"{csv} ({n_points} point{'' if n_points == 1 else 's'})")
-        failure = _first_failure(table, spec, name)
-        if failure is not None:
-            failed = int((table["status"] == "failed").sum())
-            print(f"sailmujoco polar: {failure}; {failed} of {len(table)} runs failed; kept what "
-                  f"finished: {', '.join(kept)}", file=sys.stderr)
-            return 2
-    main_frame = frames[args.controller]
-    png = out / f"polar_{sweep.controller_label(args.controller)}.png"
-    plot_polar(main_frame, png, f"{boat_label(args.boat)}, {args.controller} ({args.world})")
-    for tws, best in best_vmg(main_frame).items():
-        (au, vu), (ad, vd) = best["upwind"], best["downwind"]
-        print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
-              f"downwind {vd:.2f} m/s at {ad:g} deg")
-    print(f"wrote {png} and {out / f'polar_{sweep.controller_label(args.controller)}.csv'}")
-    if len(frames) > 1:
-        _write_comparison(args, frames, out)
-    return 0
-
-
-def _write_comparison(args, frames: dict, out: Path) -> None:
-    """compare.png, compare.csv and compare.md of the ``--compare`` sail laws."""
-    compare = out / "compare.png"
-    plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
-    table = comparison_table(frames)
-    table.to_csv(out / "compare.csv", index=False)
-    command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
-    settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
-                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.seconds:g} s per point")
-    summary = ratio_summary(table)
-    (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
-                                    encoding="utf-8")
-    print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")

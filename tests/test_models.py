@@ -99,7 +99,8 @@ def test_sheeted_sail_is_limited_by_the_sheet():
 def test_sheet_length_and_angle_are_inverse():
     p = get_boat("saoud_robot")
     angles = np.linspace(0.0, math.pi * 0.95, 20)
-    assert mjcf.sheet_angle(p, mjcf.sheet_length(p, angles)) == pytest.approx(angles, abs=1e-9)
+    lengths = boat_geometry.sheet_length(p, angles)
+    assert boat_geometry.sheet_angle(p, lengths) == pytest.approx(angles, abs=1e-9)
 
 
 @pytest.mark.parametrize("boat", BOATS)

@@ -21,6 +21,7 @@ imageio = pytest.importorskip("imageio.v3")
 pytest.importorskip("imageio_ffmpeg")
 
 from sailmujoco import suite, sweep, video  # noqa: E402
+from sailmujoco.cli.video import main as video_main  # noqa: E402
 
 FPS = 25
 SECONDS = 2.0
@@ -136,7 +137,7 @@ def test_paper_world_frames_hold_the_control_step_state(tmp_path):
 
 def test_cli_writes_video_and_still(tmp_path, capsys):
     out, still = tmp_path / "cli.mp4", tmp_path / "still.png"
-    code = video.main(["saoud_robot", "heading_hold", "--controller", "saoud", "--seconds", "0.4",
+    code = video_main(["saoud_robot", "heading_hold", "--controller", "saoud", "--seconds", "0.4",
                        "--out", str(out), "--fps", "10", "--width", "64", "--height", "48",
                        "--camera", "side", "--still", str(still), "--no-progress",
                        "--set", "wind_speed=5.0"])
@@ -148,7 +149,7 @@ def test_cli_writes_video_and_still(tmp_path, capsys):
 
 def test_cli_makes_the_missing_folders_of_out(tmp_path, capsys):
     out = tmp_path / "not" / "yet" / "run.mp4"
-    code = video.main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
+    code = video_main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
                        "--out", str(out), "--fps", "10", "--width", "32", "--height", "24",
                        "--camera", "side"])
     assert code == 0 and out.stat().st_size > 0
@@ -166,7 +167,7 @@ def test_cli_makes_the_missing_folders_of_out(tmp_path, capsys):
     (["--set", "time_limit=3"], "--set time_limit=... is the option --seconds"),
 ])
 def test_cli_bad_camera_and_episode_arguments_are_one_line(tmp_path, capsys, argument, message):
-    code = video.main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
+    code = video_main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",
                        "--out", str(tmp_path / "x.mp4"), *argument])
     err = capsys.readouterr().err
     assert code == 2 and message in err and len(err.strip().splitlines()) == 1

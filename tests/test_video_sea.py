@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.forces.waves import WaveConfig
+from sailmujoco.options import WaveConfig
 from sailmujoco.video import SceneRenderer, Snapshot
 
 GRAVITY = 9.81
@@ -147,7 +147,7 @@ def test_cli_sea_comes_from_the_wind_unless_given(tmp_path, monkeypatch, capsys)
     """--waves KEY=VALUE builds the sea; without direction_from_deg it comes from the bearing of
     the wind the task's physics is loaded with (read here from a separately loaded run)."""
     from sailmujoco import suite
-    from sailmujoco.video import command
+    from sailmujoco.cli import video as command
 
     given = []
     record = command.record

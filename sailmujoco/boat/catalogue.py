@@ -37,22 +37,7 @@ def wille_yacht() -> BoatParams:
     mass = 1.6e3  # kg, Appendix A ("displacement of 1600kg", §2.2)
     rho = c.RHO_WATER
     gm_t = 2.4  # m, Appendix A
-    # CG: the paper puts CO at the CG on the waterline (§2); a real yacht of this size gets its
-    # stability from a ballast keel, so ours sits below it (xml/wille_yacht/README.md step 4).
-    # Foil and sail positions stay the paper's, measured from CO on the waterline.
-    ballast_ratio = 0.50  # -, guess: bulb keels of light 8-9 m keelboats carry 40-50 % of m
-    z_ballast = -1.40  # m, guess: bulb centroid 0.08 m above the keel tip, which is the keel
-    # span sqrt(Asp_k A_k) = 1.276 m (Appendix A) below the canoe body's 0.205 m draft (1.48 m)
-    z_rest = 0.25  # m, guess: hull shell, deck, fit-out and mast above the ballast
-    cg_z = ballast_ratio * z_ballast + (1.0 - ballast_ratio) * z_rest  # = -0.575 m
-    hull = hull_geometry.design_for(
-        length=8.8,  # m, L_WL, Appendix A
-        displaced_volume=mass / rho,
-        gm=gm_t, z_g=cg_z,
-        freeboard=0.8,  # m, guess: typical for an 8-9 m cruiser-racer
-        flare=1.3)  # deck / waterline half-breadth, guess: beam 2.69 m at the deck, 2.07 m at
-    # the waterline (topsides flared 21 deg), as modern yachts carry their beam above the water
-    sail_area = 22.8  # m^2, A_s, Appendix A
+    cg_z, hull = _wille_hull(mass, rho, gm_t)
     return BoatParams(
         name="wille_yacht",
         mass=mass,
@@ -86,28 +71,63 @@ def wille_yacht() -> BoatParams:
         roll_lift=70.0,  # B_L, Appendix A
         roll_frequency=2.4,  # omega_roll_n, rad/s, Appendix A
         crossflow_cd=1.0,  # guess: Hoerner's cross-flow C_D of a shallow, wide section ~0.8-1.2
-        keel=Foil(area=0.93, aspect_ratio=1.75,  # A_k, Asp_k, Appendix A
-                  thickness_ratio=0.09,  # NACA 0009 (§2.1)
-                  x=0.66, z=-0.95),  # -l3, -h2 (eq. 30)
-        rudder=Foil(area=0.30, aspect_ratio=2.97,  # A_r, Asp_r, Appendix A
-                    thickness_ratio=0.15,  # NACA 0015 (§2.1)
-                    x=-3.7, z=-0.7,  # -l4, -h3 (eq. 34)
-                    mass=8.0,  # kg, guess: a 0.3 m^2 GRP blade and stock
-                    max_angle=math.radians(35.0),  # sigma_sat, Appendix A
-                    time_constant=0.2),  # T_sigma, s, Appendix A
-        sail=Sail(area=sail_area,
-                  aspect_ratio=5.0,  # the flat AR 5 sail of Saoud (2015) §VII-A stands in
-                  # for Marchaj's p. 587 coefficients, which are not available to us
-                  mast_x=1.82,  # -l1 (eq. 26)
-                  ce_aft=1.35,  # l2, Appendix A
-                  ce_height=5.2,  # h1, Appendix A
-                  mass=30.0,  # kg, guess: aluminium boom + Dacron main of 22.8 m^2
-                  max_angle=math.radians(110.0),  # lambda_sat, Appendix A
-                  time_constant=0.5),  # T_lambda, s, Appendix A
+        keel=_wille_keel(),
+        rudder=_wille_rudder(),
+        sail=_wille_sail(),
         rho_air=c.RHO_AIR_WILLE,
         paper_righting="sin_cos",
         sources={"paper": "Wille, Hassani, Sprenger (2016a), Appendix A"},
     )
+
+
+def _wille_hull(mass: float, rho: float, gm_t: float) -> tuple[float, HullShape]:
+    """(cg_z, hull) of :func:`wille_yacht`: its CG height and the hull designed for its GM_t."""
+    # CG: the paper puts CO at the CG on the waterline (§2); a real yacht of this size gets its
+    # stability from a ballast keel, so ours sits below it (xml/wille_yacht/README.md step 4).
+    # Foil and sail positions stay the paper's, measured from CO on the waterline.
+    ballast_ratio = 0.50  # -, guess: bulb keels of light 8-9 m keelboats carry 40-50 % of m
+    z_ballast = -1.40  # m, guess: bulb centroid 0.08 m above the keel tip, which is the keel
+    # span sqrt(Asp_k A_k) = 1.276 m (Appendix A) below the canoe body's 0.205 m draft (1.48 m)
+    z_rest = 0.25  # m, guess: hull shell, deck, fit-out and mast above the ballast
+    cg_z = ballast_ratio * z_ballast + (1.0 - ballast_ratio) * z_rest  # = -0.575 m
+    hull = hull_geometry.design_for(
+        length=8.8,  # m, L_WL, Appendix A
+        displaced_volume=mass / rho,
+        gm=gm_t, z_g=cg_z,
+        freeboard=0.8,  # m, guess: typical for an 8-9 m cruiser-racer
+        flare=1.3)  # deck / waterline half-breadth, guess: beam 2.69 m at the deck, 2.07 m at
+    # the waterline (topsides flared 21 deg), as modern yachts carry their beam above the water
+    return cg_z, hull
+
+
+def _wille_keel() -> Foil:
+    """The keel of :func:`wille_yacht` (Appendix A, eq. 30)."""
+    return Foil(area=0.93, aspect_ratio=1.75,  # A_k, Asp_k, Appendix A
+                thickness_ratio=0.09,  # NACA 0009 (§2.1)
+                x=0.66, z=-0.95)  # -l3, -h2 (eq. 30)
+
+
+def _wille_rudder() -> Foil:
+    """The rudder of :func:`wille_yacht` (Appendix A, eq. 34)."""
+    return Foil(area=0.30, aspect_ratio=2.97,  # A_r, Asp_r, Appendix A
+                thickness_ratio=0.15,  # NACA 0015 (§2.1)
+                x=-3.7, z=-0.7,  # -l4, -h3 (eq. 34)
+                mass=8.0,  # kg, guess: a 0.3 m^2 GRP blade and stock
+                max_angle=math.radians(35.0),  # sigma_sat, Appendix A
+                time_constant=0.2)  # T_sigma, s, Appendix A
+
+
+def _wille_sail() -> Sail:
+    """The sail of :func:`wille_yacht` (Appendix A, eq. 26)."""
+    return Sail(area=22.8,  # m^2, A_s, Appendix A
+                aspect_ratio=5.0,  # the flat AR 5 sail of Saoud (2015) §VII-A stands in
+                # for Marchaj's p. 587 coefficients, which are not available to us
+                mast_x=1.82,  # -l1 (eq. 26)
+                ce_aft=1.35,  # l2, Appendix A
+                ce_height=5.2,  # h1, Appendix A
+                mass=30.0,  # kg, guess: aluminium boom + Dacron main of 22.8 m^2
+                max_angle=math.radians(110.0),  # lambda_sat, Appendix A
+                time_constant=0.5)  # T_lambda, s, Appendix A
 
 
 def saoud_robot(l_phi: float = 1.0) -> BoatParams:
@@ -278,42 +298,11 @@ def viel_boat() -> BoatParams:
     mass = VIEL_P9  # kg, Viel Table 1 p9
     rho = c.RHO_WATER  # kg/m^3, sea water (Viel gives none)
     rho_air = c.RHO_AIR_SAOUD  # kg/m^3, Viel gives none: the ISA sea-level 1.225 (as Saoud Table I)
-    # Stability for the 11.7 m^2 rig (guess, a 2.4mR-like keelboat: ~60-70 % ballast in a bulb):
-    # 180 kg lead bulb at the keel tip z = -1.25 m, a 100 kg hull/deck at ~+0.05 m, a 20 kg rig
-    # (mast, boom, sail) centred ~3.5 m up: z_G = (-225 + 5 + 70) / 300 = -0.50 m. GM_t follows
-    # from the hull (z_B + BM - z_G of a 1.05 m beam): ~1.05 m. Checked: steady heel
-    # under the eq. 15 sail in 10 m/s (tests/test_viel_boat.py, xml/viel_boat/README.md step 7).
-    gm_t = 1.05  # m, guess (see above)
-    cg_z = -0.50  # m, guess (see above)
-    length = 2.0 * VIEL_P8  # m, L_WL, ours: the rudder p8 = 2 m behind G hangs on the transom
-    # of a hull with G midships
-    hull = hull_geometry.design_for(length=length, displaced_volume=mass / rho, gm=gm_t, z_g=cg_z,
-                                    freeboard=0.4)  # m, guess: a small open keelboat's freeboard
+    gm_t, cg_z, hull = _viel_hull(mass, rho)
     wetted = hull_geometry.wetted_surface(hull)  # m^2, S_H computed from the hull
-    # Ixx: guess, the sum of the ballast (180 kg 0.75 m below G: ~100), the hull shell (~100 kg
-    # at radius ~0.5 m: ~25), the mast (12 kg, 8.4 m tall, centred 4.5 m above G: ~310) and the
-    # boom + sail (10 kg at the CE 3.8 m above G: ~145) = ~580; Iyy: guess, the same vertical
-    # terms (~555) plus the hull's length share (~300) = ~850; Izz: Viel Table 1 p10
-    inertia = (580.0, 850.0, VIEL_P10)
-    added = (-0.10 * mass,  # X_udot: Wille's ratio X_udot / m = -0.10
-             -0.75 * mass,  # Y_vdot: Wille's ratio -0.75
-             -hull_geometry.heave_added_mass(hull, rho),  # Z_wdot, strip theory (hull.py)
-             -0.15 * inertia[0],  # K_pdot: Wille's ratio K_pdot / Ixx = -0.15
-             -hull_geometry.pitch_added_inertia(hull, rho),  # M_qdot, strip theory (hull.py)
-             -0.28 * inertia[2])  # N_rdot: Wille's ratio N_rdot / Izz = -0.28
+    inertia, added = _viel_inertia(mass, hull, rho)
     omega_roll = math.sqrt(mass * c.GRAVITY * gm_t / (inertia[0] - added[3]))  # computed
-    keel_area, keel_ar = 0.6, 2.0  # m^2, -, guess: a 1.1 m fin (2.4mR-like) carrying the
-    # ~900 N side force of the 11.7 m^2 sail at ~8 deg leeway and 2.4 m/s (with the rudder)
-    rudder_ar = 3.0  # -, guess: a deep transom-hung blade
-    rudder_area = viel_identified_rudder_area(rho, rudder_ar)  # m^2, from p5
-    keel_span = math.sqrt(keel_ar * keel_area)
-    rudder_span = math.sqrt(rudder_ar * rudder_area)
-    sail_area = viel_identified_sail_area(rho_air)  # m^2, from p4
-    luff = 7.65  # m: the luff of the flat AR 5 sail of this area (7.645 m, Saoud §VII-A's AR 5,
-    # whose C_N polynomial the paper-form force model uses), rounded so that the CE height
-    # 0.8 + luff / 3 = 3.35 m is exact in the MJCF's 6 digits
-    sail_ar = luff**2 / sail_area  # -, 5.01
-    boom_height = 0.8  # m, guess: boom 0.4 m above the 0.4 m deck
+    keel, rudder = _viel_foils(hull, rho)
     return BoatParams(
         name="viel_boat",
         mass=mass,
@@ -339,24 +328,9 @@ def viel_boat() -> BoatParams:
         roll_lift=13.0,  # B_L, kg m / rad, guess: Wille's 70 scaled by mass
         roll_frequency=omega_roll,  # rad/s, computed natural roll frequency
         crossflow_cd=1.0,  # guess, as for the other boats (Hoerner ~0.8-1.2)
-        keel=Foil(area=keel_area, aspect_ratio=keel_ar,
-                  thickness_ratio=0.09,  # guess: NACA 0009, as Wille's keel
-                  x=0.0,  # under G: Viel's eq. 5 keel force has no yaw moment in eq. 6
-                  z=-(hull.canoe_draft + 0.45 * keel_span)),  # CP at 45 % of the span
-        rudder=Foil(area=rudder_area, aspect_ratio=rudder_ar,
-                    thickness_ratio=0.15,  # NACA 0015, as Wille's rudder
-                    x=-VIEL_P8,  # m, Viel Table 1 p8
-                    z=-(0.05 + 0.4 * rudder_span),  # CP at 40 % of the span below a 5 cm root
-                    mass=3.0,  # kg, guess: a 0.26 m^2 GRP blade and stock
-                    max_angle=math.pi / 4.0,  # Viel §2.1 delta_r,max
-                    time_constant=0.2),  # s, T_sigma: Wille's (Viel gives none)
-        sail=Sail(area=sail_area, aspect_ratio=sail_ar,
-                  mast_x=VIEL_P7,  # m, Viel Table 1 p7 (mast ahead of G)
-                  ce_aft=VIEL_P6,  # m, Viel Table 1 p6 (CE behind the mast along the boom)
-                  ce_height=boom_height + luff / 3.0,  # m, 3.35: triangle, CE luff/3 above the boom
-                  mass=10.0,  # kg, guess: a 3.1 m aluminium boom (~6) and an 11.7 m^2 Dacron main (~4)
-                  max_angle=math.pi / 2.0,  # Viel §2.1 delta_s,max
-                  time_constant=0.5),  # s, T_lambda: Wille's (Viel gives none)
+        keel=keel,
+        rudder=rudder,
+        sail=_viel_sail(rho_air),
         rho_water=rho,
         rho_air=rho_air,
         paper_righting="sin",  # Saoud eq. 4, m g GM sin(phi): a ballasted keelboat keeps its
@@ -364,6 +338,77 @@ def viel_boat() -> BoatParams:
         sources={"paper": "Viel, Vautier, Wan, Jaulin (2019), Table 1 (p2, p4-p10) and §2.1; "
                           "hull, keel, roll: ours (xml/viel_boat/README.md)"},
     )
+
+
+def _viel_hull(mass: float, rho: float) -> tuple[float, float, HullShape]:
+    """(gm_t, cg_z, hull) of :func:`viel_boat`: its stability and the hull designed for it."""
+    # Stability for the 11.7 m^2 rig (guess, a 2.4mR-like keelboat: ~60-70 % ballast in a bulb):
+    # 180 kg lead bulb at the keel tip z = -1.25 m, a 100 kg hull/deck at ~+0.05 m, a 20 kg rig
+    # (mast, boom, sail) centred ~3.5 m up: z_G = (-225 + 5 + 70) / 300 = -0.50 m. GM_t follows
+    # from the hull (z_B + BM - z_G of a 1.05 m beam): ~1.05 m. Checked: steady heel
+    # under the eq. 15 sail in 10 m/s (tests/test_viel_boat.py, xml/viel_boat/README.md step 7).
+    gm_t = 1.05  # m, guess (see above)
+    cg_z = -0.50  # m, guess (see above)
+    length = 2.0 * VIEL_P8  # m, L_WL, ours: the rudder p8 = 2 m behind G hangs on the transom
+    # of a hull with G midships
+    hull = hull_geometry.design_for(length=length, displaced_volume=mass / rho, gm=gm_t, z_g=cg_z,
+                                    freeboard=0.4)  # m, guess: a small open keelboat's freeboard
+    return gm_t, cg_z, hull
+
+
+def _viel_inertia(mass: float, hull: HullShape, rho: float) -> tuple[tuple, tuple]:
+    """(inertia, added_mass) of :func:`viel_boat`: Ixx, Iyy, Izz and the six added-mass terms."""
+    # Ixx: guess, the sum of the ballast (180 kg 0.75 m below G: ~100), the hull shell (~100 kg
+    # at radius ~0.5 m: ~25), the mast (12 kg, 8.4 m tall, centred 4.5 m above G: ~310) and the
+    # boom + sail (10 kg at the CE 3.8 m above G: ~145) = ~580; Iyy: guess, the same vertical
+    # terms (~555) plus the hull's length share (~300) = ~850; Izz: Viel Table 1 p10
+    inertia = (580.0, 850.0, VIEL_P10)
+    added = (-0.10 * mass,  # X_udot: Wille's ratio X_udot / m = -0.10
+             -0.75 * mass,  # Y_vdot: Wille's ratio -0.75
+             -hull_geometry.heave_added_mass(hull, rho),  # Z_wdot, strip theory (hull.py)
+             -0.15 * inertia[0],  # K_pdot: Wille's ratio K_pdot / Ixx = -0.15
+             -hull_geometry.pitch_added_inertia(hull, rho),  # M_qdot, strip theory (hull.py)
+             -0.28 * inertia[2])  # N_rdot: Wille's ratio N_rdot / Izz = -0.28
+    return inertia, added
+
+
+def _viel_foils(hull: HullShape, rho: float) -> tuple[Foil, Foil]:
+    """(keel, rudder) of :func:`viel_boat`; the rudder's area from p5."""
+    keel_area, keel_ar = 0.6, 2.0  # m^2, -, guess: a 1.1 m fin (2.4mR-like) carrying the
+    # ~900 N side force of the 11.7 m^2 sail at ~8 deg leeway and 2.4 m/s (with the rudder)
+    rudder_ar = 3.0  # -, guess: a deep transom-hung blade
+    rudder_area = viel_identified_rudder_area(rho, rudder_ar)  # m^2, from p5
+    keel_span = math.sqrt(keel_ar * keel_area)
+    rudder_span = math.sqrt(rudder_ar * rudder_area)
+    keel = Foil(area=keel_area, aspect_ratio=keel_ar,
+                thickness_ratio=0.09,  # guess: NACA 0009, as Wille's keel
+                x=0.0,  # under G: Viel's eq. 5 keel force has no yaw moment in eq. 6
+                z=-(hull.canoe_draft + 0.45 * keel_span))  # CP at 45 % of the span
+    rudder = Foil(area=rudder_area, aspect_ratio=rudder_ar,
+                  thickness_ratio=0.15,  # NACA 0015, as Wille's rudder
+                  x=-VIEL_P8,  # m, Viel Table 1 p8
+                  z=-(0.05 + 0.4 * rudder_span),  # CP at 40 % of the span below a 5 cm root
+                  mass=3.0,  # kg, guess: a 0.26 m^2 GRP blade and stock
+                  max_angle=math.pi / 4.0,  # Viel §2.1 delta_r,max
+                  time_constant=0.2)  # s, T_sigma: Wille's (Viel gives none)
+    return keel, rudder
+
+
+def _viel_sail(rho_air: float) -> Sail:
+    """The sail of :func:`viel_boat`; its area from p4."""
+    sail_area = viel_identified_sail_area(rho_air)  # m^2, from p4
+    luff = 7.65  # m: the luff of the flat AR 5 sail of this area (7.645 m, Saoud §VII-A's AR 5,
+    # whose C_N polynomial the paper-form force model uses), rounded so that the CE height
+    # 0.8 + luff / 3 = 3.35 m is exact in the MJCF's 6 digits
+    sail_ar = luff**2 / sail_area  # -, 5.01
+    boom_height = 0.8  # m, guess: boom 0.4 m above the 0.4 m deck
+    return Sail(area=sail_area, aspect_ratio=sail_ar,
+                mast_x=VIEL_P7,  # m, Viel Table 1 p7 (mast ahead of G)
+                ce_aft=VIEL_P6,  # m, Viel Table 1 p6 (CE behind the mast along the boom)
+                ce_height=boom_height + luff / 3.0,  # m, 3.35: triangle, CE luff/3 above the boom
+                mass=10.0,  # kg, guess: a 3.1 m aluminium boom (~6) and an 11.7 m^2 Dacron main (~4)
+                max_angle=math.pi / 2.0,  # Viel §2.1 delta_s,max
+                time_constant=0.5)  # s, T_lambda: Wille's (Viel gives none)
 
 
 def _radiation_damping(h: HullShape, mass: float, rho: float, zeta: float):
@@ -415,7 +460,7 @@ def get_boat(name_or_path, **options) -> BoatParams:
     name_or_path : str or os.PathLike
         A registered boat: a key of :data:`BOATS` (``wille_yacht``, ``saoud_robot``,
         ``viel_boat``, or one added by :func:`register_boat`); or a boat file, a path object or
-        a string ending in ``.toml`` (:func:`sailmujoco.boat.file.read_boat`).
+        a string ending in ``.toml`` (:func:`sailmujoco.boat.schema.read_boat`).
     **options
         Keyword arguments of the boat's factory (e.g. ``l_phi`` for :func:`saoud_robot`); an
         option the factory does not take raises a ValueError. A boat file takes none.

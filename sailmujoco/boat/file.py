@@ -17,10 +17,10 @@ from pathlib import Path
 
 from .catalogue import BUILT_IN, get_boat
 from .params import BoatParams
-from .schema import KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key, read_boat
+from .schema import KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key
 from .sources import SOURCES as BUILT_IN_SOURCES
 
-__all__ = ["boat_toml", "name_clash", "read_boat", "write_boat"]
+__all__ = ["boat_toml", "name_clash", "write_boat"]
 
 HEADER = """\
 # {name}: a sailmujoco boat file.

@@ -39,11 +39,11 @@ import numpy as np
 from ..constants import GRAVITY
 from ..options import Dofs, SailMode, choices
 from .catalogue import BUILT_IN, get_boat
-from .geometry import hull_inertial, hull_mesh, rig_inertia, sheet_angle, sheet_geometry, sheet_length
+from .geometry import hull_inertial, hull_mesh, rig_inertia, sheet_geometry, sheet_length
 from .params import BoatParams
 
 __all__ = ["REFERENCE_WIND", "SAIL_MODES", "SERVO_ERROR", "SERVO_FREQUENCY", "TIMESTEP", "boat_spec",
-           "boat_xml", "compile_model", "hull_inertial", "scene_for", "scene_xml", "sheet_angle",
+           "boat_xml", "compile_model", "hull_inertial", "scene_for", "scene_xml",
            "sheet_geometry", "sheet_length", "write_default_xml", "xml_root"]
 
 SAIL_MODES = choices(SailMode)

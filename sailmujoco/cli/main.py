@@ -4,10 +4,10 @@
 ``list``              :func:`sailmujoco.cli.listing.run_cli`
 ``check``             :func:`sailmujoco.cli.health.run_cli`
 ``sweep FILE``        :func:`sailmujoco.cli.sweep.run_cli`
-``polar BOAT``        :func:`sailmujoco.polar.run_cli`
+``polar BOAT``        :func:`sailmujoco.cli.polar.run_cli`
 ``study NAME``        :func:`sailmujoco.cli.study.run_studies`
-``video BOAT TASK``   :func:`sailmujoco.video.run_cli`
-``view BOAT TASK``    :func:`sailmujoco.viewer.view.run_cli`
+``video BOAT TASK``   :func:`sailmujoco.cli.video.run_cli`
+``view BOAT TASK``    :func:`sailmujoco.cli.view.run_cli`
 ``boat ACTION``       :func:`sailmujoco.cli.boat.run_cli`
 ====================  =============================================================
 
@@ -21,11 +21,8 @@ import argparse
 import sys
 from importlib import metadata
 
-from .. import polar, video
-from ..options import World, choices
-from ..viewer import view
 from . import boat as boat_cli
-from . import health, listing
+from . import health, listing, polar, video, view
 from . import study as study_runner
 from . import sweep as sweep_cli
 from .arguments import (
@@ -34,10 +31,8 @@ from .arguments import (
     SEED,
     WORKERS,
     HelpFormatter,
-    floats,
     number,
     out_folder,
-    setting,
 )
 
 EXAMPLES = """examples:
@@ -92,7 +87,7 @@ def build_parser() -> argparse.ArgumentParser:
     _add_list(sub)
     _add_check(sub)
     _add_sweep(sub)
-    _add_polar(sub)
+    polar.add_parser(sub)
     _add_study(sub)
     video.add_parser(sub)
     view.add_parser(sub)
@@ -172,39 +167,6 @@ def _add_sweep(sub) -> None:
                             "is not retried)")
     sweep.add_argument("--no-progress", action="store_true", help="no progress bar")
     sweep.set_defaults(func=sweep_cli.run_cli)
-
-
-def _add_polar(sub) -> None:
-    parser = sub.add_parser("polar", help="polar diagram (speed vs true wind angle) of a boat",
-                            formatter_class=HelpFormatter, description=polar.DESCRIPTION,
-                            epilog="examples:\n"
-                                   "  sailmujoco polar saoud_robot --controller saoud --compare best,briere\n"
-                                   "  sailmujoco polar wille_yacht --controller my_law.py:make "
-                                   "--option gain=0.5 --tws 3,6 --twa 40:180:20 --workers 2")
-    parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
-    parser.add_argument("--controller", default="saoud",
-                        help="sail law + heading rudder by name (saoud, briere, pid, best, ...), "
-                             "module:factory or file.py:factory")
-    parser.add_argument("--option", type=setting, action="append", default=[], metavar="KEY=VALUE",
-                        help="a keyword of --controller's factory, e.g. kp=2.0 (repeatable); the "
-                             "controllers of --compare run with their defaults")
-    parser.add_argument("--compare", help="other controllers to compare, comma separated "
-                                          "('best' = brute-force fixed-sail vel_max)")
-    parser.add_argument("--world", default="mujoco", choices=choices(World),
-                        help="mujoco: the 6-DOF boat; paper: the paper's reduced model")
-    parser.add_argument("--tws", type=floats, default=[2.0, 4.0, 6.0],
-                        help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
-    parser.add_argument("--twa", type=floats, default=[float(a) for a in range(30, 181, 15)],
-                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step'")
-    parser.add_argument("--seconds", type=POSITIVE_SECONDS, default=60.0,
-                        help="simulated seconds per point")
-    parser.add_argument("--duration", dest="seconds", type=POSITIVE_SECONDS, default=argparse.SUPPRESS,
-                        help=argparse.SUPPRESS)  # the same option, under the sweep file's name
-    parser.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
-    parser.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
-    parser.add_argument("--workers", type=WORKERS, help="worker processes (0 or unset: all cores)")
-    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
-    parser.set_defaults(func=polar.run_cli)
 
 
 def main(argv=None) -> int:

@@ -6,14 +6,15 @@ Example::
     video.record("wille_yacht", "beam_reach_roll", "wille_roll", "beam_reach.mp4", seconds=30)
 
 or ``sailmujoco video wille_yacht beam_reach_roll --controller wille_roll --seconds 30
---out beam_reach.mp4`` (``python -m sailmujoco.video ...`` takes the same arguments).
+--out beam_reach.mp4`` (``python -m sailmujoco.video ...`` takes the same arguments; the command
+is :mod:`sailmujoco.cli.video`).
 
 What a frame shows
     On the left, the 3-D scene: the boat as MuJoCo draws it (hull, keel, mast, boom and sail on
     the ``sail`` joint, rudder blade on the ``rudder`` joint), heeling and pitching with the hull,
     on a see-through sea with a wave texture that moves under the camera, deep blue water under
     it and a sky gradient above (:mod:`~sailmujoco.video.water`); in a sea (``waves``, or the
-    simulation's own; ``--waves KEY=VALUE`` on the command line, :mod:`~sailmujoco.video.sea_option`)
+    simulation's own; ``--waves KEY=VALUE`` on the command line, :mod:`sailmujoco.cli.waves`)
     the surface around the boat moves with the waves' elevation, lit by a low sun over the
     waves' bearing (:mod:`~sailmujoco.video.sea`). Added to MuJoCo's scene: the
     true-wind arrow centred just above the masthead (cyan, pointing where the wind blows to,
@@ -71,12 +72,10 @@ Modules
     ``overlays``: the arrows and target circles; ``panel``: the map and the numbers beside the
     scene; ``recording``: :func:`record`,
     :class:`Recording`, :func:`record_study_scenario`; ``gl``: the OpenGL platform and
-    :class:`RenderingUnavailable`; ``command``: the ``sailmujoco video`` command.
+    :class:`RenderingUnavailable`.
 """
 
-from ..cli.arguments import check_settings
 from .camera import FollowCamera, boom_angle, yaw_of
-from .command import add_parser, main, run_cli
 from .gl import FIX, RenderingUnavailable, check_rendering
 from .overlays import COLOURS, FORCES, MAX_ARROW, WIND_ARROW_PER_MPS
 from .panel import KNOT, MapView
@@ -104,8 +103,7 @@ from .water import SEA_ALPHA
 
 __all__ = ["CAMERAS", "COLOURS", "FIX", "FORCES", "FORCE_ARROW", "FORCE_SITES", "KNOT", "MAX_ARROW",
            "REFERENCE_WIND", "SEA_ALPHA", "WIND_ARROW_PER_MPS", "FollowCamera", "MapView", "Recording",
-           "RenderingUnavailable", "boom_angle",
-           "SceneRenderer", "Snapshot", "add_parser", "check_rendering", "check_settings",
-           "close_outward", "display_model", "frames_between_substeps", "main", "record",
-           "record_study_scenario", "run_cli", "scene_of", "simulated_sea", "snapshot_observation",
+           "RenderingUnavailable", "SceneRenderer", "Snapshot", "boom_angle", "check_rendering",
+           "close_outward", "display_model", "frames_between_substeps", "record",
+           "record_study_scenario", "scene_of", "simulated_sea", "snapshot_observation",
            "snapshot_physics", "yaw_of"]

@@ -1,7 +1,7 @@
-"""``python -m sailmujoco.video``: the ``video`` command on its own."""
+"""``python -m sailmujoco.video``: the ``video`` command on its own (:mod:`sailmujoco.cli.video`)."""
 
 import sys
 
-from .command import main
+from ..cli.video import main
 
 sys.exit(main())

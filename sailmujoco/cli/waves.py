@@ -12,10 +12,9 @@ from __future__ import annotations
 
 import argparse
 
-from ..cli.arguments import setting
-from ..forces.waves import N_COMPONENTS
 from ..names import check_known
-from ..options import WAVE_OPTIONS, wave_config
+from ..options import N_COMPONENTS, WAVE_OPTIONS, wave_config
+from .arguments import setting
 
 
 def add_waves_argument(parser: argparse.ArgumentParser) -> None:

@@ -6,7 +6,12 @@ import argparse
 import sys
 import textwrap
 
-from ..cli.arguments import (
+from ..errors import ControllerFailed
+from ..options import World, choices
+from ..video.gl import FIX, RenderingUnavailable
+from ..video.recording import record
+from ..video.scene import CAMERAS
+from .arguments import (
     SEED,
     HelpFormatter,
     add_controller_arguments,
@@ -15,12 +20,7 @@ from ..cli.arguments import (
     file_argument,
     setting,
 )
-from ..errors import ControllerFailed
-from ..options import World, choices
-from .gl import FIX, RenderingUnavailable
-from .recording import record
-from .scene import CAMERAS
-from .sea_option import add_waves_argument, waves_from_arguments
+from .waves import add_waves_argument, waves_from_arguments
 
 EXAMPLES = """examples:
   sailmujoco video wille_yacht heading_hold --controller pid --out results/pid.mp4

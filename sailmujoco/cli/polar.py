@@ -1,0 +1,161 @@
+"""``sailmujoco polar BOAT --controller NAME``: the command and its arguments.
+
+The polar itself is :mod:`sailmujoco.polar`.
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from ..boat.catalogue import boat_label, get_boat
+from ..options import World, choices
+from ..polar import (
+    STEADY_WINDOW_S,
+    best_vmg,
+    comparison_markdown,
+    comparison_table,
+    finished_points,
+    first_failure,
+    plot_comparison,
+    plot_polar,
+    ratio_summary,
+    sweep_table,
+)
+from ..sweep import controller_label
+from .arguments import (
+    POSITIVE_SECONDS,
+    WORKERS,
+    HelpFormatter,
+    controller_options,
+    floats,
+    out_folder,
+    setting,
+)
+
+DESCRIPTION = f"""\
+The steady speed of BOAT at every true wind speed x true wind angle, each point a heading_hold
+run in a steady wind (no gusts) from TWA off the starboard bow, its speed the mean over the
+last {STEADY_WINDOW_S:g} s. Writes polar_<controller>.png and .csv into --out, and prints the best VMG upwind
+and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept."""
+
+
+def add_parser(subparsers) -> argparse.ArgumentParser:
+    """Add ``polar`` to the ``sailmujoco`` sub-commands.
+
+    Parameters
+    ----------
+    subparsers : argparse._SubParsersAction
+        From ``ArgumentParser.add_subparsers``.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The ``polar`` parser.
+    """
+    parser = subparsers.add_parser(
+        "polar", help="polar diagram (speed vs true wind angle) of a boat",
+        formatter_class=HelpFormatter, description=DESCRIPTION,
+        epilog="examples:\n"
+               "  sailmujoco polar saoud_robot --controller saoud --compare best,briere\n"
+               "  sailmujoco polar wille_yacht --controller my_law.py:make "
+               "--option gain=0.5 --tws 3,6 --twa 40:180:20 --workers 2")
+    parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
+    parser.add_argument("--controller", default="saoud",
+                        help="sail law + heading rudder by name (saoud, briere, pid, best, ...), "
+                             "module:factory or file.py:factory")
+    parser.add_argument("--option", type=setting, action="append", default=[], metavar="KEY=VALUE",
+                        help="a keyword of --controller's factory, e.g. kp=2.0 (repeatable); the "
+                             "controllers of --compare run with their defaults")
+    parser.add_argument("--compare", help="other controllers to compare, comma separated "
+                                          "('best' = brute-force fixed-sail vel_max)")
+    parser.add_argument("--world", default="mujoco", choices=choices(World),
+                        help="mujoco: the 6-DOF boat; paper: the paper's reduced model")
+    parser.add_argument("--tws", type=floats, default=[2.0, 4.0, 6.0],
+                        help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
+    parser.add_argument("--twa", type=floats, default=[float(a) for a in range(30, 181, 15)],
+                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step'")
+    parser.add_argument("--seconds", type=POSITIVE_SECONDS, default=60.0,
+                        help="simulated seconds per point")
+    parser.add_argument("--duration", dest="seconds", type=POSITIVE_SECONDS, default=argparse.SUPPRESS,
+                        help=argparse.SUPPRESS)  # the same option, under the sweep file's name
+    parser.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
+    parser.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
+    parser.add_argument("--workers", type=WORKERS, help="worker processes (0 or unset: all cores)")
+    parser.add_argument("--no-progress", action="store_true", help="no progress bar")
+    parser.set_defaults(func=run_cli)
+    return parser
+
+
+def run_cli(args) -> int:
+    """The ``polar`` sub-command: the polar of a boat and sail law (and comparisons), PNG + CSV.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``boat``, ``controller``, ``option`` (``(key, value)`` pairs of the controller's
+        options), ``compare`` (comma separated, or None), ``world``, ``tws``,
+        ``twa``, ``seconds`` (simulated seconds per point), ``out``, ``scheduler``, ``workers``,
+        ``no_progress``.
+
+    Returns
+    -------
+    int
+        0; 2 where a point failed (one line on stderr: why the first failed point failed and
+        when; the CSVs written so far are kept).
+    """
+    get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    if args.option and args.controller == "best":
+        raise ValueError("--option: 'best' is every fixed sail angle and takes no options")
+    own = {} if args.controller == "best" else controller_options(args)  # checked before any run
+    label = controller_label(args.controller)
+    out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
+    names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
+    frames, kept = {}, []
+    for name in names:
+        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
+              f"({args.world}, {args.seconds:g} s per point)")
+        table, spec = sweep_table(args.boat, name, out, tws=args.tws, twa=args.twa,
+                                  world=args.world, duration=args.seconds,
+                                  scheduler=args.scheduler, workers=args.workers,
+                                  progress=not args.no_progress,
+                                  options={f"controller.{key}": value for key, value in own.items()}
+                                  if name == args.controller else None)
+        frames[name] = finished_points(table, name)
+        csv = out / f"polar_{controller_label(name)}.csv"
+        frames[name].to_csv(csv, index=False)
+        n_points = len(frames[name])
+        kept.append(f"{csv} ({n_points} point{'' if n_points == 1 else 's'})")
+        failure = first_failure(table, spec, name)
+        if failure is not None:
+            failed = int((table["status"] == "failed").sum())
+            print(f"sailmujoco polar: {failure}; {failed} of {len(table)} runs failed; kept what "
+                  f"finished: {', '.join(kept)}", file=sys.stderr)
+            return 2
+    main_frame = frames[args.controller]
+    png = out / f"polar_{controller_label(args.controller)}.png"
+    plot_polar(main_frame, png, f"{boat_label(args.boat)}, {args.controller} ({args.world})")
+    for tws, best in best_vmg(main_frame).items():
+        (au, vu), (ad, vd) = best["upwind"], best["downwind"]
+        print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
+              f"downwind {vd:.2f} m/s at {ad:g} deg")
+    print(f"wrote {png} and {out / f'polar_{controller_label(args.controller)}.csv'}")
+    if len(frames) > 1:
+        _write_comparison(args, frames, out)
+    return 0
+
+
+def _write_comparison(args, frames: dict, out: Path) -> None:
+    """compare.png, compare.csv and compare.md of the ``--compare`` sail laws."""
+    compare = out / "compare.png"
+    plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
+    table = comparison_table(frames)
+    table.to_csv(out / "compare.csv", index=False)
+    command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
+    settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
+                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.seconds:g} s per point")
+    summary = ratio_summary(table)
+    (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
+                                    encoding="utf-8")
+    print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")
