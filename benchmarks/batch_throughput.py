@@ -3,7 +3,7 @@
 Run: python benchmarks/batch_throughput.py [--sizes 1 10 100 1000] [--plot docs/throughput_vs_n.png]
 
 For each N, N Saoud robots (all forces on, geometric hydrostatics, gusty wind, each its own
-seed) step 0.1 s control periods (20 sub-steps) through :class:`sailmujoco.step.batch.BoatBatch`,
+seed) step 0.1 s control periods (20 sub-steps) through :class:`sailmujoco.batch.BoatBatch`,
 one compiled call per control period on all cores (numba threads), and one at a time through
 ``BoatPhysics.step(20)`` for comparison. "bare" is ``mujoco.mj_step`` of the same model on one
 MjData in one thread, measured in the same run: the ratio 1.0 means "as fast as bare MuJoCo,
@@ -20,9 +20,9 @@ import time
 import mujoco
 import numpy as np
 
+from sailmujoco.batch import BoatBatch
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics
-from sailmujoco.step.batch import BoatBatch
 
 
 def robots(n: int) -> list[BoatPhysics]:

@@ -25,7 +25,7 @@ import math
 import numpy as np
 
 from sailmujoco.forces.sail import saoud_normal_coefficient
-from sailmujoco.step.jit import clear_stale_cache, kernel
+from sailmujoco.jit.kernel import clear_stale_cache, kernel
 
 from .saoud_model import (
     BRANCH_TOL,

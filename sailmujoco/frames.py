@@ -50,7 +50,7 @@ def wrap_angle(angle):
 
     The package's one angle wrap. It runs on a Python float (Python's ``%``), on a numpy
     scalar or array (numpy's remainder) and inside a compiled kernel (numba compiles it into
-    its caller, with the kernels' flags of :func:`sailmujoco.step.jit.kernel`). All three
+    its caller, with the kernels' flags of :func:`sailmujoco.jit.kernel.kernel`). All three
     take C's ``fmod`` and move a remainder of the wrong sign onto the divisor's side, so a
     float, an array element and a kernel give the same bits for the same angle.
 

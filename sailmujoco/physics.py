@@ -47,11 +47,11 @@ from .forces.kernel_arguments import kernel_call
 from .forces.sea_kernels import sea_arrays
 from .forces.wind import WANDER_DT, WindConfig, WindField
 from .gl_platform import import_dm_control_mujoco
+from .jit.kernel import entry_point
 from .measurement.accessors import BoatAccessors
 from .options import ForceSwitches, WaveConfig, check_sea  # re-exported: physics.ForceSwitches
 from .step import native, registry
 from .step.four_dof import FourDofStage, csr_address
-from .step.jit import entry_point
 
 _dm = import_dm_control_mujoco()  # dm_control with no GL library loaded until a render asks
 engine, core = _dm.engine, _dm.wrapper.core
@@ -387,7 +387,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             raise control.PhysicsError(self._warnings_message())
 
     def begin_batch_step(self, nstep: int) -> np.ndarray:
-        """Get ready for ``nstep`` sub-steps taken by :class:`sailmujoco.step.batch.BoatBatch`.
+        """Get ready for ``nstep`` sub-steps taken by :class:`sailmujoco.batch.BoatBatch`.
 
         Parameters
         ----------

@@ -197,7 +197,7 @@ def _boat_params(boat, params, boat_options: dict) -> BoatParams:
 
 def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = None,
                seeds=None, options=None, **common):
-    """N environments stepped together (:class:`sailmujoco.step.batch.BatchEnvironment`).
+    """N environments stepped together (:class:`sailmujoco.batch.BatchEnvironment`).
 
     In the MuJoCo world (6 or 4 DOF) the boats step in one compiled call on all cores; every
     environment behaves exactly as ``load(boat, task, world, seed=..., **options)``.
@@ -216,7 +216,7 @@ def load_batch(boat: str, task: str, world: str = "mujoco", *, n: int | None = N
     **common
         :func:`load` keywords shared by every environment.
     """
-    from .step.batch import BatchEnvironment
+    from .batch import BatchEnvironment
 
     if seeds is None:
         if n is None:

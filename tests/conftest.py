@@ -3,7 +3,7 @@
 import math
 import os
 
-# The compile notice (sailmujoco.step.compile_notice) would add lines to the output that tests read
+# The compile notice (sailmujoco.jit.notice) would add lines to the output that tests read
 # exactly when CI starts with a cold kernel cache; tests/test_compile_progress.py checks it.
 os.environ.setdefault("SAILMUJOCO_QUIET", "1")
 

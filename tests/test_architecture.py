@@ -11,7 +11,7 @@ import sailmujoco
 LIBRARY = Path(sailmujoco.__file__).parent
 # the rooms, as dotted names: the model (a boat's parameters, the force models) at the bottom, and
 # what is built on the simulation (which the model never imports)
-MODEL_ROOMS = ("sailmujoco.forces", "sailmujoco.boat")
+MODEL_ROOMS = ("sailmujoco.jit", "sailmujoco.boat", "sailmujoco.forces", "sailmujoco.step")
 CLIENT_ROOMS = ("sailmujoco.gym", "sailmujoco.cli", "sailmujoco.video", "sailmujoco.viewer",
                 "sailmujoco.sweep")
 COMMAND_LINE = ("sailmujoco.cli",)
@@ -190,16 +190,16 @@ def test_the_room_rules_read_rooms_by_their_dotted_names():
     an edge is reported from its importer's file and line."""
     assert _in("sailmujoco.cli", COMMAND_LINE) and _in("sailmujoco.cli.video", COMMAND_LINE)
     assert not _in("sailmujoco.client", COMMAND_LINE) and not _in("sailmujoco", COMMAND_LINE)
-    graph = {"sailmujoco.boat.check": {"sailmujoco.sweep.engine": ("b.py", 3),
-                                       "sailmujoco.sweeps": ("b.py", 4)},
+    graph = {"sailmujoco.boat.mjcf": {"sailmujoco.sweep.engine": ("b.py", 3),
+                                    "sailmujoco.sweeps": ("b.py", 4)},
              "sailmujoco.gym.env": {"sailmujoco.video": ("g.py", 5)}}
     found = _crossings(graph, lambda m: _in(m, MODEL_ROOMS), lambda m: _in(m, CLIENT_ROOMS))
     assert found == ["b.py:3 imports sailmujoco.sweep.engine"]
 
 
 def test_the_model_does_not_import_what_is_built_on_it():
-    """Nothing under sailmujoco/forces/ or sailmujoco/boat/ imports, at any level, the Gymnasium
-    adapter, the command line, the videos, the viewer or the sweeps."""
+    """Nothing under sailmujoco/jit/, boat/, forces/ or step/ imports, at any level, the
+    Gymnasium adapter, the command line, the videos, the viewer or the sweeps."""
     problems = _crossings(_import_graph(), lambda m: _in(m, MODEL_ROOMS), lambda m: _in(m, CLIENT_ROOMS))
     assert not problems, "the model imports a room built on it:\n  " + "\n  ".join(problems)
 
@@ -407,7 +407,7 @@ def test_no_study_imports_another():
 
 
 MAX_MODULE_LINES, MAX_FUNCTION_LINES = 500, 80
-NUMBA_DECORATORS = {"kernel", "njit", "jit", "cfunc"}  # @kernel (sailmujoco.step.jit), numba's own
+NUMBA_DECORATORS = {"kernel", "njit", "jit", "cfunc"}  # @kernel (sailmujoco.jit.kernel), numba's own
 ARCHITECTURE = REPO / "docs" / "architecture.md"
 
 

@@ -1,4 +1,4 @@
-"""Boats stepped together (sailmujoco/step/batch.py) follow the trajectories they follow alone.
+"""Boats stepped together (sailmujoco/batch.py) follow the trajectories they follow alone.
 
 The batch runs the boats in numba threads through one compiled call; each boat's forces come
 from its own arrays (found by its MjData), so every boat must match its solo run exactly:
@@ -12,9 +12,9 @@ import math
 import numpy as np
 import pytest
 
+from sailmujoco.batch import BoatBatch
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
-from sailmujoco.step.batch import BoatBatch
 
 FLEET = [("saoud_robot", "geometric", 0), ("saoud_robot", "paper", 1), ("wille_yacht", "geometric", 2),
          ("viel_boat", "paper", 3), ("wille_yacht", "paper", 4),

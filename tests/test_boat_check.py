@@ -21,7 +21,7 @@ from conftest import CALM
 
 from sailmujoco import frames
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.boat.check import natural_periods
+from sailmujoco.design.check import natural_periods
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 BOATS = ("wille_yacht", "saoud_robot", "viel_boat")

@@ -13,10 +13,10 @@ from sailmujoco import suite, sweep
 from sailmujoco.boat import file as boat_file
 from sailmujoco.boat import hull, mjcf
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.boat.check import check_boat
 from sailmujoco.boat.schema import KEYS, SECTION_TYPES
 from sailmujoco.cli.main import main
 from sailmujoco.constants import GRAVITY
+from sailmujoco.design.check import check_boat
 
 RHO = 1025.0  # kg/m^3, the built-in boats' sea water
 

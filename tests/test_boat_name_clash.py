@@ -3,11 +3,11 @@ in one line; an unedited export or a renamed boat is not."""
 
 import pytest
 
-from sailmujoco.boat import check as boat_check
 from sailmujoco.boat import file as boat_file
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.cli.main import main
-from sailmujoco.step import compile_notice
+from sailmujoco.design import check as boat_check
+from sailmujoco.jit import notice as compile_notice
 
 
 def _edited(tmp_path, name=None):

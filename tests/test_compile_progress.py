@@ -12,11 +12,11 @@ import sys
 
 import pytest
 
-from sailmujoco.step import compile_notice
-from sailmujoco.step.compile_notice import CompileNotice
+from sailmujoco.jit import notice as compile_notice
+from sailmujoco.jit.notice import CompileNotice
 
 SCRIPT = """
-from sailmujoco.step import compile_notice
+from sailmujoco.jit import notice as compile_notice
 compile_notice.NOTICE.announce_after = 0.0
 from sailmujoco.forces import finite_wing
 print(finite_wing.helmbold_lift_slope(6.28, 5.0), finite_wing.viterna_corrigan_cd_max(5.0))

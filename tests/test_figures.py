@@ -98,7 +98,7 @@ def test_the_robots_righting_curve_is_in_newton_metres(monkeypatch, tmp_path):
 
 
 def test_polar_figures_say_where_the_wind_comes_from(monkeypatch, tmp_path):
-    from sailmujoco import polar
+    from sailmujoco.design import polar
 
     frame = pd.DataFrame({"tws": [2.0] * 4 + [4.0] * 4, "twa": [45.0, 90.0, 135.0, 180.0] * 2,
                           "speed": [0.3, 0.5, 0.4, 0.35, 0.6, 0.9, 0.8, 0.7]})

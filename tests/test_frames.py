@@ -83,7 +83,7 @@ def _random_angles(rng):
 
 def test_wrap_angle_on_floats_arrays_and_in_a_kernel_gives_the_written_bits(rng):
     """The wrap returns the bits of the expression written out, on Python floats, on numpy
-    arrays and compiled in a numba kernel (the kernels' flags of sailmujoco.step.jit)."""
+    arrays and compiled in a numba kernel (the kernels' flags of sailmujoco.jit.kernel)."""
     import numba
 
     angles = _random_angles(rng)

@@ -14,9 +14,9 @@ import pytest
 from conftest import BOATS, hull_solid_below_water
 
 from sailmujoco import frames
-from sailmujoco.boat import stability
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
+from sailmujoco.forces import stability
 
 # m: Wille Appendix A; Saoud l_phi = 1 m; viel_boat's design GM (Viel's planar model has none:
 # xml/viel_boat/README.md)

@@ -8,9 +8,10 @@ import pytest
 from conftest import BOATS, CALM, hull_solid_below_water, load, only_hull
 
 from sailmujoco import frames
-from sailmujoco.boat import hull, stability
+from sailmujoco.boat import hull
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
+from sailmujoco.forces import stability
 from sailmujoco.forces.hydrostatics import paper_restoring
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 

@@ -14,8 +14,9 @@ import numpy as np
 import pytest
 from test_view import xvfb  # noqa: F401  (the fixture: a virtual X server, skipped as there)
 
-from sailmujoco import polar, suite, sweep
+from sailmujoco import suite, sweep
 from sailmujoco.cli.main import main
+from sailmujoco.design import polar
 from sailmujoco.sweep import SweepError
 
 LAW = textwrap.dedent('''

@@ -12,7 +12,7 @@ away), each a run of a few control periods with changing commands, then the diag
   and CPU flags, an AMD and an Intel one, a masthead wind differed in its last bit), so every
   number of it is compared to 1e-9 relative here;
 * against the same source run in the interpreter (``NUMBA_DISABLE_JIT=1``, a subprocess), the
-  reference path of every kernel (:mod:`sailmujoco.step.jit`).
+  reference path of every kernel (:mod:`sailmujoco.jit.kernel`).
 """
 
 from __future__ import annotations

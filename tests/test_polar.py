@@ -3,8 +3,8 @@
 import pandas as pd
 import pytest
 
-from sailmujoco import polar
 from sailmujoco.cli.main import main
+from sailmujoco.design import polar
 
 
 def test_best_vmg_picks_the_right_angles():

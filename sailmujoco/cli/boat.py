@@ -5,7 +5,7 @@
     sailmujoco boat export wille_yacht --out my_boat.toml   # every key with its unit and source
     sailmujoco boat check my_boat.toml --out results/boat/my_boat --wind 6
 
-``check`` prints the numbers of :func:`sailmujoco.boat.check.check_boat` and writes ``gz.png``;
+``check`` prints the numbers of :func:`sailmujoco.design.check.check_boat` and writes ``gz.png``;
 a bad file is one line per bad key on stderr and exit status 2. A file that keeps a built-in
 boat's name with other parameters gets a one-line warning on stderr
 (:func:`sailmujoco.boat.file.name_clash`).
@@ -90,7 +90,7 @@ def run_cli(args) -> int:
             Path(args.out).write_text(text)
             print(f"wrote {args.out}", file=sys.stderr)
         return 0
-    from ..boat.check import check_boat
+    from ..design.check import check_boat
 
     params = get_boat(args.file)  # a bad file: one line per bad key, before anything is written
     clash = name_clash(params, args.file) if is_boat_file(args.file) else None

@@ -136,7 +136,7 @@ def righting_line(params) -> str:
     params : BoatParams
         The boat.
     """
-    from ..boat import stability
+    from ..forces import stability
 
     small = math.radians(2.0)
     moment = stability.righting_moment(params, small)
@@ -156,7 +156,7 @@ def plot_righting_curve(params, path: Path) -> None:
         The PNG written.
     """
     from .. import figures
-    from ..boat import stability
+    from ..forces import stability
 
     plt = figures.pyplot()
     heel = np.radians(np.linspace(0.0, 89.0, 90))

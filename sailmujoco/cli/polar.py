@@ -1,6 +1,6 @@
 """``sailmujoco polar BOAT --controller NAME``: the command and its arguments.
 
-The polar itself is :mod:`sailmujoco.polar`.
+The polar itself is :mod:`sailmujoco.design.polar`.
 """
 
 from __future__ import annotations
@@ -10,8 +10,7 @@ import sys
 from pathlib import Path
 
 from ..boat.catalogue import boat_label, get_boat
-from ..options import World, choices
-from ..polar import (
+from ..design.polar import (
     STEADY_WINDOW_S,
     best_vmg,
     comparison_markdown,
@@ -23,6 +22,7 @@ from ..polar import (
     ratio_summary,
     sweep_table,
 )
+from ..options import World, choices
 from ..sweep import controller_label
 from .arguments import (
     POSITIVE_SECONDS,

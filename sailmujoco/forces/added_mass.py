@@ -58,7 +58,7 @@ computed here adds back A1 (omega x v_r).
 
 from __future__ import annotations
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 
 @kernel

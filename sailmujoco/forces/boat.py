@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .added_mass import added_mass_velocity_terms
 from .boat_parameters import (
     P_A1,

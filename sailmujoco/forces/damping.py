@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 # Below this Reynolds number eq. 16 is outside its range (it is singular at Re = 100);
 # C_F is held at its value here (the hull then moves at < 2 cm/s and linear damping rules).

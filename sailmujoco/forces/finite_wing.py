@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from ..frames import wrap_angle
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .damping import ittc_friction_coefficient
 from .foil_sections import section_coefficients
 

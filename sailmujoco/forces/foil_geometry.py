@@ -27,7 +27,7 @@ from __future__ import annotations
 
 import math
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 
 @kernel

@@ -15,7 +15,7 @@ from importlib import resources
 import numpy as np
 
 from ..frames import wrap_angle
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .damping import ittc_friction_coefficient
 
 

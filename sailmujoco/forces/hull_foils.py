@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import math
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .finite_wing import finite_hydrofoil_coefficients
 from .foil_geometry import foil_world_force, lift_drag_components, section_flow
 from .foil_sections import hydrofoil_coefficients

@@ -24,7 +24,7 @@ from fractions import Fraction
 
 import numpy as np
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 _PI_HALF = Fraction("1.5707963267948966192313216916397514420985846996875529")
 _LN2 = Fraction("0.69314718055994530941723212145817656807550013436025525")

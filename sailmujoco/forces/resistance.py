@@ -71,7 +71,7 @@ import numpy as np
 
 from ..boat import hull as hull_geometry
 from ..constants import GRAVITY
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 # ---- Keuning & Katgert (2008), Fossati (2009) Table 2.5: upright residuary resistance -------
 UPRIGHT_FROUDE = np.array([0.15, 0.20, 0.25, 0.30, 0.35, 0.40, 0.45, 0.50, 0.55, 0.60, 0.65,

@@ -12,7 +12,7 @@ import math
 
 import numpy as np
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .finite_wing import finite_sail_normal_coefficient
 from .foil_geometry import foil_world_force, section_flow
 

@@ -43,7 +43,7 @@ the damping it has in calm water; added resistance in waves; green water; the se
 from __future__ import annotations
 
 from ..boat.hull_grid import GRID_ROWS, GRID_STATIONS
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .hydrostatics import buoyancy_wrench
 from .lane_math import sincos
 

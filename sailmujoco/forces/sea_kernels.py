@@ -25,8 +25,8 @@ import math
 import numpy as np
 
 from ..boat.hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
+from ..jit.kernel import kernel
 from ..options import WaveConfig
-from ..step.jit import kernel
 from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
 from .waves import RAMP_PERIODS, components

@@ -59,7 +59,7 @@ import math
 
 import numpy as np
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .hydrostatics import buoyancy_wrench
 
 

@@ -13,7 +13,7 @@ import math
 
 import numpy as np
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 
 @kernel

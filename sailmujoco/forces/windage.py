@@ -36,7 +36,7 @@ import math
 
 import numpy as np
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 C_X_TOPSIDES = 0.7  # -, Fossen (2011) §8.1: c_x in [0.50, 0.90]; middle of the range
 C_Y_TOPSIDES = 0.8  # -, Fossen (2011) §8.1: c_y in [0.70, 0.95]; middle of the range

@@ -99,7 +99,7 @@ class SailVectorEnv(gymnasium.vector.VectorEnv):
 
     @property
     def batch(self):
-        """The underlying :class:`sailmujoco.step.batch.BatchEnvironment`."""
+        """The underlying :class:`sailmujoco.batch.BatchEnvironment`."""
         return self._batch
 
     def _observations(self, timesteps):

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 _DBL_MIN = 2.2250738585072014e-308  # the smallest normal double
 _SPLIT = 134217729.0  # Veltkamp's constant 2**27 + 1

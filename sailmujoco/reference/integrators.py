@@ -20,7 +20,7 @@ import math
 import numpy as np
 from scipy.integrate import solve_ivp
 
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 
 INTEGRATORS = ("rk4", "rk45")  # a paper world's integrator=...: fixed-step RK4, or solve_ivp's RK45
 STATUS_OK, STATUS_RAN_AWAY, STATUS_NONFINITE = 0, 1, 2

@@ -16,7 +16,7 @@ import numpy as np
 
 from ..forces.wind import wind_velocity
 from ..frames import wrap_angle
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .hypot import hypot
 from .integrators import DOMAIN_ERROR, STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
 

@@ -24,7 +24,7 @@ from ..forces.foil_sections import hydrofoil_coefficients
 from ..forces.hydrostatics import paper_righting_moment
 from ..forces.sail import flat_sail_force
 from ..forces.wind import wind_velocity
-from ..step.jit import kernel
+from ..jit.kernel import kernel
 from .integrators import STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
 
 TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")

@@ -4,7 +4,7 @@ A part of :class:`sailmujoco.physics.BoatPhysics` (a mixin, in a module of its o
 kernel sees the hull as if free (a pseudo free-joint qpos/qvel), and the forces and added mass
 it gives are mapped back onto MuJoCo's x, y, yaw and roll joints. With geometric hydrostatics
 the held pose would over-displace the heeled hull, so the hydrostatics come from the freely
-floating hull at the current heel (:class:`sailmujoco.boat.stability.FloatingTable`).
+floating hull at the current heel (:class:`sailmujoco.forces.stability.FloatingTable`).
 
 The compiled stage is :func:`sailmujoco.step.native.forces_4dof`; the methods here are its Python
 reference (``BoatPhysics.compiled_loop`` False), the same operations in Python and numpy.
@@ -17,12 +17,12 @@ import math
 
 import numpy as np
 
-from ..boat import stability
 from ..boat.params import BoatParams
 from ..forces import boat as kernels
+from ..forces import stability
 from ..forces.boat_parameters import HYDROSTATIC_MODES, P_G, P_HYDRO_MODE, P_K_HEAVE
+from ..jit.kernel import entry_point
 from . import native, registry
-from .jit import entry_point
 
 # the compiled 4-DOF stage, called past numba's type dispatch (one signature)
 FORCES_4DOF = entry_point(native.forces_4dof)

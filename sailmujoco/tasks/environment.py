@@ -26,7 +26,7 @@ class SailEnvironment(control.Environment):
     the episode had left.
 
     A step is dm_control's, in two halves around the physics so that a batch
-    (:class:`sailmujoco.step.batch.BatchEnvironment`) can step the physics of many environments in
+    (:class:`sailmujoco.batch.BatchEnvironment`) can step the physics of many environments in
     one call between them: :meth:`before_physics` (the action), the physics, :meth:`after_physics`
     (record, reward, observation, the TimeStep).
     """

@@ -10,8 +10,8 @@ from dataclasses import dataclass
 import numpy as np
 import pandas as pd
 
-from sailmujoco.boat import stability
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.forces import stability
 from sailmujoco.study import Results
 
 from ..kit import verdict

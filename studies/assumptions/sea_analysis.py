@@ -28,7 +28,7 @@ import pandas as pd
 
 from sailmujoco import constants
 from sailmujoco.boat.catalogue import get_boat
-from sailmujoco.boat.check import natural_periods
+from sailmujoco.design.check import natural_periods
 from sailmujoco.forces.wave_spectra import pierson_moskowitz
 from sailmujoco.forces.waves import components
 from sailmujoco.options import WaveConfig
@@ -452,7 +452,7 @@ def roll_resonance(n_components: int) -> dict:
     """Why a sea rolls the boats: each boat's roll period and the waves it meets, and the
     fully developed seas ``SEA_HS``' slopes.
 
-    ``boats``: one row per boat, ``t4`` (the roll period with sway free, :func:`sailmujoco.boat.check.natural_periods`, s), ``wavelength``
+    ``boats``: one row per boat, ``t4`` (the roll period with sway free, :func:`sailmujoco.design.check.natural_periods`, s), ``wavelength``
     (deep-water waves of that period, g T4^2/(2 pi), m), ``length`` (the hull's, m).
     ``seas``: one row per Hs of :data:`.sea.SEA_HS`, ``tp`` (s), ``tp_over_t4`` (the yacht's),
     ``omega4_over_omegap`` (the robot's roll frequency over the sea's peak), ``slope_density`` (the wave slope spectrum (omega^2/g)^2 S(omega) at the robot's roll

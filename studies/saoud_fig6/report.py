@@ -246,7 +246,7 @@ saturated at 35°, exactly as the 6-DOF robot does (rows 3-4 and 13-14).
 
 *Righting moment.* The geometric hull at l_φ = 0.1 m (CG 6 cm above the waterline, beam
 0.36 m, freeboard 0.12 m) gives Saoud's m g l_φ sin φ only up to ≈ 15° of heel, 38 % less at
-30°; it peaks at 4.8 N m near 40° and vanishes near 75° (`sailmujoco.boat.stability.righting_curve`),
+30°; it peaks at 4.8 N m near 40° and vanishes near 75° (`sailmujoco.forces.stability.righting_curve`),
 {heel_text}. {_eq4_sentence(eq4, faster, slower)}
 
 {_eq4_conclusion(eq4)} At l_φ = 1 m neither bites (heel below 5°) and

@@ -7,7 +7,7 @@ obtained by simulating the system with every possible sail configuration for eac
 condition". Here every point is a ``heading_hold`` run on heading 0 in a steady wind (no gusts,
 no wander, no heading jitter); its speed is the mean speed over ground at the end of the run
 (``steady_speed``). vel_max is the fastest of a grid of fixed sail angles set to leeward
-(``fixed_sail``, run on the sweep engine, :func:`sailmujoco.polar.polar_spec`); S and Bm are the
+(``fixed_sail``, run on the sweep engine, :func:`sailmujoco.design.polar.polar_spec`); S and Bm are the
 same laws as in the Fig. 6 study (fed Saoud's V, see there).
 
 Angle convention. ∠v_w^B is Saoud's (§VII-B, NWU body frame): the direction the true wind
@@ -26,7 +26,7 @@ from typing import NamedTuple
 import numpy as np
 import pandas as pd
 
-from sailmujoco import polar
+from sailmujoco.design import polar
 from sailmujoco.study import Results, Runs
 
 from ..kit import run_episode

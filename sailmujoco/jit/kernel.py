@@ -11,7 +11,7 @@ whenever any kernel source differs from the one it was built from (a module with
 outside ``sailmujoco/`` and ``forces/`` calls :func:`clear_stale_cache` for its own).
 
 A compile (a cold cache: the first run) is announced on stderr while it lasts, a kernel loaded
-from the cache silently (:mod:`sailmujoco.step.compile_notice`).
+from the cache silently (:mod:`sailmujoco.jit.notice`).
 """
 
 from __future__ import annotations
@@ -21,15 +21,15 @@ from pathlib import Path
 
 import numba
 
-from . import compile_notice
+from . import notice
 
 _PACKAGE = Path(__file__).resolve().parents[1]
 # Every file whose code is compiled into a cached kernel: the kernels and the step (step/), the
-# paper worlds' kernels (which call forces/), frames.wrap_angle (inlined where it is called) and
-# hull_grid.py (its grid size is frozen into the sea's scratch size).
+# paper worlds' kernels (which call forces/), this decorator's flags, frames.wrap_angle (inlined
+# where it is called) and hull_grid.py (its grid size is frozen into the sea's scratch size).
 _SOURCES = sorted([*(_PACKAGE / "step").glob("*.py"), *(_PACKAGE / "forces").glob("*.py"),
-                   *(_PACKAGE / "reference").glob("*.py"), _PACKAGE / "frames.py",
-                   _PACKAGE / "boat" / "hull_grid.py"])
+                   *(_PACKAGE / "reference").glob("*.py"), _PACKAGE / "jit" / "kernel.py",
+                   _PACKAGE / "frames.py", _PACKAGE / "boat" / "hull_grid.py"])
 
 
 def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:
@@ -53,7 +53,7 @@ def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:
 
 
 _clear_stale_cache()
-compile_notice.install()
+notice.install()
 
 
 def clear_stale_cache(module_file: str) -> None:

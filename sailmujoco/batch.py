@@ -9,7 +9,7 @@ the boats share nothing but the callback, which finds each boat's arrays by its 
 A boat that stops (capsized, non-finite) keeps its stop reason and its last good state, as
 alone; the others go on. Example::
 
-    from sailmujoco.step.batch import BoatBatch
+    from sailmujoco.batch import BoatBatch
     from sailmujoco.physics import BoatPhysics
     from sailmujoco.forces.wind import WindConfig
     boats = [BoatPhysics.load("saoud_robot", wind=WindConfig(speed=3.0, seed=s)) for s in range(100)]
@@ -22,9 +22,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..forces import boat as kernels
-from ..physics import RK4, BoatPhysics
-from . import native
+from .forces import boat as kernels
+from .physics import RK4, BoatPhysics
+from .step import native
 
 
 class BoatBatch:

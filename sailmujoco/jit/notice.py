@@ -1,7 +1,7 @@
 """A line on stderr while numba compiles sailmujoco's kernels: what a first run spends its time on.
 
 The force kernels, the compiled control step and the paper worlds' models are compiled by
-numba on their first call and cached on disk (:mod:`sailmujoco.step.jit`); a later process loads
+numba on their first call and cached on disk (:mod:`sailmujoco.jit.kernel`); a later process loads
 them in a fraction of a second. A cold cache (a first run, an upgrade, an edited kernel) costs
 one to two minutes on 2 cores, and without a word a user takes it for a hang. So while numba
 compiles one of our kernels (a cache miss: numba's ``numba:compile`` event, which a kernel
@@ -16,7 +16,7 @@ for :data:`GAP_S` (or at exit), ``compiled sailmujoco's numba kernels in 66 s``.
 comes from the cache prints nothing. Everything goes to stderr; ``SAILMUJOCO_QUIET=1`` in the
 environment (read at every line, and inherited by worker processes) silences it.
 
-:func:`install` (called by :mod:`sailmujoco.step.jit`) only registers the listener with numba;
+:func:`install` (called by :mod:`sailmujoco.jit.kernel`) only registers the listener with numba;
 nothing is printed and no thread is started before a kernel actually compiles.
 """
 

@@ -19,11 +19,11 @@ from dataclasses import dataclass
 import numpy as np
 from scipy.optimize import brentq
 
+from ..boat.hull import column_quadrature
+from ..boat.params import BoatParams
 from ..constants import GRAVITY
-from ..forces.hydrostatics import submerged_volume
 from ..frames import matrix_from_euler
-from .hull import column_quadrature
-from .params import BoatParams
+from .hydrostatics import submerged_volume
 
 
 def _columns(p: BoatParams, nx: int, ntheta: int) -> np.ndarray:
@@ -295,7 +295,7 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
               working_heels_deg=(10.0, 25.0)) -> None:
     """Write the GZ-curve figure (PNG) of ``boat``: ours vs eq. 20 vs eq. 66.
 
-    ``python -m sailmujoco.boat.stability --gz-figure PATH``.
+    ``python -m sailmujoco.forces.stability --gz-figure PATH``.
 
     Parameters
     ----------
@@ -313,7 +313,7 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    from .catalogue import get_boat
+    from ..boat.catalogue import get_boat
 
     p = get_boat(boat)
     heels = np.radians(np.arange(0.0, 89.01, 1.0))  # at 90 deg the columns lie level
@@ -343,15 +343,15 @@ def gz_figure(path, boat: str = "wille_yacht", compare: BoatParams | None = None
 def _waterline_cg_hull() -> BoatParams:
     """The yacht with its CG on the waterline and vertical topsides, drawn dashed beside the
     yacht to show what the CG height and the flare change in its GZ curve."""
-    from .catalogue import wille_yacht
-    from .hull import design_for
+    from ..boat.catalogue import wille_yacht
+    from ..boat.hull import design_for
 
     p = wille_yacht()
     return p.with_(cg_z=0.0, hull=design_for(p.hull.length, p.displaced_volume, p.gm_t, 0.0,
                                              p.hull.freeboard))
 
 
-if __name__ == "__main__":  # python -m sailmujoco.boat.stability --gz-figure PATH [--boat NAME]
+if __name__ == "__main__":  # python -m sailmujoco.forces.stability --gz-figure PATH [--boat NAME]
     import argparse
 
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])

@@ -8,11 +8,11 @@ or a :class:`~sailmujoco.boat.params.BoatParams`:
 * LCB and LCG, the transverse and longitudinal metacentric heights GM_t and GM_L of the hull
   (:mod:`sailmujoco.boat.hull`'s closed forms);
 * the righting-arm curve GZ against heel from 0 to 180 deg
-  (:func:`sailmujoco.boat.stability.righting_arm`), its maximum and its angle of vanishing
+  (:func:`sailmujoco.forces.stability.righting_arm`), its maximum and its angle of vanishing
   stability, as a figure ``gz.png``;
 * the natural periods of roll, heave and pitch;
 * the steady speed at a few true wind angles in one wind: short 6-DOF runs with the saoud sail
-  law and heading rudder, on the polar's sweep (:func:`sailmujoco.polar.compute`).
+  law and heading rudder, on the polar's sweep (:func:`sailmujoco.design.polar.compute`).
 """
 
 from __future__ import annotations
@@ -24,15 +24,15 @@ from pathlib import Path
 
 import numpy as np
 
-from .. import polar
+from ..boat import hull as hull_geometry
+from ..boat.catalogue import get_boat
+from ..boat.file import write_boat
+from ..boat.params import BoatParams
 from ..constants import GRAVITY
+from ..forces import stability
 from ..forces.hydrostatics import submerged_volume
 from ..frames import matrix_from_euler
-from . import hull as hull_geometry
-from . import stability
-from .catalogue import get_boat
-from .file import write_boat
-from .params import BoatParams
+from . import polar
 
 DEFAULT_TWA_DEG = (45.0, 60.0, 90.0, 120.0, 150.0)  # deg, true wind angles of the speed runs
 SPEED_RUN_S = 90.0  # s per speed run; the speed is the mean over the last polar.STEADY_WINDOW_S
@@ -220,7 +220,7 @@ def check_boat(path_or_params, wind: float = 6.0, out=None, *, twa_deg=DEFAULT_T
 
 
 def _columns(p: BoatParams) -> np.ndarray:
-    """The hull's 48 x 48 column quadrature as :func:`sailmujoco.boat.stability.righting_arm` takes it."""
+    """The hull's 48 x 48 column quadrature as :func:`sailmujoco.forces.stability.righting_arm` takes it."""
     return hull_geometry.column_quadrature(p.hull, 48, 48).array()
 
 

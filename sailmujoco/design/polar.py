@@ -21,9 +21,9 @@ from pathlib import Path
 
 import numpy as np
 
-from . import sweep
-from .boat.catalogue import boat_label
-from .errors import ControllerFailed, act, one_line
+from .. import sweep
+from ..boat.catalogue import boat_label
+from ..errors import ControllerFailed, act, one_line
 
 DEFAULT_TWS = (2.0, 4.0, 6.0)
 DEFAULT_TWA = tuple(range(30, 181, 15))
@@ -187,7 +187,7 @@ def first_failure(table, spec: dict, controller: str) -> str | None:
     row = failed.iloc[0]
     run = next(r for r in sweep.expand(sweep.validate(spec)) if r["run_id"] == row["run_id"])
     where = f"TWS {row['tws']:g} m/s, TWA {row['twa']:g} deg"
-    from .suite import load
+    from ..suite import load
 
     env = None
     try:
@@ -247,7 +247,7 @@ def plot_polar(frame, path, title: str) -> None:
     title : str
         The figure's title.
     """
-    from . import figures
+    from .. import figures
 
     plt = figures.pyplot()
     fig = plt.figure(figsize=(6.5, 6.5))
@@ -286,7 +286,7 @@ def plot_comparison(frames: dict, path, title: str) -> None:
     title : str
         The figure's title.
     """
-    from . import figures
+    from .. import figures
 
     plt = figures.pyplot()
     tws_values = sorted(next(iter(frames.values()))["tws"].unique())
