@@ -39,10 +39,15 @@ def _registries_restored():
     TASKS.update(held_tasks)
 
 
-def _recipe(heading: str) -> str:
+def _section(heading: str) -> str:
+    """The recipe under ``### heading``, up to the next heading."""
     text = DOC.read_text(encoding="utf-8")
-    section = text[text.index(f"### {heading}\n"):]
-    return re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    section = text[text.index(f"### {heading}\n") + 1:]
+    return section[:section.index("\n##")]
+
+
+def _recipe(heading: str) -> str:
+    return re.search(r"```python\n(.*?)```", _section(heading), re.S).group(1)
 
 
 def _run(heading: str) -> dict:
@@ -151,12 +156,6 @@ def test_add_a_measurement(_tables_restored):
     assert expected > 0.5
     assert float(observation["speed_over_ground_kn"]) == pytest.approx(expected, rel=1e-12)
     assert list(observation).index("speed_over_ground_kn") < list(observation).index("true_state")
-
-
-def _section(heading: str) -> str:
-    text = DOC.read_text(encoding="utf-8")
-    section = text[text.index(f"### {heading}\n") + 1:]
-    return section[:section.index("\n##")]
 
 
 BLOCK = re.compile(r"```(python|diff) file=(\S+)\n(.*?)```", re.S)

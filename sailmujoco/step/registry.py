@@ -290,27 +290,27 @@ _READERS = {(np.float64, 1): "vector", (np.float64, 2): "matrix", (np.int64, 1):
 def _forces_source() -> str:
     """The source of :func:`kernel_forces`: the kernel called on the row's arrays in declared order."""
     arrays = ", ".join(f"{_READERS[a.dtype, a.ndim]}(row, {k})" for k, a in enumerate(KERNEL_ARRAYS))
-    return ("def kernel_forces(row, t, add_mass):\n"
-            '    """The force kernel (:func:`sailmujoco.forces.boat.boat_forces`) on a registry row.\n'
-            "\n"
-            "    Parameters\n"
-            "    ----------\n"
-            "    row : numpy.ndarray of int64, shape (ROW,)\n"
-            "        A boat's :func:`registry_row` (or its slot of :data:`REGISTRY`): the address and\n"
-            "        shape of each kernel array, read in the order of ``KERNEL_ARRAYS``.\n"
-            "    t : float\n"
-            "        Time, s.\n"
-            "    add_mass : bool\n"
-            "        Whether to add the hull's added mass to MuJoCo's mass matrix (the row's\n"
-            "        ``mass_csr``); a value known only at run time (see the comment where\n"
-            "        ``kernel_forces`` is compiled, in sailmujoco/step/registry.py).\n"
-            "\n"
-            "    Returns\n"
-            "    -------\n"
-            "    int\n"
-            "        STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.\n"
-            '    """\n'
-            f"    return _boat_forces(t, {arrays}, add_mass)\n")
+    return f"def kernel_forces(row, t, add_mass):\n    return _boat_forces(t, {arrays}, add_mass)\n"
+
+
+_FORCES_DOC = """The force kernel (:func:`sailmujoco.forces.boat.boat_forces`) on a registry row.
+
+    Parameters
+    ----------
+    row : numpy.ndarray of int64, shape (ROW,)
+        A boat's :func:`registry_row` (or its slot of :data:`REGISTRY`): the address and
+        shape of each kernel array, read in the order of ``KERNEL_ARRAYS``.
+    t : float
+        Time, s.
+    add_mass : bool
+        Whether to add the hull's added mass to MuJoCo's mass matrix (the row's
+        ``mass_csr``); a value known only at run time (see the comment below).
+
+    Returns
+    -------
+    int
+        STATUS_OK, STATUS_NONFINITE or STATUS_CAPSIZED.
+    """
 
 
 # kernel_forces(row, t, add_mass): the force kernel on the registered arrays, adding the added mass to
@@ -321,4 +321,5 @@ def _forces_source() -> str:
 # call of the kernel off its direct entry point (tests/test_fast_path.py).
 _namespace: dict = {}
 exec(compile(_forces_source(), __file__, "exec"), globals(), _namespace)
+_namespace["kernel_forces"].__doc__ = _FORCES_DOC
 kernel_forces = numba.njit(inline="always", cache=True)(_namespace.pop("kernel_forces"))
