@@ -9,7 +9,8 @@ boat's gets none of them.
 from __future__ import annotations
 
 _STRIP = "strip theory on the canoe body (hull.py)"
-_RADIATION = "ours: 20 % of critical at the hull's heave/pitch frequency (boats._radiation_damping)"
+_RADIATION = ("radiation damping at the heave and pitch natural frequencies, Capytaine BEM "
+              "(catalogue.RADIATION_DAMPING)")
 
 WILLE = "Wille (2016a) App. A"
 SAOUD = "Saoud (2015) Table I"
