@@ -47,7 +47,7 @@ def relative_errors(boat: str, sea: WaveConfig, states: int, heel_sd: float, see
     comp = components(sea)
     fine = column_quadrature(p.hull).array()
     P = pack_parameters(p, waves=sea)  # the sea's block: the hull's grid steps and counts
-    sea_rows, grid = sea_kernels.sea_arrays(p.hull, sea)
+    sea_rows, grid, _ = sea_kernels.sea_arrays(p.hull, sea)
     b = P_SEA_BLOCK
     dx, dy, nx, ny = P[b + sea_kernels.SB_DX], P[b + sea_kernels.SB_DY], int(P[b + sea_kernels.SB_NX]), \
         int(P[b + sea_kernels.SB_NY])

@@ -22,8 +22,9 @@ sail, keel, rudder,  True, False             --   each force model on; off to se
 damping, added_mass                               alone
 sail_tangential      True, False             --   the sail's tangential force C_T; False makes
                                                   Saoud's Assumption 4 true
-added_mass_coupling  "manoeuvring",          --   no forward-speed added-mass terms in heave and
-                     "kirchhoff"                  pitch; "kirchhoff": the unbounded-fluid terms
+added_mass_coupling  "impulse",              --   heave added mass's velocity terms: forces
+                     "manoeuvring",               (no mean), no Munk moments; "manoeuvring":
+                     "kirchhoff"                  none; "kirchhoff": all (unbounded fluid)
 vertical_damping     "world", "body"         --   heave and pitch damping on the vertical
                                                   motion; "body": on body w and q
 restoring_axes       "horizontal", "body"    --   the papers' restoring moments about level
@@ -52,6 +53,8 @@ wave_damping         "relative", "absolute"  --   in a sea, heave and pitch damp
 wave_pressure_decay  True, False             --   in a sea, the wave's pressure decaying with
                                                   depth as e^(kz) (Froude-Krylov); False:
                                                   hydrostatic to the local surface
+wave_reflection      True, False             --   in a sea, short waves' mean reflection
+                                                  force on the hull's side (Faltinsen)
 boat_options         a mapping               SI   keyword arguments of the boat's parameter
                                                   factory (e.g. ``{"l_phi": 0.1}``)
 waves                None, a ``WaveConfig``  SI   the sea (:mod:`sailmujoco.forces.waves`);
@@ -91,7 +94,7 @@ Dofs = Literal[6, 4]
 PaperModel = Literal["paper", "rigid"]
 # the order is the kernel's code for the mode (forces/boat.py packs its index)
 Hydrostatics = Literal["off", "paper", "geometric"]
-AddedMassCoupling = Literal["manoeuvring", "kirchhoff"]  # heave/pitch forward-speed terms out / in
+AddedMassCoupling = Literal["impulse", "manoeuvring", "kirchhoff"]  # heave/pitch couplings (added_mass.py)
 VerticalDamping = Literal["world", "body"]  # heave/pitch damping on vertical motion / body w, q
 RestoringAxes = Literal["horizontal", "body"]  # paper restoring moments about level / body axes
 Resistance = Literal["friction", "dsyhs"]  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
@@ -322,8 +325,8 @@ class ForceSwitches:
         Each force model on (default) or off.
     sail_tangential : bool
         The sail's tangential force C_T (False: Saoud's Assumption 4 made true).
-    added_mass_coupling : {"manoeuvring", "kirchhoff"}
-        Without, or with, the forward-speed added-mass terms in heave and pitch.
+    added_mass_coupling : {"impulse", "manoeuvring", "kirchhoff"}
+        Heave added mass's velocity terms: forces but no Munk moments, none, or all.
     vertical_damping : {"world", "body"}
         Heave and pitch damping on the vertical motion, or on body w and q.
     restoring_axes : {"horizontal", "body"}
@@ -336,11 +339,10 @@ class ForceSwitches:
         The keel's downwash at the rudder.
     windage : bool
         Air drag of topsides and mast.
-    wave_hull, wave_foil_flow, wave_diffraction, wave_pressure_decay : bool
+    wave_hull, wave_foil_flow, wave_diffraction, wave_pressure_decay, wave_reflection : bool
         The sea's mechanisms (in calm water they change nothing): the waves' forces on the
-        hull (False: the hull in still water); the orbital velocity at the foils; the
-        long-wave diffraction force; the dynamic pressure's decay with depth
-        (docs/physics.md, "The boat in the sea").
+        hull (False: the hull in still water); the orbital velocity at the foils; the long-wave
+        diffraction; the pressure's decay with depth; the short waves' reflection (docs/physics.md).
     wave_damping : {"relative", "absolute"}
         In a sea, heave and pitch damping on the motion relative to the water, or on the
         hull's own.
@@ -353,7 +355,7 @@ class ForceSwitches:
     damping: bool = True
     added_mass: bool = True
     sail_tangential: bool = True
-    added_mass_coupling: AddedMassCoupling = "manoeuvring"
+    added_mass_coupling: AddedMassCoupling = "impulse"
     vertical_damping: VerticalDamping = "world"
     restoring_axes: RestoringAxes = "horizontal"
     resistance: Resistance = "dsyhs"
@@ -365,6 +367,7 @@ class ForceSwitches:
     wave_diffraction: bool = True
     wave_damping: WaveDamping = "relative"
     wave_pressure_decay: bool = True
+    wave_reflection: bool = True
 
     def __post_init__(self):
         _check_fields(self)
@@ -384,7 +387,7 @@ class PhysicsOptions(ForceSwitches):
         As :class:`ForceSwitches`.
     keel_downwash, windage : bool
         As :class:`ForceSwitches`.
-    wave_hull, wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay
+    wave_hull, wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay, wave_reflection
         As :class:`ForceSwitches`.
     sail_mode : {"actuated", "sheeted"}
         The sail command: an angle in rad, or a sheet length in m.

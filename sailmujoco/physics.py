@@ -167,7 +167,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         self.wind_config = wind
         self.wind = WindField(wind)
         self._P = pack_parameters(params, forces, wind=wind, wander_dt=WANDER_DT, waves=waves)
-        self._sea, self._grid = sea_arrays(params.hull, waves)
+        self._sea, self._grid, self._waterline = sea_arrays(params.hull, waves)
         self._columns = column_quadrature(params.hull).array()
         self._strips = np.ascontiguousarray(np.vstack(strip_quadrature(params.hull)))
         table = naca0015()
@@ -219,7 +219,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             oscillation=w.oscillation, gust_f=w.gust_frequency, gust_phase=w.gust_phase,
             gust_amp=w.gust_amplitude, log_z=w.log_z, wander=w.wander, gust_cos=w.gust_cos,
             external=self._external, terms=self._terms, diag=self._diag, qfrc=qfrc, madd=self._madd,
-            mass_csr=d.M, csr_addr=self._csr_addr, work=self._work, sea=self._sea, grid=self._grid))
+            mass_csr=d.M, csr_addr=self._csr_addr, work=self._work, sea=self._sea, grid=self._grid,
+            waterline=self._waterline))
         if self.dofs == 6:
             self._row = registry.registry_row(self._args, d.act, self._warnings)
         else:

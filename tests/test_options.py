@@ -18,10 +18,11 @@ from sailmujoco.options import ForceSwitches, PhysicsOptions
 # suite.load's physics defaults: the boat as built in the MuJoCo world
 DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics="geometric",
                 sail=True, keel=True, rudder=True, damping=True, added_mass=True,
-                sail_tangential=True, added_mass_coupling="manoeuvring", vertical_damping="world",
+                sail_tangential=True, added_mass_coupling="impulse", vertical_damping="world",
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
                 keel_downwash=True, windage=True, wave_hull=True, wave_foil_flow=True, wave_diffraction=True,
-                wave_damping="relative", wave_pressure_decay=True, boat_options={}, waves=None)
+                wave_damping="relative", wave_pressure_decay=True, wave_reflection=True, boat_options={},
+                waves=None)
 
 
 # ---- one definition of each set of choices --------------------------------------------------

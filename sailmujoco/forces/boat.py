@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from ..jit.kernel import kernel
-from .added_mass import added_mass_velocity_terms
+from .added_mass import added_mass_velocity_terms, pitch_angle_rate
 from .boat_parameters import (
     P_A1,
     P_A2,
@@ -25,6 +25,7 @@ from .boat_parameters import (
     P_A4,
     P_A5,
     P_A6,
+    P_ADDED_COUPLING,
     P_BF0,
     P_BL,
     P_BODY_DAMPING,
@@ -43,7 +44,6 @@ from .boat_parameters import (
     P_FLOTATION_X,
     P_FOIL_BLOCK,
     P_FORM_K,
-    P_FULL_KIRCHHOFF,
     P_G,
     P_HYDRO_MODE,
     P_K_HEAVE,
@@ -90,6 +90,7 @@ from .boat_parameters import (
     P_WIND_SPEED,
     P_WINDAGE_BLOCK,
     RESISTANCE_BLOCK_SIZE,
+    switch_slot,
 )
 from .damping import hull_damping
 from .finite_wing import (
@@ -125,6 +126,7 @@ from .sea_kernels import (
     foil_water_velocity,
     sea_stage,
 )
+from .wave_reflection import reflection_wrench
 from .wind_kernels import wind_velocities
 from .windage import (
     W_AREA_FRONT,
@@ -143,6 +145,7 @@ from .windage import (
 
 TERMS = ("sail", "keel", "rudder", "hydrostatics", "damping", "added_mass", "external", "windage")
 T_SAIL, T_KEEL, T_RUDDER, T_HYDRO, T_DAMP, T_ADDED, T_EXT, T_WINDAGE = range(len(TERMS))
+P_ON_REFLECTION = switch_slot("wave_reflection")
 # ---- diagnostics (``diag`` output) ------------------------------------------------------
 (D_ALPHA_SAIL, D_ALPHA_KEEL, D_ALPHA_RUDDER, D_SPEED_SAIL, D_SPEED_KEEL, D_SPEED_RUDDER,
  D_WIND_X, D_WIND_Y, D_WIND_Z, D_CE_HEIGHT, D_SUBMERGED, D_CN, D_CT, D_SAIL_HINGE,
@@ -192,7 +195,8 @@ def _accumulate(terms, row, force, point):
 @with_parameters
 def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid, cl_table,
                 cd_table, oscillation, gust_f, gust_phase, gust_amp, log_z, wander, gust_cos,
-                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, grid, add_mass):
+                external, terms, diag, qfrc, madd, mass_csr, csr_addr, work, sea, grid, waterline,
+                add_mass):
     """Every force on the boat for the state (qpos, qvel) at time t.
 
     The arguments are declared, in order, in :mod:`sailmujoco.forces.kernel_arguments`, which
@@ -357,6 +361,10 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
                             P[P_RHO_W], P[P_G], sea_small, sea_wrench, water)
             for i in range(6):
                 wrench[i] += sea_wrench[i]
+            if P[P_ON_REFLECTION] > 0.0:  # short waves' mean reflection (forces/wave_reflection.py)
+                reflection_wrench(sea, waterline, nu_r[0], P[P_RHO_W], P[P_G], sea_wrench)
+                for i in range(6):
+                    wrench[i] += sea_wrench[i]
             if P[sb + SB_RELATIVE_DAMPING] > 0.0:
                 water_dz, water_dpitch = water[0], water[1]
         terms[T_HYDRO, :] = wrench
@@ -383,7 +391,8 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         for j in range(3):
             madd[i, j] = 0.0
     if P[P_ON_ADDED] > 0.0:
-        added_mass_velocity_terms(nu_r, P[P_A1:P_A6 + 1], P[P_FULL_KIRCHHOFF] > 0.0, wrench)
+        added_mass_velocity_terms(nu_r, P[P_A1:P_A6 + 1], int(P[P_ADDED_COUPLING]),
+                                  pitch_angle_rate(R, nu_r[4], nu_r[5]), wrench)
         terms[T_ADDED, :] = wrench
         for i in range(3):
             for j in range(3):

@@ -26,6 +26,7 @@ from ..options import (
     RestoringAxes,
     VerticalDamping,
     WaveConfig,
+    literal_fields,
 )
 from ..options import choices as literal_choices
 from .finite_wing import pack_foil_block
@@ -44,7 +45,7 @@ from .windage import pack_windage
 HYDROSTATIC_MODES = literal_choices(Hydrostatics)  # the index is the kernel's code for the mode
 # Each of these modelling choices keeps its alternative form, so its effect can be measured
 # (forces/added_mass.py, forces/damping.py, forces/hydrostatics.py say why):
-ADDED_MASS_COUPLINGS = literal_choices(AddedMassCoupling)  # heave/pitch forward-speed terms out / in
+ADDED_MASS_COUPLINGS = literal_choices(AddedMassCoupling)  # the index is added_mass.py's code
 VERTICAL_DAMPING_FORMS = literal_choices(VerticalDamping)  # heave/pitch damping on vertical motion / w, q
 RESTORING_AXES = literal_choices(RestoringAxes)  # paper restoring moments about level axes / body axes
 # The boat as built; the first value of each is the papers' form:
@@ -62,7 +63,7 @@ FOIL_FORMS = literal_choices(Foils)  # the papers' foil coefficients / finite-wi
  P_SAIL_AREA, P_MAST_X, P_BOOM_Z, P_CE_AFT, P_CE_HEIGHT, P_SUCTION, P_STALL, P_CF_SAIL,
  P_ON_SAIL, P_ON_KEEL, P_ON_RUDDER, P_HYDRO_MODE, P_ON_DAMPING, P_ON_ADDED, P_TANGENTIAL,
  P_WIND_SPEED, P_WIND_FROM, P_CURRENT_E, P_CURRENT_N, P_WANDER_DT,
- P_FLOTATION_X, P_FULL_KIRCHHOFF, P_BODY_DAMPING, P_BODY_RESTORING,
+ P_FLOTATION_X, P_ADDED_COUPLING, P_BODY_DAMPING, P_BODY_RESTORING,
  P_RESISTANCE_DSYHS, P_FINITE_FOILS, P_KEEL_DOWNWASH, P_ON_WINDAGE) = range(69)
 # Blocks of P owned by one force module each (the module defines the offsets inside its block):
 P_RESISTANCE_BLOCK, RESISTANCE_BLOCK_SIZE = 69, 64  # forces/resistance.py
@@ -74,7 +75,7 @@ P_NEW_SWITCHES = 175  # then one slot for each switch that has no slot of its ow
 
 
 # The force switches' slots, one per field of ForceSwitches: (slot, the value packed as 1.0);
-# any other value packs 0.0, and hydrostatics (None) packs its index in HYDROSTATIC_MODES.
+# any other value packs 0.0; a choice of more than two forms (None) packs its index in its choices.
 SWITCH_SLOTS = {
     "hydrostatics": (P_HYDRO_MODE, None),
     "sail": (P_ON_SAIL, True),
@@ -83,7 +84,7 @@ SWITCH_SLOTS = {
     "damping": (P_ON_DAMPING, True),
     "added_mass": (P_ON_ADDED, True),
     "sail_tangential": (P_TANGENTIAL, True),
-    "added_mass_coupling": (P_FULL_KIRCHHOFF, "kirchhoff"),
+    "added_mass_coupling": (P_ADDED_COUPLING, None),
     "vertical_damping": (P_BODY_DAMPING, "body"),
     "restoring_axes": (P_BODY_RESTORING, "body"),
     "resistance": (P_RESISTANCE_DSYHS, "dsyhs"),
@@ -102,6 +103,9 @@ SWITCH_SLOTS = {
 _NEW_SWITCHES = [f.name for f in fields(ForceSwitches) if f.name not in SWITCH_SLOTS]
 SWITCH_SLOTS.update({name: (P_NEW_SWITCHES + k, True) for k, name in enumerate(_NEW_SWITCHES)})
 P_SIZE = P_NEW_SWITCHES + len(_NEW_SWITCHES)
+
+
+_CHOICES = literal_fields(ForceSwitches)
 
 
 def switch_slot(name: str) -> int:
@@ -131,7 +135,7 @@ def pack_switches(switches: ForceSwitches, P: np.ndarray) -> None:
     """
     for name, (slot, on) in SWITCH_SLOTS.items():
         value = getattr(switches, name)
-        P[slot] = HYDROSTATIC_MODES.index(value) if on is None else float(value == on)
+        P[slot] = _CHOICES[name].index(value) if on is None else float(value == on)
 
 
 def pack_parameters(p: BoatParams, switches: ForceSwitches | None = None, *, wind=None,

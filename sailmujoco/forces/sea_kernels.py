@@ -29,6 +29,7 @@ from ..jit.kernel import kernel
 from ..options import WaveConfig
 from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
+from .wave_reflection import waterline_array
 from .waves import RAMP_PERIODS, components
 
 SEA_ROWS = 13  # a, omega, k, cos beta, sin beta, phi; r(t) a, theta at CO, kappa_x, kappa_y, kappa_z;
@@ -86,8 +87,9 @@ def grid_array(grid: HullGrid, shares: np.ndarray) -> np.ndarray:
 
 
 def sea_arrays(hull, config: WaveConfig | None):
-    """The kernel's ``sea`` and ``grid`` arrays for a hull in a sea state (:func:`sea_array`,
-    :func:`grid_array`).
+    """The kernel's ``sea``, ``grid`` and ``waterline`` arrays for a hull in a sea state
+    (:func:`sea_array`, :func:`grid_array`,
+    :func:`sailmujoco.forces.wave_reflection.waterline_array`).
 
     Parameters
     ----------
@@ -98,7 +100,7 @@ def sea_arrays(hull, config: WaveConfig | None):
     """
     grid = hull_grid(hull)
     sea = sea_array(config, section_depths(hull, grid))
-    return sea, grid_array(grid, section_weights(hull, grid))
+    return sea, grid_array(grid, section_weights(hull, grid)), waterline_array(hull, sea[0], sea[2])
 
 
 def pack_sea_block(hull, config: WaveConfig | None, block: np.ndarray) -> None:

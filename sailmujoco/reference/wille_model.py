@@ -17,7 +17,7 @@ import math
 import numpy as np
 
 from ..constants import GRAVITY
-from ..forces.added_mass import kirchhoff_terms
+from ..forces.added_mass import MANOEUVRING, kirchhoff_terms
 from ..forces.damping import crossflow_drag, roll_damping, surge_resistance
 from ..forces.foil_geometry import foil_world_force, lift_drag_components, section_flow
 from ..forces.foil_sections import hydrofoil_coefficients
@@ -268,7 +268,7 @@ def force_terms(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, stri
     if P[ON_ADDED_MASS] != 0.0:  # -C_A(nu_r) nu_r, eqs. 10-11
         nu_r, kirch = work[4], work[5]
         nu_r[0], nu_r[1], nu_r[2], nu_r[3], nu_r[4], nu_r[5] = u_r, v_r, 0.0, pr, 0.0, r
-        kirchhoff_terms(nu_r, a, False, kirch)
+        kirchhoff_terms(nu_r, a, MANOEUVRING, 0.0, kirch)  # Wille eqs. 10-11 (4 DOF)
         row = out[ADDED_MASS]
         row[0], row[1], row[2], row[3] = kirch[0], kirch[1], kirch[3], kirch[5]
     row = out[CORIOLIS]  # -C_RB nu (eq. 9, module docstring of wille.py)
