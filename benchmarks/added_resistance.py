@@ -25,6 +25,11 @@ k zeta_a = 0.03; sigma_aw = R_aw / (rho g zeta_a^2 B^2 / L). Beside it:
 
 It writes ``added_resistance.csv`` (one row per point and coupling) and ``added_resistance.png``
 into ``--out``, and prints each curve's peak against STAwave-2's.
+
+``--irregular`` adds the yacht in a JONSWAP head sea (Hs 0.58 m, Tp 3.4 s: the sea its own
+10 m/s wind raises over the assumption study's fetch), for ``--seeds`` realisations: R_aw held
+at 1.5 m/s against STAwave-2's spectral mean R = 2 int sigma_aw(omega) rho g B^2/L S(omega)
+d omega, and the speed lost at the calm water's thrust for 1.5 m/s.
 """
 
 from __future__ import annotations
@@ -36,12 +41,16 @@ import sys
 from pathlib import Path
 
 import numpy as np
+from scipy.integrate import trapezoid
 
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
-from sailmujoco.design.added_resistance import K_ZETA, measure
+from sailmujoco.design.added_resistance import K_ZETA, measure, tow
 from sailmujoco.design.wave_references import gerritsma_beukelman, stawave2
-from sailmujoco.options import ForceSwitches
+from sailmujoco.forces.wave_spectra import spectrum_density
+from sailmujoco.forces.wind import WindConfig
+from sailmujoco.options import ForceSwitches, WaveConfig
+from sailmujoco.physics import BoatPhysics
 
 RATIOS = (0.5, 0.75, 0.9, 1.0, 1.1, 1.25, 1.4, 1.6, 1.8, 2.0, 2.5, 3.0)
 GB_FROM = 0.9  # lambda/L from which the radiated-energy estimate is drawn (module docstring)
@@ -90,6 +99,8 @@ def main(argv=None) -> int:
     parser.add_argument("--reflection", choices=("on", "off", "both"), default="on",
                         help="the short-wave reflection term (wave_reflection)")
     parser.add_argument("--out", default="results/added_resistance")
+    parser.add_argument("--irregular", action="store_true", help="also the JONSWAP head sea")
+    parser.add_argument("--seeds", type=int, default=3, help="sea realisations of --irregular")
     args = parser.parse_args(argv)
     out = Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
@@ -133,7 +144,57 @@ def main(argv=None) -> int:
                       f"{ref.max():.2f} at {fine[ref.argmax()]:.2f}: ratio {top['sigma_aw'] / ref.max():.2f}")
     plot(rows, args, hull, out / "added_resistance.png")
     print(f"wrote {out / 'added_resistance.csv'} and {out / 'added_resistance.png'}")
+    if args.irregular:
+        irregular(args.boat, hull, args.seeds)
     return 0
+
+
+IRREGULAR = dict(hs=0.58, tp=3.4, speed=1.5)  # m, s, m/s
+
+
+def irregular(boat: str, hull: dict, seeds: int) -> None:
+    """R_aw in a JONSWAP head sea at a held speed against STAwave-2, and the speed lost at the
+    calm water's thrust (module docstring)."""
+    calm = WindConfig(speed=0.0, gusts=False, wander=False)
+    forces = ForceSwitches(sail=False, windage=False)
+    speed = IRREGULAR["speed"]
+    p = get_boat(boat)
+    omega = np.linspace(0.3, 12.0, 4000)
+    k = omega**2 / GRAVITY
+    sea = WaveConfig(spectrum="jonswap", hs=IRREGULAR["hs"], tp=IRREGULAR["tp"], direction_from=math.pi / 2)
+    sigma = stawave2(**hull, speed=speed, wavelength_ratio=2.0 * math.pi / k / hull["length"])
+    reference = 2.0 * trapezoid(sigma * p.rho_water * GRAVITY * hull["beam"] ** 2 / hull["length"]
+                                   * spectrum_density(sea, omega), omega)
+    omega_p = 2.0 * math.pi / IRREGULAR["tp"]
+    period = 2.0 * math.pi / (omega_p + omega_p**2 / GRAVITY * speed)  # the peak's encounter period
+    thrust_calm = tow(BoatPhysics.load(boat, wind=calm, forces=forces), speed, 160.0, period, 60.0)[0]
+    print(f"\nJONSWAP head sea Hs {IRREGULAR['hs']} m, Tp {IRREGULAR['tp']} s, {boat} (no sail): "
+          f"calm thrust for {speed} m/s {thrust_calm:.1f} N; STAwave-2's R_aw {reference:.1f} N")
+    for seed in range(seeds):
+        waves = WaveConfig(spectrum="jonswap", hs=IRREGULAR["hs"], tp=IRREGULAR["tp"],
+                           direction_from=math.pi / 2, seed=seed)
+        held = tow(BoatPhysics.load(boat, wind=calm, forces=forces, waves=waves), speed, 600.0, period,
+                   400.0)[0] - thrust_calm
+        physics = BoatPhysics.load(boat, wind=calm, forces=forces, waves=waves)
+        lost = coast(physics, thrust_calm, speed, 600.0)
+        print(f"  seed {seed}: R_aw at {speed} m/s {held:6.1f} N ({held / reference:.2f} x STAwave-2); "
+              f"at the calm thrust {lost:.3f} m/s ({100.0 * (1.0 - lost / speed):.1f} % lost)", flush=True)
+
+
+def coast(physics, thrust: float, speed: float, seconds: float) -> float:
+    """Mean speed over the last two thirds of ``seconds`` at a constant ``thrust``, heading held."""
+    low, high = physics.action_bounds()[0][0], physics.action_bounds()[1][0]
+    physics.place(yaw=0.0, surge=speed)
+    physics.set_external_wrench([thrust, 0.0, 0.0, 0.0, 0.0, 0.0])
+    steps = int(round(0.1 / physics.model.opt.timestep))
+    n = int(round(seconds / 0.1))
+    u = np.empty(n)
+    for i in range(n):
+        rudder = -(1.0 * physics.yaw() + 2.0 * physics.yaw_rate())  # as the tow's heading hold
+        physics.set_control([min(max(rudder, low), high), 0.0])
+        physics.step(steps)
+        u[i] = physics.surge_speed()
+    return float(u[n // 3:].mean())
 
 
 def plot(rows, args, hull, path) -> None:

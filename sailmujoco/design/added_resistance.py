@@ -35,7 +35,7 @@ from ..options import ForceSwitches, WaveConfig
 CONTROL_DT = 0.1  # s, the loops' period
 LOOP_PERIOD = 40.0  # s, natural period of the speed loop
 HEADING_GAINS = (1.0, 2.0)  # rudder rad per rad of yaw error, per rad/s of yaw rate
-K_ZETA = 0.03  # k zeta_a of the measurement waves (the ITTC's small-steepness tank practice)
+K_ZETA = 0.03  # k zeta_a of the measurement waves: H/lambda = 1/105, in the linear range
 
 
 @dataclass(frozen=True)
