@@ -23,7 +23,7 @@ scaled by Fujii and Takahashi's (1975) draft factor
 
 with T the section's depth, in the 1.5 k T form of STAwave-2 (ITTC recommended procedure
 7.5-04-01-01.1); alpha -> 1 for a deep side, and a yacht's shallow canoe body (B/T about 10)
-reflects little: at lambda/L = 0.5 the Wille yacht's midship alpha is 0.11.
+reflects little: at lambda/L = 0.5 the Wille yacht's midship alpha is 0.12.
 
 Each component of a sea adds its own mean force (the mean second-order force of a linear sea
 is the sum of the components' own); the waterline is the upright one (heel and the motions
