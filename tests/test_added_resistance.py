@@ -31,8 +31,8 @@ def _sea(amplitude, omega, direction):
 def _waterline(x, b, slope, dx, amplitude):
     """A hand-built waterline array with a fully reflecting side (alpha = 1)."""
     out = np.zeros((wave_reflection.WL_ROWS + 1, len(x)))
-    out[0], out[1], out[2], out[3] = x, b, slope, dx
-    out[4] = 0.5 * amplitude**2
+    out[:wave_reflection.WL_ROWS] = wave_reflection.station_rows(x, b, slope, np.full(len(x), dx))
+    out[wave_reflection.WL_ROWS] = 0.5 * amplitude**2
     return out
 
 

@@ -82,7 +82,7 @@ KERNEL_ARRAYS = (
     KernelArray("work", F, 1, "(WORK_SIZE,)", "scratch, so the kernel allocates nothing"),
     KernelArray("sea", F, 2, "(rows, m)", "the sea (forces.sea_kernels.sea_array); m = 0: calm water"),
     KernelArray("grid", F, 2, "(6, n)", "the hull's coarse grid for the sea (forces.sea_kernels.grid_array)"),
-    KernelArray("waterline", F, 2, "(4 + m, n)", "the waterline's stations and each component's "
+    KernelArray("waterline", F, 2, "(7 + m, n)", "the waterline's stations and each component's "
                 "reflection coefficients (forces.wave_reflection.waterline_array)"),
 )
 KERNEL_ARRAY_NAMES = tuple(a.name for a in KERNEL_ARRAYS)

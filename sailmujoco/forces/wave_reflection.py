@@ -41,7 +41,8 @@ from scipy import special
 from ..jit.kernel import kernel
 
 REFLECTION_STATIONS = 24  # stations along the waterline (midpoint rule)
-WL_X, WL_B, WL_SLOPE, WL_DX, WL_ROWS = 0, 1, 2, 3, 4  # rows of the waterline array; then one per component
+# rows of the waterline array (the port side's; the starboard side mirrors y), then one per component
+WL_X, WL_B, WL_NX, WL_NY, WL_TX, WL_TY, WL_DL, WL_ROWS = range(8)
 
 
 def draft_factor(k, depth):
@@ -59,9 +60,26 @@ def draft_factor(k, depth):
     return i1 / (i1 + special.k1(x) ** 2)
 
 
+def station_rows(x, b, slope, dx) -> np.ndarray:
+    """The waterline array's geometric rows (x, b, n_x, n_y, t_x, t_y, dl) of the port side's
+    stations at x (m), half-breadth b (m), db/dx and length along x dx (m): the outward normal
+    (-b', 1) / c and the tangent (1, b') / c, c = sqrt(1 + b'^2), and dl = c dx.
+
+    Parameters
+    ----------
+    x, b, slope, dx : array_like, shape (n,)
+        The stations' x and half-breadth (m), the waterline's slope db/dx and each station's
+        length along x (m).
+    """
+    slope = np.asarray(slope, dtype=float)
+    c = np.sqrt(1.0 + slope**2)
+    return np.vstack([np.asarray(x, dtype=float), np.asarray(b, dtype=float), -slope / c, 1.0 / c,
+                      1.0 / c, slope / c, c * np.asarray(dx, dtype=float)])
+
+
 def waterline_array(hull, amplitude=(), k=()) -> np.ndarray:
-    """The kernel's ``waterline`` array: rows x, b(x), db/dx, dx of the upright waterline's
-    stations (port side; the starboard side mirrors it), then one row per component j of
+    """The kernel's ``waterline`` array: the upright waterline's stations (:func:`station_rows`,
+    port side; the starboard side mirrors it), then one row per component j of
     a_j^2 alpha(k_j, t(x)) / 2 at each station (m^2).
 
     Parameters
@@ -77,8 +95,8 @@ def waterline_array(hull, amplitude=(), k=()) -> np.ndarray:
     x = (np.arange(n) + 0.5) * dx - 0.5 * hull.length
     f = hull.fullness(x)
     out = np.zeros((WL_ROWS + len(amplitude), n))
-    out[WL_X], out[WL_B] = x, hull.half_beam * f
-    out[WL_SLOPE], out[WL_DX] = -8.0 * hull.half_beam * x / hull.length**2, dx
+    out[:WL_ROWS] = station_rows(x, hull.half_beam * f, -8.0 * hull.half_beam * x / hull.length**2,
+                                 np.full(n, dx))
     for j, (a, kj) in enumerate(zip(amplitude, k, strict=True)):
         out[WL_ROWS + j] = 0.5 * a * a * draft_factor(kj, hull.canoe_draft * f)
     return np.ascontiguousarray(out)
@@ -94,7 +112,7 @@ def reflection_wrench(sea, waterline, u, rho, g, out):
     sea : numpy.ndarray, shape (rows, m)
         The sea array at this stage (:mod:`sailmujoco.forces.sea_kernels`): rows 0 (a_j), 1
         (omega_j), 2 (k_j), 6 (the ramped amplitude) and 8-9 (the body-frame wavevector).
-    waterline : numpy.ndarray, shape (4 + m, n)
+    waterline : numpy.ndarray, shape (7 + m, n)
         :func:`waterline_array`.
     u : float
         The surge speed through the water, m/s.
@@ -112,20 +130,19 @@ def reflection_wrench(sea, waterline, u, rho, g, out):
             continue
         ex, ey = ex / norm, ey / norm
         ramp = sea[6, j] / sea[0, j]
+        rga = rho * g * ramp * ramp
         speed = 2.0 * sea[1, j] * u / g
         for i in range(waterline.shape[1]):
-            x, b = waterline[WL_X, i], waterline[WL_B, i]
-            slope, dx = waterline[WL_SLOPE, i], waterline[WL_DX, i]
-            c = math.sqrt(1.0 + slope * slope)
-            coef = rho * g * ramp * ramp * waterline[WL_ROWS + j, i] * c * dx  # per side, times dl
+            coef = rga * waterline[WL_ROWS + j, i] * waterline[WL_DL, i]  # per side
+            nx, tx = waterline[WL_NX, i], waterline[WL_TX, i]
             for side in (1.0, -1.0):  # port (y = b), starboard (y = -b)
-                nx, ny = -slope / c, side / c
+                ny = side * waterline[WL_NY, i]
                 en = ex * nx + ey * ny
                 if en >= 0.0:
                     continue  # in the shadow
-                tx, ty = 1.0 / c, side * slope / c
-                f = coef * (en * en + speed * (1.0 + tx * (tx * ex + ty * ey)))
+                te = tx * ex + side * waterline[WL_TY, i] * ey
+                f = coef * (en * en + speed * (1.0 + tx * te))
                 fx, fy = -f * nx, -f * ny
                 out[0] += fx
                 out[1] += fy
-                out[5] += x * fy - side * b * fx
+                out[5] += waterline[WL_X, i] * fy - side * waterline[WL_B, i] * fx
