@@ -71,11 +71,10 @@ moment (a22 - a33) v w would be a steady (a33 - a22) v_h^2 sin(phi) cos(phi) (ab
 the yacht's righting moment at 3 deg leeway) built from the same high-frequency a33; the hull's
 steady side force and roll moment belong to its lift and cross-flow drag (eqs. 17-18), and
 Wille's roll row of eq. 11 has none. Its forces, a33 w p and -a22 v p, would put that heave
-added mass into large rolls, where the heeled body z is nearly horizontal: with them alone
-(the moment out) the 15 kg robot, whose a33 is 2.8 times its mass, no longer capsized in 30 m/s
-of wind with its sail eased (tests/test_gym_reward.py), a roll moment a33 w p |z_G| about its
-deep CG of a third of its righting moment. Their mean over a periodic roll and heave,
-a33 <w p>, is third order in a symmetric hull's motions (w = z_dot cos(phi) - v_h sin(phi)).
+added mass into large rolls, where the heeled body z is nearly horizontal (on the 15 kg robot,
+whose a33 is 2.8 times its mass and whose CG lies 0.84 m below CO, a sway force a33 w p is a
+roll moment about the CG). Their mean over a periodic roll and heave, a33 <w p>, is third
+order in a symmetric hull's motions (w = z_dot cos(phi) - v_h sin(phi)).
 
 The other forms, kept so that their effect can be measured:
 ``coupling="manoeuvring"`` leaves out both lower triples whole (energy-neutral, but its surge
