@@ -45,7 +45,7 @@ from scipy.integrate import trapezoid
 
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.constants import GRAVITY
-from sailmujoco.design.added_resistance import K_ZETA, measure, tow
+from sailmujoco.design.added_resistance import CONTROL_DT, K_ZETA, hold_heading, measure, tow
 from sailmujoco.design.wave_references import gerritsma_beukelman, stawave2
 from sailmujoco.forces.wave_spectra import spectrum_density
 from sailmujoco.forces.wind import WindConfig
@@ -183,15 +183,13 @@ def irregular(boat: str, hull: dict, seeds: int) -> None:
 
 def coast(physics, thrust: float, speed: float, seconds: float) -> float:
     """Mean speed over the last two thirds of ``seconds`` at a constant ``thrust``, heading held."""
-    low, high = physics.action_bounds()[0][0], physics.action_bounds()[1][0]
     physics.place(yaw=0.0, surge=speed)
     physics.set_external_wrench([thrust, 0.0, 0.0, 0.0, 0.0, 0.0])
-    steps = int(round(0.1 / physics.model.opt.timestep))
-    n = int(round(seconds / 0.1))
+    steps = int(round(CONTROL_DT / physics.model.opt.timestep))
+    n = int(round(seconds / CONTROL_DT))
     u = np.empty(n)
     for i in range(n):
-        rudder = -(1.0 * physics.yaw() + 2.0 * physics.yaw_rate())  # as the tow's heading hold
-        physics.set_control([min(max(rudder, low), high), 0.0])
+        hold_heading(physics)
         physics.step(steps)
         u[i] = physics.surge_speed()
     return float(u[n // 3:].mean())

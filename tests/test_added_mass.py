@@ -14,8 +14,8 @@ from sailmujoco.forces.added_mass import (
     MANOEUVRING,
     added_mass_velocity_terms,
     kirchhoff_terms,
-    pitch_angle_rate,
 )
+from sailmujoco.forces.damping import pitch_angle_rate
 
 
 def _accelerate(physics, wrench, seconds=1.0):

@@ -58,7 +58,7 @@ from conftest import CALM
 from sailmujoco import frames
 from sailmujoco.boat import hull as hull_geometry
 from sailmujoco.constants import GRAVITY
-from sailmujoco.forces.added_mass import pitch_angle_rate
+from sailmujoco.forces.damping import pitch_angle_rate
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 SECONDS = 60.0
@@ -130,7 +130,7 @@ def energy(physics, state):
 
 def impulse_power(physics):
     """P = (a11 - a33) u w q of the impulse form (module docstring), W, q the pitch angle's
-    rate (:func:`sailmujoco.forces.added_mass.pitch_angle_rate`)."""
+    rate (:func:`sailmujoco.forces.damping.pitch_angle_rate`)."""
     if physics.switches.added_mass_coupling != "impulse":
         return 0.0
     a = physics.params.added_mass_diagonal

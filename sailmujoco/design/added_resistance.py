@@ -118,6 +118,20 @@ def first_harmonic(t, x, omega) -> complex:
     return coef[1] - 1j * coef[2]
 
 
+def hold_heading(physics) -> None:
+    """Set the rudder of the PD law that holds ``physics`` heading east, the sail at 0.
+
+    Parameters
+    ----------
+    physics : BoatPhysics
+        The boat; its rudder command is clipped to the rudder's range.
+    """
+    low, high = physics.action_bounds()[0][0], physics.action_bounds()[1][0]
+    # a positive rudder angle turns the bow to port (yaw up): steer against the yaw error
+    rudder = -(HEADING_GAINS[0] * physics.yaw() + HEADING_GAINS[1] * physics.yaw_rate())
+    physics.set_control([min(max(rudder, low), high), 0.0])
+
+
 def tow(physics, speed: float, seconds: float, encounter_period: float, average: float):
     """Sail east at mean ``speed`` for ``seconds``; returns the window's mean thrust (N), mean
     speed (m/s) and its log, columns (t, z, pitch, x, y, yaw), the window being the last
@@ -143,7 +157,6 @@ def tow(physics, speed: float, seconds: float, encounter_period: float, average:
     omega_n = 2.0 * math.pi / LOOP_PERIOD
     ki = mass * omega_n**2
     kp = 2.0 * 0.7 * mass * omega_n
-    low, high = physics.action_bounds()[0][0], physics.action_bounds()[1][0]
     physics.place(yaw=0.0, surge=speed)
     drag = sum(w[0] for name, w in physics.force_terms().items() if name != "external")
     thrust0, integral = -drag, 0.0
@@ -156,9 +169,7 @@ def tow(physics, speed: float, seconds: float, encounter_period: float, average:
         integral += (speed - u) * dt
         thrust = thrust0 + kp * (speed - sum(recent) / len(recent)) + ki * integral
         physics.set_external_wrench([thrust, 0.0, 0.0, 0.0, 0.0, 0.0])
-        # a positive rudder angle turns the bow to port (yaw up): steer against the yaw error
-        rudder = -(HEADING_GAINS[0] * physics.yaw() + HEADING_GAINS[1] * physics.yaw_rate())
-        physics.set_control([min(max(rudder, low), high), 0.0])
+        hold_heading(physics)
         physics.step(steps)
         x, y, z = physics.position()
         log[i] = (thrust, physics.surge_speed(), physics.data.time, z, physics.pitch(), x, y,
@@ -188,12 +199,12 @@ def measure(boat: str, wavelength_ratio: float, froude: float, *, forces: ForceS
     calm_resistance : float, optional
         T_calm(U) from an earlier calm run with the same switches (N); measured when None.
     """
+    from ..boat.catalogue import get_boat
     from ..physics import BoatPhysics
 
     forces = replace(forces or ForceSwitches(), sail=False, windage=False)
     calm = WindConfig(speed=0.0, gusts=False, wander=False)
-    probe = BoatPhysics.load(boat, wind=calm, forces=forces)
-    p = probe.params
+    p = get_boat(boat)
     length, beam = p.hull.length, 2.0 * p.hull.half_beam
     speed = froude * math.sqrt(GRAVITY * length)
     waves = head_waves(length, wavelength_ratio, k_zeta)
@@ -202,7 +213,8 @@ def measure(boat: str, wavelength_ratio: float, froude: float, *, forces: ForceS
     omega_e = omega + k * speed
     period_e = 2.0 * math.pi / omega_e
     if calm_resistance is None:
-        calm_resistance = tow(probe, speed, seconds, period_e, average)[0]
+        calm_resistance = tow(BoatPhysics.load(boat, wind=calm, forces=forces), speed, seconds, period_e,
+                              average)[0]
     physics = BoatPhysics.load(boat, wind=calm, forces=forces, waves=waves)
     thrust, mean_speed, log = tow(physics, speed, seconds, period_e, average)
     t, z, pitch, x, y, yaw = log.T

@@ -38,10 +38,10 @@ a33 <w q>: a third of the yacht's added resistance at its peak (measured with
 :mod:`sailmujoco.design.added_resistance`; the reason this form is the default). Its partner
 a11 u q, the heave force of pitching at speed, is kept with it.
 
-q in these two forces is the rate of the hull's pitch angle (:func:`pitch_angle_rate`, as the
-pitch damping takes it), not the body rate: upright they are the same, but in a steady heeled
-turn body q = r sin(phi) and body w = -v_h sin(phi) (the leeway seen in heeled axes) are
-steady, and -a33 w q would be a steady surge force a33 v_h r sin^2(phi) of the high-frequency
+q in these two forces is the rate of the hull's pitch angle
+(:func:`sailmujoco.forces.damping.pitch_angle_rate`, as the pitch damping takes it), not the
+body rate: upright they are the same, but in a steady heeled turn body q = r sin(phi) and body
+w = -v_h sin(phi) (the leeway seen in heeled axes) are steady, and -a33 w q would be a steady surge force a33 v_h r sin^2(phi) of the high-frequency
 heave added mass in a motion that is horizontal. On the 300 kg viel_boat, whose a33 is 3.2
 times its mass, that force slowed the position-keeping runs of Viel's controller, which turns
 all the time, from a mean 1.43 to 1.01 m/s; with the pitch angle's rate it is zero in any steady
@@ -90,28 +90,9 @@ computed here adds back A1 (omega x v_r).
 
 from __future__ import annotations
 
-import math
-
 from ..jit.kernel import kernel
 
 IMPULSE, MANOEUVRING, KIRCHHOFF = 0, 1, 2  # the kernel's codes: indices in options' AddedMassCoupling
-
-
-@kernel
-def pitch_angle_rate(rot, q, r):
-    """The rate of the pitch angle theta = asin(R20) (bow up), rad/s: (R21 r - R22 q) / cos(theta).
-
-    Parameters
-    ----------
-    rot : numpy.ndarray, shape (3, 3)
-        Rotation body -> world (body FLU, world ENU).
-    q, r : float
-        Body pitch and yaw rates, rad/s.
-    """
-    cos_theta = math.sqrt(rot[2, 1] * rot[2, 1] + rot[2, 2] * rot[2, 2])
-    if cos_theta < 1e-9:
-        return 0.0
-    return (rot[2, 1] * r - rot[2, 2] * q) / cos_theta
 
 
 @kernel
@@ -134,7 +115,7 @@ def kirchhoff_terms(nu_r, a, coupling, pitch_rate, out):
         the pitch angle's rate for q; ``MANOEUVRING``: the manoeuvring and rotational triples
         only; ``KIRCHHOFF``: all four (unbounded ideal fluid). Module docstring.
     pitch_rate : float
-        The rate of the hull's pitch angle, rad/s, bow up (:func:`pitch_angle_rate`; read by
+        The rate of the hull's pitch angle, rad/s, bow up (:func:`.damping.pitch_angle_rate`; read by
         ``IMPULSE`` only).
     out : numpy.ndarray, shape (6,)
         Receives the wrench, body frame about CO, N and N m.
@@ -182,7 +163,7 @@ def added_mass_velocity_terms(nu_r, a, coupling, pitch_rate, out):
     coupling : int
         ``IMPULSE``, ``MANOEUVRING`` or ``KIRCHHOFF`` (:func:`kirchhoff_terms`).
     pitch_rate : float
-        The rate of the hull's pitch angle, rad/s, bow up (:func:`pitch_angle_rate`).
+        The rate of the hull's pitch angle, rad/s, bow up (:func:`.damping.pitch_angle_rate`).
     out : numpy.ndarray, shape (6,)
         Receives the wrench, body frame about CO, N and N m.
     """

@@ -17,7 +17,7 @@ from __future__ import annotations
 import math
 
 from ..jit.kernel import kernel
-from .added_mass import added_mass_velocity_terms, pitch_angle_rate
+from .added_mass import added_mass_velocity_terms
 from .boat_parameters import (
     P_A1,
     P_A2,
@@ -92,7 +92,7 @@ from .boat_parameters import (
     RESISTANCE_BLOCK_SIZE,
     switch_slot,
 )
-from .damping import hull_damping
+from .damping import hull_damping, pitch_angle_rate
 from .finite_wing import (
     FB_DOWNWASH_GAIN,
     FB_KEEL_AR,

@@ -128,6 +128,23 @@ def roll_damping(p, u_r, roll_friction, roll_lift, roll_frequency, length):
 
 
 @kernel
+def pitch_angle_rate(rot, q, r):
+    """The rate of the pitch angle theta = asin(R20) (bow up), rad/s: (R21 r - R22 q) / cos(theta).
+
+    Parameters
+    ----------
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    q, r : float
+        Body pitch and yaw rates, rad/s.
+    """
+    cos_theta = math.sqrt(rot[2, 1] * rot[2, 1] + rot[2, 2] * rot[2, 2])
+    if cos_theta < 1e-9:
+        return 0.0
+    return (rot[2, 1] * r - rot[2, 2] * q) / cos_theta
+
+
+@kernel
 def vertical_damping(rot, nu, flotation_x, d33, d55, water_dz, water_dpitch, out):
     """Heave and pitch damping on the vertical motion (module docstring); adds to ``out``.
 
@@ -165,15 +182,13 @@ def vertical_damping(rot, nu, flotation_x, d33, d55, water_dz, water_dpitch, out
     # moment of that force about CO: r_F x F_body = (0, -x_F F_bz, x_F F_by)
     out[4] += -flotation_x * fz * r22
     out[5] += flotation_x * fz * r21
-    # pitch angle theta = asin(R20) (bow up): dR20/dt = R21 r - R22 q
-    cos_theta = math.sqrt(r21 * r21 + r22 * r22)
-    if cos_theta < 1e-9:
+    if r21 * r21 + r22 * r22 < 1e-18:  # bow straight up or down: no pitch angle to damp
         return
-    theta_dot = (r21 * r - r22 * q) / cos_theta - water_dpitch
+    theta_dot = pitch_angle_rate(rot, q, r) - water_dpitch
     # y1 = e_z x (R00, R10, 0)/|.| (world, horizontal, to port); its body components R^T y1
     hx, hy = rot[0, 0], rot[1, 0]
     hn = math.sqrt(hx * hx + hy * hy)
-    if hn < 1e-12:  # bow straight up or down: cos_theta would have caught it
+    if hn < 1e-12:  # bow straight up or down: the check above would have caught it
         return
     y1x, y1y = -hy / hn, hx / hn
     m = d55 * theta_dot  # moment along +y1 (pushes the bow down when theta_dot > 0)
