@@ -6,11 +6,12 @@ PNG figures, CSV data and ``report.md``. Each study module declares one :class:`
     STUDY = Study(
         name="saoud_fig6",
         title="Saoud (2015) Fig. 6: ...",
-        runs=runs,            # smoke -> Runs: the simulations, as data
-        analyse=analyse,      # (Results, smoke) -> the numbers (a dataclass or a table)
+        runs=runs,            # (smoke, seeds) -> Runs: the simulations, as data
+        analyse=analyse,      # (Results, smoke) -> the numbers; Results.seeds: the seeds run
         write=write,          # (analysis, out) -> None: figures and CSV data into out
         report=report,        # (analysis, smoke) -> the Markdown text of report.md
         headline=headline,    # analysis -> {name: number}, printed and asserted by the tests
+        seeds=5,              # N: every stochastic case runs on seeds 0..N-1
     )
 
 and registers it under the ``sailmujoco.studies`` entry points (``name = "module:STUDY"``), so
@@ -22,18 +23,29 @@ every result under the study's folder as it finishes (``sweeps/...`` and ``jobs/
 order. A study whose second pass depends on the first (a finer grid around the best coarse
 point) declares ``more_runs``: its runs are executed after the first pass and merged into the
 same :class:`Results`.
+
+**Seeds.** Every stochastic run (gusts, wind wander, the sea's phases, start jitter) is a case
+times a seed. A study declares its N (``seeds``: the number that decides its headline verdicts
+within the time ``study all`` may take); a smoke pass runs :data:`SMOKE_SEEDS`; ``sailmujoco study
+--seeds N`` overrides both. The runner hands ``runs`` the seeds ``0 .. N-1`` and keeps every seed's
+row; the analysis reads them from :attr:`Results.seeds` and states each number over them as a mean
+with its interval (:mod:`sailmujoco.stats`).
 """
 
 from __future__ import annotations
 
+import inspect
 import shutil
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import Any
 
 from . import sweep
+
+SMOKE_SEEDS = 2  # the seeds of a smoke pass: enough for an interval to exist
+MAX_SEEDS = 1000  # the most seeds ``--seeds`` accepts
 
 
 @dataclass(frozen=True)
@@ -75,12 +87,15 @@ class Results:
         Wall time of the runs (all passes), for the report.
     root : pathlib.Path, optional
         The study's folder, where the sweeps' stores are (:meth:`records` reads them).
+    seeds : tuple of int
+        The seeds every stochastic case ran on (``0 .. N-1``).
     """
 
     sweeps: dict = field(default_factory=dict)
     jobs: dict = field(default_factory=dict)
     seconds: float = 0.0
     root: Path | None = None
+    seeds: tuple = (0,)
 
     def records(self, folder: str) -> list[dict]:
         """The run records a sweep stored (parameters, metrics, the trajectory where its spec
@@ -103,7 +118,7 @@ class Results:
             The results of a later pass.
         """
         return Results({**self.sweeps, **other.sweeps}, {**self.jobs, **other.jobs},
-                       self.seconds + other.seconds, self.root or other.root)
+                       self.seconds + other.seconds, self.root or other.root, self.seeds)
 
 
 @dataclass(frozen=True)
@@ -117,7 +132,8 @@ class Study:
     title : str
         One line: the paper, the artefact and what it shows.
     runs : callable
-        ``runs(smoke) -> Runs``: the simulations of the first pass.
+        ``runs(smoke, seeds) -> Runs``: the simulations of the first pass, each stochastic case on
+        every seed of ``seeds`` (a tuple of int); ``runs(smoke)`` for a study with none.
     analyse : callable
         ``analyse(results, smoke) -> analysis``: the study's numbers from its :class:`Results`.
     write : callable
@@ -132,6 +148,9 @@ class Study:
         ``more_runs(results, smoke) -> Runs``: a second pass chosen from the first's results.
     video : mapping, optional
         The scenario ``--video`` films (:func:`sailmujoco.video.record_study_scenario`'s keywords).
+    seeds : int
+        N, the seeds of the full pass: the number that decides the study's headline verdicts
+        within its share of ``study all``'s time (1 for a study with nothing stochastic).
     """
 
     name: str
@@ -143,6 +162,28 @@ class Study:
     headline: Callable[[Any], dict]
     more_runs: Callable[[Results, bool], Runs] | None = None
     video: Mapping | None = None
+    seeds: int = 1
+
+    def seeds_for(self, smoke: bool, override: int | None = None) -> tuple[int, ...]:
+        """The seeds a pass runs: ``0 .. N-1``, N from ``override`` (``--seeds``), else
+        :data:`SMOKE_SEEDS` for a smoke pass (at most the study's own N), else :attr:`seeds`.
+
+        Parameters
+        ----------
+        smoke : bool
+            The short pass.
+        override : int, optional
+            ``--seeds N`` (1 to :data:`MAX_SEEDS`).
+        """
+        n = override if override is not None else min(SMOKE_SEEDS, self.seeds) if smoke else self.seeds
+        return tuple(range(int(n)))
+
+
+def _first_runs(study: Study, smoke: bool, seeds: tuple) -> Runs:
+    """The study's first pass: ``runs(smoke, seeds)``, or ``runs(smoke)`` where it takes no seeds."""
+    if len(inspect.signature(study.runs).parameters) >= 2:
+        return study.runs(smoke, seeds)
+    return study.runs(smoke)
 
 
 def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False,
@@ -196,7 +237,7 @@ def execute(runs: Runs, out: Path, engine: sweep.Engine, *, resume: bool = False
 
 
 def run_study(study: Study, out: Path, engine: sweep.Engine, *, smoke: bool = False,
-              resume: bool = False, progress: bool = True) -> dict:
+              resume: bool = False, progress: bool = True, seeds: int | None = None) -> dict:
     """Run one study into ``out``: its runs, analysis, figures and data, report.
 
     Parameters
@@ -213,6 +254,8 @@ def run_study(study: Study, out: Path, engine: sweep.Engine, *, smoke: bool = Fa
         Run only the simulations not stored in ``out`` yet.
     progress : bool
         Show progress on stderr.
+    seeds : int, optional
+        N, in place of the study's own (:meth:`Study.seeds_for`).
 
     Returns
     -------
@@ -221,7 +264,9 @@ def run_study(study: Study, out: Path, engine: sweep.Engine, *, smoke: bool = Fa
     """
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    results = execute(study.runs(smoke), out, engine, resume=resume, progress=progress)
+    chosen = study.seeds_for(smoke, seeds)
+    results = execute(_first_runs(study, smoke, chosen), out, engine, resume=resume, progress=progress)
+    results = replace(results, seeds=chosen)
     if study.more_runs is not None:
         more = study.more_runs(results, smoke)
         if more:

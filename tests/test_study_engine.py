@@ -281,3 +281,33 @@ def test_sweeps_and_jobs_share_one_cluster_and_match_the_serial_runs(tmp_path):
     assert list(other["seed"]) == [2] and list(other["status"]) == ["ok"]
     with pytest.raises(sweep.SweepError, match="not both"):
         sweep.run(TINY, tmp_path / "x", engine=sweep.Engine("serial"), workers=2)
+
+
+def _seeded_study(n: int = 5) -> Study:
+    """A declared study whose runs are one job per seed; its headline is the seeds it saw."""
+    def runs(smoke, seeds):
+        return Runs(jobs={"draws": (f"{HERE}:counted", [{"n": s, "log": "unused"} for s in seeds])})
+
+    def analyse(results, smoke):
+        return {"seeds": results.seeds, "ran": [r["n"] for r in results.jobs["draws"]]}
+
+    return Study(name="seeded", title="Seeded", runs=runs, analyse=analyse, write=lambda a, out: None,
+                 report=lambda a, smoke: "# seeded\n", headline=lambda a: a, seeds=n)
+
+
+def test_a_study_runs_its_own_seeds_smoke_runs_two_and_seeds_overrides_both(tmp_path, monkeypatch):
+    monkeypatch.chdir(tmp_path)  # the jobs' logs
+    seeded = _seeded_study(5)
+    with sweep.Engine("serial") as engine:
+        assert run_study(seeded, tmp_path / "a", engine, progress=False)["ran"] == [0, 1, 2, 3, 4]
+        assert run_study(seeded, tmp_path / "b", engine, smoke=True, progress=False)["seeds"] == (0, 1)
+        got = run_study(seeded, tmp_path / "c", engine, smoke=True, seeds=7, progress=False)
+        assert got["seeds"] == tuple(range(7)) and got["ran"] == list(range(7))
+    assert study.SMOKE_SEEDS == 2 and _seeded_study(1).seeds_for(smoke=True) == (0,)
+
+
+def test_seeds_is_checked_in_one_line_and_kept_in_the_finished_marker(capsys):
+    with pytest.raises(SystemExit):
+        cli.main(["study", "saoud_fig6", "--seeds", "0"])
+    assert "argument --seeds: must be an integer >= 1 and <= 1000, got '0'" in capsys.readouterr().err
+    assert study_runner.marker("x", False, "c", 10) != study_runner.marker("x", False, "c", None)

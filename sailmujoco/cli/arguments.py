@@ -70,6 +70,7 @@ def number(low: float, *, low_open: bool, unit: str, integer: bool = False,
 POSITIVE_SECONDS = number(0.0, low_open=True, unit="s")
 SEED = number(0, low_open=False, unit="", integer=True)
 WORKERS = number(0, low_open=False, unit="(0: all cores)", integer=True, high=MAX_LOCAL_WORKERS)
+SEEDS = number(1, low_open=False, unit="", integer=True, high=1000)  # --seeds N (study.MAX_SEEDS)
 
 
 def floats(text: str) -> list[float]:

@@ -29,6 +29,7 @@ from .arguments import (
     INTERRUPTED,
     POSITIVE_SECONDS,
     SEED,
+    SEEDS,
     WORKERS,
     HelpFormatter,
     number,
@@ -69,7 +70,7 @@ def _study(args) -> int:
     root = out_folder(args.out)
     return study_runner.run_studies(names, root, smoke=args.smoke, workers=args.workers,
                                     scheduler=args.scheduler, resume=args.resume,
-                                    progress=not args.no_progress, video=args.video)
+                                    progress=not args.no_progress, video=args.video, seeds=args.seeds)
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -111,10 +112,14 @@ def _add_study(sub) -> None:
                                        "report.md,\nCSV tables and PNG figures in <out>/<study>/.",
                            epilog=study_runner.epilog() + "\n\nexamples:\n"
                                   "  sailmujoco study saoud_fig6 --smoke      # a short pass\n"
+                                  "  sailmujoco study wille_roll_table1 --seeds 10   # tighter intervals\n"
                                   "  sailmujoco study all --workers 2 --resume")
     study.add_argument("name", help="study name (listed below), or 'all'")
     study.add_argument("--smoke", action="store_true",
                        help="short runs: every path of the study, on reduced grids and durations")
+    study.add_argument("--seeds", type=SEEDS, metavar="N",
+                       help="run every stochastic case on seeds 0..N-1 (each study declares its own N; "
+                            "--smoke: 2); its numbers are means with 95 %% intervals over them")
     study.add_argument("--out", default="results", help="results root")
     study.add_argument("--workers", type=WORKERS,
                        help="worker processes of the embedded cluster, one for every study (0: all cores; "

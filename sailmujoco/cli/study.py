@@ -161,7 +161,7 @@ def study_code_digest() -> str:
     return digest.hexdigest()[:16]
 
 
-def marker(name: str, smoke: bool, code: str) -> dict:
+def marker(name: str, smoke: bool, code: str, seeds: int | None = None) -> dict:
     """What ``done.json`` holds for a finished study.
 
     Parameters
@@ -172,10 +172,12 @@ def marker(name: str, smoke: bool, code: str) -> dict:
         Whether it ran in smoke mode.
     code : str
         :func:`study_code_digest` of the code it ran.
+    seeds : int, optional
+        ``--seeds N`` (none: the study's own N).
     """
     from .. import __version__
 
-    return {"study": name, "smoke": bool(smoke), "code": code, "version": __version__}
+    return {"study": name, "smoke": bool(smoke), "code": code, "version": __version__, "seeds": seeds}
 
 
 def finished(out: Path, held_marker: dict) -> bool:
@@ -220,7 +222,7 @@ def record_video(scenario, out: Path, smoke: bool) -> None:
 
 
 def run_one(entry, out: Path, engine, *, smoke: bool = False, progress: bool = True,
-            video: bool = False, resume: bool = False) -> dict:
+            video: bool = False, resume: bool = False, seeds: int | None = None) -> dict:
     """Run one registered study into ``out`` (and film it with ``video``); its headline numbers.
 
     Parameters
@@ -239,6 +241,8 @@ def run_one(entry, out: Path, engine, *, smoke: bool = False, progress: bool = T
         Also film the study's main scenario.
     resume : bool
         Run only the simulations not stored in ``out`` yet.
+    seeds : int, optional
+        N seeds in place of the study's own.
 
     Raises
     ------
@@ -251,7 +255,8 @@ def run_one(entry, out: Path, engine, *, smoke: bool = False, progress: bool = T
     if not isinstance(loaded, study.Study):
         raise TypeError(f"the study entry point in {entry.module} names a {type(loaded).__name__}, "
                         "not a sailmujoco.study.Study")
-    headline = study.run_study(loaded, out, engine, smoke=smoke, resume=resume, progress=progress)
+    headline = study.run_study(loaded, out, engine, smoke=smoke, resume=resume, progress=progress,
+                               seeds=seeds)
     if video:
         record_video(loaded.video, out, smoke)
     return headline
@@ -259,7 +264,7 @@ def run_one(entry, out: Path, engine, *, smoke: bool = False, progress: bool = T
 
 def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: int | None = None,
                 scheduler: str | None = None, resume: bool = False, progress: bool = True,
-                video: bool = False) -> int:
+                video: bool = False, seeds: int | None = None) -> int:
     """Run the studies ``names`` into ``root/<name>/`` on one worker pool, printing where it is.
 
     Parameters
@@ -280,6 +285,8 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
         Show progress bars on stderr.
     video : bool
         Also film each study's main scenario.
+    seeds : int, optional
+        ``--seeds N``: every study's stochastic cases on seeds 0..N-1 (none: each study's own N).
 
     Returns
     -------
@@ -300,7 +307,7 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
             out = root / name
             out.mkdir(parents=True, exist_ok=True)
             t0 = time.perf_counter()
-            held = marker(name, smoke, code)
+            held = marker(name, smoke, code, seeds)
             left = len(names) - i + 1  # this one included; those kept by --resume are not counted
             note = (f"; {progress_note(t0 - start, list(took.values()), len(took) + left)}"
                     if len(names) > 1 else "")
@@ -312,7 +319,7 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
                   + (" (resumed)" if resume else "") + note, flush=True)
             (out / DONE_MARKER).unlink(missing_ok=True)
             headline = run_one(found[name], out, engine, smoke=smoke, progress=progress,
-                               video=video, resume=resume)
+                               video=video, resume=resume, seeds=seeds)
             (out / DONE_MARKER).write_text(json.dumps(held, indent=1) + "\n")
             took[name] = time.perf_counter() - t0
             print(f"      done in {took[name]:.0f} s: {headline_line(headline)}", flush=True)
