@@ -138,6 +138,19 @@ def test_the_example_sweep_file_runs_as_printed(tmp_path, capsys):
         * len(example["zip"]["task.wind_from_deg"])
     assert len(table) == runs and set(table["status"]) == {"ok"}
     assert (table["mean_surge"] > 0.3).all()  # under sail, not drifting
+    # summary.csv: each combination's mean over its seeds with Student's t interval,
+    # mean ± t(0.975, n-1) s / sqrt(n) (t(0.975, 2) = 4.302653 for three seeds)
+    summary = pd.read_csv(out / "summary.csv")
+    assert len(summary) == runs // len(example["seeds"]) and (summary["n"] == len(example["seeds"])).all()
+    first = summary.iloc[0]
+    same = table[(table["controller.kp"] == first["controller.kp"])
+                 & (table["task.wind_from_deg"] == first["task.wind_from_deg"])]["mean_surge"]
+    assert len(example["seeds"]) == 3 and len(same) == 3
+    half = 4.302653 * same.std(ddof=1) / len(same) ** 0.5
+    assert first["mean_surge"] == pytest.approx(same.mean(), rel=1e-12)
+    assert (first["mean_surge_low"], first["mean_surge_high"]) == pytest.approx(
+        (same.mean() - half, same.mean() + half), rel=1e-6)
+    assert "mean_surge: mean [95 % interval] over 3 seed(s) per combination" in capsys.readouterr().out
 
 
 @pytest.mark.parametrize("argv, message", [

@@ -20,7 +20,8 @@ task = "heading_hold"
 world = "mujoco"              # or "paper": the paper's reduced model (default: mujoco)
 controller = "pid"            # or "my_module:factory", or "path/to/my_law.py:factory"
 duration = 20.0               # simulated seconds per run (default: the task's)
-seeds = [0, 1]                # each seed runs every combination (default [0])
+seeds = [0, 1, 2]             # each seed runs every combination (default [0]); the summary
+                              # gives each combination's mean and 95 % interval over them
 metrics = ["mean_surge", "heading_error_rms"]  # default: every metric of the task
 
 [options]                     # the same for every run; keys are "<namespace>.<name>"
@@ -118,9 +119,17 @@ def run_cli(args) -> int:
     print("status: " + ", ".join(f"{k} {v}" for k, v in counts.items())
           + (" (stopped: the simulation ended early, e.g. a capsize; see the error column)"
              if counts["stopped"] else ""))
-    for metric in spec.get("metrics", [])[:5]:
-        print("  " + sweep.summarise(table, metric))
-    print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv", flush=True)
+    from ..sweep import summary
+
+    metrics = spec.get("metrics") or [c for c in table.columns if c not in summary.NOT_METRICS
+                                      and c not in summary.combination_columns(table)]
+    by_combination = sweep.over_seeds(table, metrics)
+    if not by_combination.empty:
+        by_combination.to_csv(out / "summary.csv", index=False)
+    for metric in metrics[:5]:
+        print("\n".join("  " + line for line in summary.lines(by_combination, metric, table)))
+    print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv; over seeds: "
+          f"summary.csv", flush=True)
     failed = sweep.failures(table)
     for line in failed:  # one line per distinct reason; the traceback is in the run's record
         print(f"sailmujoco sweep: {line}", file=sys.stderr)

@@ -93,7 +93,7 @@ from .controllers import (
 from .engine import CONNECT_TIMEOUT_S, MAX_LOCAL_WORKERS, Engine
 from .errors import SweepError, lost
 from .outcome import failures
-from .runs import execute, execute_job, job_id, run, run_jobs, run_many, summarise
+from .runs import execute, execute_job, job_id, run, run_jobs, run_many
 from .spec import (
     NAMESPACES,
     TOP_KEYS,
@@ -108,10 +108,11 @@ from .spec import (
     validate,
 )
 from .store import ResultStore, decode, encode
+from .summary import over_seeds
 
-__all__ = ["CONNECT_TIMEOUT_S", "ENTRY_POINTS", "MAX_LOCAL_WORKERS", "NAMESPACES", "TOP_KEYS",
+__all__ = ["over_seeds", "CONNECT_TIMEOUT_S", "ENTRY_POINTS", "MAX_LOCAL_WORKERS", "NAMESPACES", "TOP_KEYS",
            "Engine", "ResultStore", "SweepError", "check_controller_options", "check_folder",
            "controller_factories", "controller_factory", "controller_label", "decode", "encode",
            "env_choices", "env_options", "execute", "execute_job", "expand", "failures", "job_id",
            "load_spec", "lost", "make_controller", "register_controller", "run", "run_id", "run_jobs",
-           "run_many", "spec_hash", "summarise", "sweep_id", "validate"]
+           "run_many", "spec_hash", "sweep_id", "validate"]

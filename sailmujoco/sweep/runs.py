@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import math
 import os
 import sys
 import time
@@ -341,21 +340,3 @@ def _resolve(function: str):
 def _short(job) -> str:
     text = json.dumps(encode(job), sort_keys=True)
     return text if len(text) <= 120 else text[:117] + "..."
-
-
-def summarise(table, metric: str) -> str:
-    """A one-line summary of a metric over the finished runs (for the CLI).
-
-    Parameters
-    ----------
-    table : pandas.DataFrame
-        A sweep's table (:func:`run`).
-    metric : str
-        The metric's column.
-    """
-    ok = table[table["status"] == "ok"] if "status" in table else table
-    if metric not in ok or ok.empty:
-        return f"{metric}: no data"
-    values = ok[metric].astype(float)
-    return (f"{metric}: n={values.size} mean={values.mean():.4g} min={values.min():.4g} "
-            f"max={values.max():.4g}" + ("" if math.isfinite(values.mean()) else " (nan present)"))

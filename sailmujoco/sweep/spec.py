@@ -36,7 +36,8 @@ KEYS = {  # a sweep file's top-level keys, what each holds (``sweep --help`` lis
     "world": "'mujoco' (the 6-DOF boat, default) or 'paper' (the paper's reduced model)",
     "controller": "a registered controller, 'module:factory' or 'file.py:factory' (required)",
     "duration": "simulated seconds per run (default: the task's)",
-    "seeds": "list of seeds, each a run of every combination (default [0])",
+    "seeds": ("list of seeds, each a run of every combination (default [0]); summary.csv holds each "
+              "metric's mean and 95 % interval over them"),
     "metrics": "the task's metrics to keep in the table (default: all of them)",
     "trajectory_rate": "Hz: also store x, y, heading, heel, pitch, u at this rate in each run's record",
     "options": "table: 'namespace.name' = value, the same for every run",
