@@ -73,3 +73,24 @@ def test_polar_command_writes_figure_and_csv(tmp_path, capsys):
 def test_polar_unknown_boat_exits_2(capsys):
     assert main(["polar", "catamaran"]) == 2
     assert "unknown boat 'catamaran'" in capsys.readouterr().err
+
+
+def test_polar_over_seeds_keeps_each_seed_and_pairs_the_ratio_by_seed(tmp_path):
+    """Two seeds (two start headings): each seed's row kept; a point's speed is the mean of its
+    two runs with the t-interval mean ± t(0.975, 1) |a - b| / 2, t(0.975, 1) = 12.7062; the
+    ratio to the best sail is the mean of the two per-seed ratios."""
+    code = main(["polar", "saoud_robot", "--controller", "saoud", "--compare", "best", "--tws", "4",
+                 "--twa", "90", "--duration", "12", "--seeds", "2", "--scheduler", "serial",
+                 "--out", str(tmp_path), "--no-progress"])
+    assert code == 0
+    seeds = pd.read_csv(tmp_path / "polar_saoud_seeds.csv")
+    assert list(seeds["seed"]) == [0, 1] and seeds["speed"].nunique() == 2  # the start differs
+    point = pd.read_csv(tmp_path / "polar_saoud.csv").iloc[0]
+    a, b = seeds["speed"]
+    assert point["n"] == 2 and point["speed"] == pytest.approx((a + b) / 2, rel=1e-12)
+    assert (point["speed_low"], point["speed_high"]) == pytest.approx(
+        ((a + b) / 2 - 12.7062 * abs(a - b) / 2, (a + b) / 2 + 12.7062 * abs(a - b) / 2), rel=1e-5)
+    best = pd.read_csv(tmp_path / "polar_best_seeds.csv")
+    compare = pd.read_csv(tmp_path / "compare.csv").iloc[0]
+    assert compare["saoud/best"] == pytest.approx(float((seeds["speed"] / best["speed"]).mean()), rel=1e-12)
+    assert "saoud/best" in (tmp_path / "compare.md").read_text()

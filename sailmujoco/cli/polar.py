@@ -17,6 +17,7 @@ from ..design.polar import (
     comparison_table,
     finished_points,
     first_failure,
+    over_seeds,
     plot_comparison,
     plot_polar,
     ratio_summary,
@@ -26,6 +27,7 @@ from ..options import World, choices
 from ..sweep import controller_label
 from .arguments import (
     POSITIVE_SECONDS,
+    SEEDS,
     WORKERS,
     HelpFormatter,
     controller_options,
@@ -38,7 +40,10 @@ DESCRIPTION = f"""\
 The steady speed of BOAT at every true wind speed x true wind angle, each point a heading_hold
 run in a steady wind (no gusts) from TWA off the starboard bow, its speed the mean over the
 last {STEADY_WINDOW_S:g} s. Writes polar_<controller>.png and .csv into --out, and prints the best VMG upwind
-and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept."""
+and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept.
+With --seeds N each point is sailed N times (the seed draws the start heading and, with
+--gusts, the gusts): its speed is the mean with its 95 % interval, each seed's row is kept in
+polar_<controller>_seeds.csv, and --compare's ratios are paired by seed."""
 
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
@@ -80,6 +85,11 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                         help="simulated seconds per point")
     parser.add_argument("--duration", dest="seconds", type=POSITIVE_SECONDS, default=argparse.SUPPRESS,
                         help=argparse.SUPPRESS)  # the same option, under the sweep file's name
+    parser.add_argument("--seeds", type=SEEDS, default=1, metavar="N",
+                        help="sail each point on seeds 0..N-1 (default 1: one steady run); its speed is "
+                             "then the mean with its 95 %% interval")
+    parser.add_argument("--gusts", action="store_true",
+                        help="gusts and wander in the wind, drawn by the seed (default: a steady wind)")
     parser.add_argument("--out", help="output folder (default results/polar/<boat>-<controller>)")
     parser.add_argument("--scheduler", help="Dask scheduler address, or 'serial'")
     parser.add_argument("--workers", type=WORKERS, help="worker processes (0 or unset: all cores)")
@@ -96,8 +106,8 @@ def run_cli(args) -> int:
     args : argparse.Namespace
         ``boat``, ``controller``, ``option`` (``(key, value)`` pairs of the controller's
         options), ``compare`` (comma separated, or None), ``world``, ``tws``,
-        ``twa``, ``seconds`` (simulated seconds per point), ``out``, ``scheduler``, ``workers``,
-        ``no_progress``.
+        ``twa``, ``seconds`` (simulated seconds per point), ``seeds``, ``gusts``, ``out``,
+        ``scheduler``, ``workers``, ``no_progress``.
 
     Returns
     -------
@@ -112,19 +122,24 @@ def run_cli(args) -> int:
     label = controller_label(args.controller)
     out = out_folder(args.out or Path("results") / "polar" / f"{boat_label(args.boat)}-{label}")
     names = [args.controller] + [c for c in (args.compare or "").split(",") if c]
-    frames, kept = {}, []
+    frames, points, kept = {}, {}, []
+    seeds = tuple(range(args.seeds))
     for name in names:
         print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
-              f"({args.world}, {args.seconds:g} s per point)")
+              f"({args.world}, {args.seconds:g} s per point"
+              + (f", {len(seeds)} seeds{', gusts' if args.gusts else ''}" if len(seeds) > 1 else "") + ")")
         table, spec = sweep_table(args.boat, name, out, tws=args.tws, twa=args.twa,
                                   world=args.world, duration=args.seconds,
                                   scheduler=args.scheduler, workers=args.workers,
                                   progress=not args.no_progress,
                                   options={f"controller.{key}": value for key, value in own.items()}
-                                  if name == args.controller else None)
-        frames[name] = finished_points(table, name)
+                                  if name == args.controller else None, seeds=seeds, gusts=args.gusts)
+        points[name] = finished_points(table, name)
+        frames[name] = over_seeds(points[name])
         csv = out / f"polar_{controller_label(name)}.csv"
         frames[name].to_csv(csv, index=False)
+        if len(seeds) > 1:
+            points[name].to_csv(out / f"polar_{controller_label(name)}_seeds.csv", index=False)
         n_points = len(frames[name])
         kept.append(f"{csv} ({n_points} point{'' if n_points == 1 else 's'})")
         failure = first_failure(table, spec, name)
@@ -136,25 +151,27 @@ def run_cli(args) -> int:
     main_frame = frames[args.controller]
     png = out / f"polar_{controller_label(args.controller)}.png"
     plot_polar(main_frame, png, f"{boat_label(args.boat)}, {args.controller} ({args.world})")
+    over = " (mean over seeds)" if len(seeds) > 1 else ""
     for tws, best in best_vmg(main_frame).items():
         (au, vu), (ad, vd) = best["upwind"], best["downwind"]
         print(f"  TWS {tws:g} m/s: best VMG upwind {vu:.2f} m/s at {au:g} deg, "
-              f"downwind {vd:.2f} m/s at {ad:g} deg")
+              f"downwind {vd:.2f} m/s at {ad:g} deg{over}")
     print(f"wrote {png} and {out / f'polar_{controller_label(args.controller)}.csv'}")
     if len(frames) > 1:
-        _write_comparison(args, frames, out)
+        _write_comparison(args, frames, points, out)
     return 0
 
 
-def _write_comparison(args, frames: dict, out: Path) -> None:
+def _write_comparison(args, frames: dict, points: dict, out: Path) -> None:
     """compare.png, compare.csv and compare.md of the ``--compare`` sail laws."""
     compare = out / "compare.png"
     plot_comparison(frames, compare, f"{args.boat}: steady speed by sail law ({args.world})")
-    table = comparison_table(frames)
+    table = comparison_table(points)
     table.to_csv(out / "compare.csv", index=False)
     command = f"sailmujoco polar {args.boat} --controller {args.controller} --compare {args.compare}"
     settings = (f"world {args.world}, TWS {', '.join(f'{v:g}' for v in args.tws)} m/s, TWA "
-                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.seconds:g} s per point")
+                f"{', '.join(f'{v:g}' for v in args.twa)} deg, {args.seconds:g} s per point"
+                + (f", {args.seeds} seeds{' in gusts' if args.gusts else ''}" if args.seeds > 1 else ""))
     summary = ratio_summary(table)
     (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
                                     encoding="utf-8")

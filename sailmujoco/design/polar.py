@@ -8,6 +8,12 @@ and downwind (max -v cos TWA, TWA > 90) are marked.
 ``best`` is the brute-force polar (Saoud 2015 Fig. 7's vel_max): every fixed sail angle of a
 grid is sailed and the fastest steady speed kept, point by point.
 
+**Seeds.** One seed (the default) sails each point once from a fixed start in a steady wind. With
+N seeds each point is sailed N times, the seed drawing the start heading (the task's jitter) and,
+with ``gusts``, the wind's gusts and wander; a point's speed is then the mean over its seeds with
+its 95 % interval (``speed_low``, ``speed_high``), and a comparison's ratio to ``best`` is paired
+by seed (the same start and wind in both).
+
 A point whose run fails (its controller raises, or gives a bad action) is left out. ``sailmujoco
 polar`` (:mod:`sailmujoco.cli.polar`) then keeps the CSVs of what finished, says in one line why and
 when the first failed point failed (:func:`first_failure` runs that point again in its own process
@@ -33,7 +39,7 @@ STEADY_WINDOW_S = 20.0  # s, a point's speed is the mean over the last this many
 
 def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
                duration: float = 60.0, steady_window: float = STEADY_WINDOW_S, controller_grid=None,
-               options: dict | None = None) -> dict:
+               options: dict | None = None, seeds=(0,), gusts: bool = False) -> dict:
     """The sweep description of one polar (TWS x TWA, heading north).
 
     Parameters
@@ -53,12 +59,19 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
         Controller options swept at every point (``{"controller.sail_deg": [...]}``).
     options : dict, optional
         More sweep options (``"task.x"`` / ``"env.x"`` keys).
+    seeds : sequence of int
+        The seeds each point is sailed on; with more than one the seed draws the start heading
+        (the task's jitter).
+    gusts : bool
+        Gusts and wander in the wind, drawn by the seed.
 
     Returns
     -------
     dict
         The sweep description (:mod:`sailmujoco.sweep`).
     """
+    seeds = [int(s) for s in seeds]
+    jitter = {} if len(seeds) > 1 else {"task.heading_jitter_deg": 0.0}
     tws_axis, twa_axis = [], []
     for s in tws:
         for a in twa:
@@ -67,11 +80,10 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
     spec = {
         "name": f"polar-{boat_label(boat)}-{sweep.controller_label(controller)}", "boat": str(boat),
         "task": "heading_hold",
-        "world": world, "controller": controller, "duration": float(duration), "seeds": [0],
+        "world": world, "controller": controller, "duration": float(duration), "seeds": seeds,
         "metrics": ["steady_speed", "steady_heel"],
-        "options": {"task.gusts": False, "task.wander": False, "task.desired_heading_deg": 0.0,
-                    "task.steady_window": float(steady_window), "task.heading_jitter_deg": 0.0,
-                    **(options or {})},
+        "options": {"task.gusts": bool(gusts), "task.wander": bool(gusts), "task.desired_heading_deg": 0.0,
+                    "task.steady_window": float(steady_window), **jitter, **(options or {})},
         "zip": {"task.wind_speed": tws_axis, "task.wind_from_deg": twa_axis},
         "grid": dict(controller_grid or {}),
     }
@@ -80,7 +92,7 @@ def polar_spec(boat: str, controller: str, tws, twa, *, world: str = "mujoco",
 
 def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
             world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
-            progress: bool = True, options: dict | None = None):
+            progress: bool = True, options: dict | None = None, seeds=(0,), gusts: bool = False):
     """Run a polar on the sweep engine.
 
     Parameters
@@ -106,32 +118,38 @@ def compute(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA
         Show a progress bar.
     options : dict, optional
         More sweep options.
+    seeds : sequence of int
+        The seeds each point is sailed on (:func:`polar_spec`).
+    gusts : bool
+        Gusts and wander, drawn by the seed.
 
     Returns
     -------
     pandas.DataFrame
-        Columns tws, twa, speed, heel (and sail_deg for ``best``), the runs that finished.
+        Columns tws, twa, speed, heel (and sail_deg for ``best``), each the mean over the point's
+        seeds that finished, speed_low and speed_high (its 95 % interval) and n (its seeds).
     """
     table, _ = sweep_table(boat, controller, out, tws=tws, twa=twa, world=world, duration=duration,
-                           scheduler=scheduler, workers=workers, progress=progress, options=options)
-    return finished_points(table, controller)
+                           scheduler=scheduler, workers=workers, progress=progress, options=options,
+                           seeds=seeds, gusts=gusts)
+    return over_seeds(finished_points(table, controller))
 
 
 def sweep_table(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT_TWA,
                 world: str = "mujoco", duration: float = 60.0, scheduler=None, workers=None,
-                progress: bool = True, options: dict | None = None) -> tuple:
+                progress: bool = True, options: dict | None = None, seeds=(0,), gusts: bool = False) -> tuple:
     """Run a polar on the sweep engine: (its table, failed runs included, with the columns tws,
     twa, speed and heel; its sweep description).
 
     Parameters
     ----------
-    boat, controller, out, tws, twa, world, duration, scheduler, workers, progress, options
+    boat, controller, out, tws, twa, world, duration, scheduler, workers, progress, options, seeds, gusts
         As :func:`compute`.
     """
     grid = {"controller.sail_deg": list(BEST_SAIL_DEG)} if controller == "best" else None
     name = "fixed_sail" if controller == "best" else controller
     spec = polar_spec(boat, name, tws, twa, world=world, duration=duration, controller_grid=grid,
-                      options=options)
+                      options=options, seeds=seeds, gusts=gusts)
     # a polar re-run with other winds or duration goes into the same folder (the table keeps
     # this run's rows only): the sweep may replace another spec there (exclusive=False)
     folder = Path(out) / f"sweep-{sweep.controller_label(controller)}"
@@ -146,7 +164,8 @@ def sweep_table(boat: str, controller: str, out, *, tws=DEFAULT_TWS, twa=DEFAULT
 
 
 def finished_points(table, controller: str):
-    """The polar of the runs that finished (for ``best``, the fastest sail at each point).
+    """The polar of the runs that finished, one row per point and seed (for ``best``, the fastest
+    sail at each point on each seed).
 
     Parameters
     ----------
@@ -158,14 +177,42 @@ def finished_points(table, controller: str):
     Returns
     -------
     pandas.DataFrame
-        ``tws``, ``twa``, ``speed``, ``heel`` (and ``sail_deg`` for ``best``), by TWS and TWA.
+        ``tws``, ``twa``, ``seed``, ``speed``, ``heel`` (and ``sail_deg`` for ``best``), by TWS,
+        TWA and seed.
     """
     ok = table[table["status"] == "ok"]
-    if controller == "best":  # the fastest fixed sail at each point
-        idx = ok.groupby(["tws", "twa"])["speed"].idxmax()
+    if controller == "best":  # the fastest fixed sail at each point, seed by seed
+        idx = ok.groupby(["tws", "twa", "seed"])["speed"].idxmax()
         best = ok.loc[idx].rename(columns={"controller.sail_deg": "sail_deg"})
-        return best[["tws", "twa", "speed", "heel", "sail_deg"]].sort_values(["tws", "twa"])
-    return ok[["tws", "twa", "speed", "heel"]].sort_values(["tws", "twa"])
+        return best[["tws", "twa", "seed", "speed", "heel", "sail_deg"]].sort_values(["tws", "twa", "seed"])
+    return ok[["tws", "twa", "seed", "speed", "heel"]].sort_values(["tws", "twa", "seed"])
+
+
+def over_seeds(points):
+    """A polar from its points' seeds: one row per (TWS, TWA) with the mean speed, heel (and
+    sail_deg) over the seeds, ``speed_low`` and ``speed_high`` (the speed's 95 % interval,
+    :mod:`sailmujoco.stats`) and ``n``, the seeds.
+
+    Parameters
+    ----------
+    points : pandas.DataFrame
+        :func:`finished_points`.
+    """
+    import pandas as pd
+
+    from .. import stats
+
+    rows = []
+    for (tws, twa), group in points.groupby(["tws", "twa"], sort=True):
+        speed = stats.mean_interval(group["speed"].to_numpy(dtype=float))
+        row = {"tws": tws, "twa": twa, "speed": speed.mean, "speed_low": speed.low,
+               "speed_high": speed.high, "heel": float(group["heel"].mean())}
+        if "sail_deg" in group:
+            row["sail_deg"] = float(group["sail_deg"].mean())
+        rows.append({**row, "n": len(group)})
+    columns = ["tws", "twa", "speed", "speed_low", "speed_high", "heel"]
+    columns += ["sail_deg"] if "sail_deg" in points else []
+    return pd.DataFrame(rows, columns=columns + ["n"])
 
 
 def first_failure(table, spec: dict, controller: str) -> str | None:
@@ -260,6 +307,7 @@ def plot_polar(frame, path, title: str) -> None:
     for tws, group in frame.groupby("tws"):
         (line,) = ax.plot(np.radians(group["twa"]), group["speed"], "-o", ms=3,
                           label=f"TWS {tws:g} m/s")
+        _bars(ax, np.radians(group["twa"]), group, line.get_color())
         for kind, marker in (("upwind", "^"), ("downwind", "v")):
             a, _ = vmg[tws][kind]
             v = float(group.loc[group["twa"] == a, "speed"].iloc[0])
@@ -297,7 +345,8 @@ def plot_comparison(frames: dict, path, title: str) -> None:
         for name, frame in frames.items():
             group = frame[frame["tws"] == tws]
             style = styles.get(name, {"label": name})
-            ax.plot(group["twa"], group["speed"], marker="o", ms=3, **style)
+            (line,) = ax.plot(group["twa"], group["speed"], marker="o", ms=3, **style)
+            _bars(ax, group["twa"], group, line.get_color())
         ax.set_title(f"TWS {tws:g} m/s")
         ax.set_xlabel("true wind angle [deg]")
         ax.set_ylabel("steady speed [m/s]")
@@ -315,27 +364,46 @@ def comparison_table(frames: dict):
     """One row per (TWS, TWA): each controller's steady speed [m/s] and the ratios to ``best``.
 
     When ``best`` is among ``frames``, each other controller's ratio to it (``<name>/best``: speed /
-    best speed, a plain ratio; 0.9 is 10 % slower than the best fixed sail). A point a controller
-    did not finish is missing (NaN) in its columns.
+    best speed, a plain ratio; 0.9 is 10 % slower than the best fixed sail). Frames with a ``seed``
+    column (:func:`finished_points`) are compared seed by seed: a speed is the mean over the
+    point's seeds and the ratio the mean per-seed ratio, with its 95 % interval
+    (``<name>/best_low``, ``<name>/best_high``; :func:`sailmujoco.stats.paired_ratio`). A point a
+    controller did not finish is missing (NaN) in its columns.
 
     Parameters
     ----------
     frames : dict
-        Controller name -> its polar (:func:`compute`).
+        Controller name -> its points (:func:`finished_points`, or a polar without seeds).
 
     Returns
     -------
     pandas.DataFrame
     """
+    from .. import stats
+
+    per_seed = {name: (frame if "seed" in frame else frame.assign(seed=0)) for name, frame in frames.items()}
     table = None
-    for name, frame in frames.items():
-        part = frame[["tws", "twa", "speed"]].rename(columns={"speed": name})
+    for name, frame in per_seed.items():
+        part = frame.groupby(["tws", "twa"], as_index=False)["speed"].mean().rename(columns={"speed": name})
         table = part if table is None else table.merge(part, on=["tws", "twa"], how="outer")
+    table = table.sort_values(["tws", "twa"]).reset_index(drop=True)
     if "best" in frames:
-        for name in frames:
-            if name != "best":
-                table[f"{name}/best"] = table[name] / table["best"]
-    return table.sort_values(["tws", "twa"]).reset_index(drop=True)
+        best = per_seed["best"][["tws", "twa", "seed", "speed"]]
+        for name, frame in per_seed.items():
+            if name == "best":
+                continue
+            both = frame[["tws", "twa", "seed", "speed"]].merge(best, on=["tws", "twa", "seed"],
+                                                                 suffixes=("", "_best"))
+            ratios = {}
+            for key, group in both.groupby(["tws", "twa"]):
+                ratios[key] = stats.paired_ratio(group["speed"], group["speed_best"])
+            keys = list(zip(table["tws"], table["twa"], strict=True))
+            nan = stats.Interval(np.nan, np.nan, np.nan, 0)
+            got = [ratios.get(k, nan) for k in keys]
+            table[f"{name}/best"] = [g.mean for g in got]
+            table[f"{name}/best_low"] = [g.low for g in got]
+            table[f"{name}/best_high"] = [g.high for g in got]
+    return table
 
 
 def ratio_summary(table, bands=TWA_BANDS):
@@ -358,7 +426,7 @@ def ratio_summary(table, bands=TWA_BANDS):
     import pandas as pd
 
     rows = []
-    for column in [c for c in table.columns if str(c).endswith("/best")]:
+    for column in _ratio_columns(table):
         name = column[: -len("/best")]
         for label, low, high in bands:
             band = table[(table["twa"] >= low) & (table["twa"] < high)].dropna(subset=[column])
@@ -393,7 +461,7 @@ def comparison_markdown(table, summary, command: str = "", settings: str = "") -
     if command:
         lines += [f"Made by `{command}`" + (f" ({settings})" if settings else "") + ". *speed*: the "
                   f"mean speed over ground in the last {STEADY_WINDOW_S:g} s of each run, "
-                  "wind steady, no gusts.", ""]
+                  + ("in gusts." if "gusts" in settings else "wind steady, no gusts."), ""]
     if len(summary):
         lines += ["*ratio*: the controller's steady speed / the best fixed sail's (`best`, brute force "
                   f"over sail angles {BEST_SAIL_DEG[0]}-{BEST_SAIL_DEG[-1]}° in "
@@ -407,17 +475,43 @@ def comparison_markdown(table, summary, command: str = "", settings: str = "") -
             lines.append(f"| {r.controller} | {r.band} | {r.twa_low:g}-{r.twa_high:g} "
                          f"| {r.ratio_min:.2f} ({low}) | {r.ratio_max:.2f} ({high}) |")
         lines.append("")
-    speeds = [c for c in table.columns if c not in ("tws", "twa") and not str(c).endswith("/best")]
-    ratios = [c for c in table.columns if str(c).endswith("/best")]
+    ratios = _ratio_columns(table)
+    speeds = [c for c in table.columns if c not in ("tws", "twa") and "/best" not in str(c)]
+    seeded = any(table[f"{c}_low"].notna().any() for c in ratios)
+    if seeded:
+        lines += ["Speeds are means over seeds; each ratio is the mean of its per-seed ratios with its 95 % "
+                  "interval, `mean [low, high]` (the same start and wind in both laws).", ""]
     lines += ["| TWS [m/s] | TWA [deg] | " + " | ".join(f"{c} [m/s]" for c in speeds)
               + "".join(f" | {c}" for c in ratios) + " |",
               "|" + "---|" * (2 + len(speeds) + len(ratios))]
     for _, row in table.iterrows():
         cells = [f"{row['tws']:g}", f"{row['twa']:g}"] + [_cell(row[c], 2) for c in speeds]
-        cells += [_cell(row[c], 2) for c in ratios]
+        cells += [_ratio_cell(row, c) if seeded else _cell(row[c], 2) for c in ratios]
         lines.append("| " + " | ".join(cells) + " |")
     return "\n".join(lines) + "\n"
 
 
 def _cell(value, digits: int) -> str:
     return "—" if not np.isfinite(value) else f"{value:.{digits}f}"
+
+
+def _bars(ax, x, group, color) -> None:
+    """The 95 % interval of each point's speed over its seeds, as error bars (none for one seed)."""
+    if "speed_low" not in group or not group["speed_low"].notna().any():
+        return
+    speed = group["speed"].to_numpy(dtype=float)
+    low = np.where(group["speed_low"].notna(), group["speed_low"], speed)
+    high = np.where(group["speed_high"].notna(), group["speed_high"], speed)
+    ax.errorbar(x, speed, yerr=np.vstack([speed - low, high - speed]), fmt="none", ecolor=color,
+                capsize=2, lw=1)
+
+
+def _ratio_columns(table) -> list[str]:
+    """The ``<name>/best`` ratio columns of a comparison table (not their interval ends)."""
+    return [c for c in table.columns if str(c).endswith("/best")]
+
+
+def _ratio_cell(row, column: str) -> str:
+    from .. import stats
+
+    return stats.Interval(row[column], row[f"{column}_low"], row[f"{column}_high"], 0).fixed(2)
