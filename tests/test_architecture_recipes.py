@@ -109,8 +109,10 @@ def test_add_a_study(tmp_path, monkeypatch):
     with sweep.Engine("serial") as engine:
         headline = run_study(my_study.STUDY, tmp_path / "out", engine, progress=False)
     assert headline["surge_6"] > headline["surge_3"] > 0.0
-    assert "| 3 |" in (tmp_path / "out" / "report.md").read_text()
-    assert (tmp_path / "out" / "speeds.csv").read_text().startswith("wind,mean_surge\n")
+    report = (tmp_path / "out" / "report.md").read_text()
+    assert re.search(r"\| 3 \| [0-9.]+ \[[0-9.]+, [0-9.]+\] \|", report)  # mean [low, high]
+    csv = (tmp_path / "out" / "speeds.csv").read_text().splitlines()
+    assert csv[0] == "wind,mean_surge,low,high,n" and csv[1].endswith(",5")  # the study's own N
 
 
 @pytest.fixture
