@@ -311,3 +311,36 @@ def test_seeds_is_checked_in_one_line_and_kept_in_the_finished_marker(capsys):
         cli.main(["study", "saoud_fig6", "--seeds", "0"])
     assert "argument --seeds: must be an integer >= 1 and <= 1000, got '0'" in capsys.readouterr().err
     assert study_runner.marker("x", False, "c", 10) != study_runner.marker("x", False, "c", None)
+
+
+def gusty_surge(job: dict) -> dict:
+    """One short episode of the robot in gusts: its mean surge (the gusts and start are the seed's)."""
+    from sailmujoco.studies.kit import run_episode
+
+    metrics, _, _ = run_episode("saoud_robot", "heading_hold", "mujoco", "pid", seed=job["seed"],
+                                time_limit=6.0)
+    return {"seed": job["seed"], "surge": metrics["mean_surge"]}
+
+
+def _gusty_study() -> Study:
+    from sailmujoco import stats
+
+    def runs(smoke, seeds):
+        return Runs(jobs={"surge": (f"{HERE}:gusty_surge", [{"seed": s} for s in seeds])})
+
+    def analyse(results, smoke):
+        return stats.mean_interval([r["surge"] for r in results.jobs["surge"]])
+
+    return Study(name="gusty", title="Gusty", runs=runs, analyse=analyse, write=lambda a, out: None,
+                 report=lambda a, smoke: f"# gusty\n\nsurge {a.mean!r} [{a.low!r}, {a.high!r}], N={a.n}\n",
+                 headline=lambda a: {"surge": a.mean}, seeds=3)
+
+
+def test_the_same_seeds_give_the_same_report_bit_for_bit_and_another_n_another_interval(tmp_path):
+    gusty = _gusty_study()
+    with sweep.Engine("serial") as engine:
+        for name, seeds in (("a", 3), ("b", 3), ("c", 4)):
+            run_study(gusty, tmp_path / name, engine, seeds=seeds, progress=False)
+    a, b, c = ((tmp_path / n / "report.md").read_text() for n in "abc")
+    assert a == b and "N=3" in a  # a run is a pure function of its seeds, printed to 17 digits
+    assert c != a and "N=4" in c
