@@ -315,7 +315,8 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
                 print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''}: finished "
                       f"before, kept ({out / 'report.md'})", flush=True)
                 continue
-            print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''} -> {out}"
+            print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''}{_seeds_note(found[name], smoke, seeds)}"
+                  f" -> {out}"
                   + (" (resumed)" if resume else "") + note, flush=True)
             (out / DONE_MARKER).unlink(missing_ok=True)
             headline = run_one(found[name], out, engine, smoke=smoke, progress=progress,
@@ -328,6 +329,15 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
     print(f"all done in {time.perf_counter() - start:.0f} s; reports: "
           + ", ".join(str(root / n / "report.md") for n in names))
     return 0
+
+
+def _seeds_note(entry, smoke: bool, seeds: int | None) -> str:
+    """', N seeds' for a study's start line (nothing when it cannot be loaded: run_one says why)."""
+    try:
+        n = len(entry.load().seeds_for(smoke, seeds))
+    except Exception:
+        return ""
+    return f", {n} seed{'s' if n != 1 else ''}"
 
 
 def headline_line(headline: dict, shown: int = 6) -> str:
