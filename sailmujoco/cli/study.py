@@ -315,8 +315,8 @@ def run_studies(names: list[str], root: Path, *, smoke: bool = False, workers: i
                 print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''}: finished "
                       f"before, kept ({out / 'report.md'})", flush=True)
                 continue
-            print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''}{_seeds_note(found[name], smoke, seeds)}"
-                  f" -> {out}"
+            n_seeds = _seeds_note(found[name], smoke, seeds)
+            print(f"[{i}/{len(names)}] study {name}{' (smoke)' if smoke else ''}{n_seeds} -> {out}"
                   + (" (resumed)" if resume else "") + note, flush=True)
             (out / DONE_MARKER).unlink(missing_ok=True)
             headline = run_one(found[name], out, engine, smoke=smoke, progress=progress,
