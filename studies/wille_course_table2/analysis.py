@@ -1,4 +1,6 @@
-"""The numbers of the Table 2 runs: each run's drift and rudder, the error reduction per world."""
+"""The numbers of the Table 2 runs: each run's drift and rudder, and over the seeds each headline
+number's mean with its 95 % interval, the error reduction per world, the 6-DOF world against the
+paper world paired by seed, and each row's verdict against the paper."""
 
 from __future__ import annotations
 
@@ -10,10 +12,18 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.stats import Interval
 from sailmujoco.study import Results
 
+from ..kit import seeds as over
+from ..kit.verdict import TOLERANCE
 from ..kit.wille import BOAT
-from .scenario import NAME, PAPER_SPEED, WORLDS, jobs_for
+from .scenario import NAME, PAPER_SPEED, PAPER_TABLE2, WORLDS, jobs_for, simulated_seconds
+
+QUANTITIES = ("east", "north", "error_deg")  # Table 2's numbers, in its order
+NUMBERS = (*QUANTITIES, "mean_surge", "rudder_rms_deg", "beta_b_mean_deg")  # each run's, stated over seeds
+HEADLINE_LAWS = ("heading", "course")
+REDUCTION_BOUND = 0.80  # the paper's 93 % reproduced: the course law removes at least 80 % of the error
 
 
 def summary(result: dict) -> dict:
@@ -71,14 +81,17 @@ class Analysis:
         Each run's length (s).
     seconds : float
         Wall time of the simulations and the analysis (s).
+    seeds : tuple of int
+        The seeds of the headline runs (N = len(seeds)).
+    cost : float
+        The runs' simulated seconds, weighted per world (:func:`~.scenario.simulated_seconds`).
     results : dict
-        (case, world, law) -> the run (metrics and trajectory), in the order of the jobs.
-    summaries : dict
-        (case, world, law) -> :func:`summary` of the run.
-    reduction : dict
-        world -> 1 - course error / heading error of the headline runs.
+        (case, world, law, seed) -> the run (metrics and trajectory), in the order of the jobs.
+    runs : pandas.DataFrame
+        One row per run: case, world, law, seed and its :func:`summary`.
     loop_gain : float
-        :func:`rudder_loop_gain` at the headline heading controller's surge speed (paper world).
+        :func:`rudder_loop_gain` at the paper world's heading controller's mean surge speed (the
+        mean over the seeds).
     loop_gain_paper : float
         :func:`rudder_loop_gain` at the paper's speed.
     """
@@ -86,39 +99,160 @@ class Analysis:
     smoke: bool
     duration: float
     seconds: float
+    seeds: tuple
+    cost: float
     results: dict
-    summaries: dict
-    reduction: dict
+    runs: pd.DataFrame
     loop_gain: float
     loop_gain_paper: float
 
-    def main(self, world: str, law: str) -> dict:
-        """The headline run's summary of ``law`` in ``world``.
+    def values(self, world: str, law: str, quantity: str, case: str = "main") -> np.ndarray:
+        """One number of a case, one value per seed (in the order of :attr:`seeds`).
 
         Parameters
         ----------
         world : str
-            A key of :data:`WORLDS`.
+            A key of :data:`~.scenario.WORLDS`.
+        law : str
+            A key of :data:`~.scenario.LAWS`.
+        quantity : str
+            A key of :func:`summary`.
+        case : str
+            ``"main"`` (the headline) or a switch.
+
+        Returns
+        -------
+        numpy.ndarray
+            The values, by seed.
+        """
+        r = self.runs
+        rows = r[(r["case"] == case) & (r["world"] == world) & (r["law"] == law)].sort_values("seed")
+        return rows[quantity].to_numpy(dtype=float)
+
+    def main(self, world: str, law: str) -> dict:
+        """The headline runs of ``law`` in ``world`` over the seeds: each number's interval.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
         law : str
             ``"heading"`` or ``"course"``.
 
         Returns
         -------
         dict
-            Its :func:`summary`.
+            quantity -> :class:`sailmujoco.stats.Interval`, for each of :data:`NUMBERS`.
         """
-        return self.summaries[("main", world, law)]
+        return {q: over.interval(self.values(world, law, q)) for q in NUMBERS}
 
-    def table(self) -> pd.DataFrame:
-        """One row per run (case, world, law and its summary): the data of table2.csv.
+    def run(self, case: str, world: str, law: str, seed: int = 0) -> dict:
+        """One run's :func:`summary` (a switch runs on one seed: no interval).
+
+        Parameters
+        ----------
+        case : str
+            ``"main"`` or a switch.
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
+        law : str
+            A key of :data:`~.scenario.LAWS`.
+        seed : int
+            The seed.
+
+        Returns
+        -------
+        dict
+            The run's numbers.
+        """
+        r = self.runs
+        row = r[(r["case"] == case) & (r["world"] == world) & (r["law"] == law) & (r["seed"] == seed)]
+        return row.iloc[0].to_dict()
+
+    def reduction_values(self, world: str, case: str = "main", laws: tuple = HEADLINE_LAWS) -> np.ndarray:
+        """1 - course error / heading error, per seed (both laws on the same gusts and start).
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
+        case : str
+            ``"main"`` or a switch.
+        laws : tuple of str
+            The heading and the course law.
+
+        Returns
+        -------
+        numpy.ndarray
+            The reductions, by seed.
+        """
+        heading, course = (self.values(world, law, "error_deg", case) for law in laws)
+        return 1.0 - course / heading
+
+    def reduction(self, world: str) -> Interval:
+        """The error reduction of the headline runs in ``world``: the mean of the per-seed reductions
+        with its interval (the laws paired by seed).
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
+        """
+        return over.interval(self.reduction_values(world))
+
+    def world_difference(self, law: str, quantity: str) -> Interval:
+        """The 6-DOF world minus the paper world, paired by seed, for a headline number.
+
+        Parameters
+        ----------
+        law : str
+            ``"heading"`` or ``"course"``.
+        quantity : str
+            A key of :func:`summary`.
+        """
+        return over.paired(self.values("mujoco", law, quantity), self.values("paper", law, quantity))
+
+    def reduction_difference(self) -> Interval:
+        """The 6-DOF world's error reduction minus the paper world's, paired by seed."""
+        return over.paired(self.reduction_values("mujoco"), self.reduction_values("paper"))
+
+    def verdict(self, world: str, law: str, quantity: str) -> str:
+        """A Table 2 number against the paper's: within ±10 % of it
+        (:data:`studies.kit.verdict.TOLERANCE`) decided on its interval.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
+        law : str
+            ``"heading"`` or ``"course"``.
+        quantity : str
+            One of :data:`QUANTITIES`.
+        """
+        paper = PAPER_TABLE2[law][quantity]
+        return over.decide(self.main(world, law)[quantity], paper, "within", band=TOLERANCE * abs(paper))
+
+    def reduction_verdict(self, world: str) -> str:
+        """The paper's reduction (93 %) reproduced: the reduction's interval above
+        :data:`REDUCTION_BOUND`.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`~.scenario.WORLDS`.
+        """
+        return over.decide(self.reduction(world), REDUCTION_BOUND, "above")
+
+    def intervals(self) -> pd.DataFrame:
+        """Each case's numbers over its seeds (:func:`studies.kit.seeds.over_seeds`): the data of
+        table2_intervals.csv.
 
         Returns
         -------
         pandas.DataFrame
-            The runs, in the order of the jobs.
+            One row per (case, world, law): each number's mean, ``_low`` and ``_high``, and ``n``.
         """
-        return pd.DataFrame([{"case": key[0], "world": key[1], "law": key[2], **s}
-                             for key, s in self.summaries.items()])
+        return over.over_seeds(self.runs, ["case", "world", "law"], list(NUMBERS))
 
 
 def analyse(results: Results, smoke: bool) -> Analysis:
@@ -127,7 +261,7 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     Parameters
     ----------
     results : sailmujoco.study.Results
-        The runs of :func:`studies.wille_course_table2.scenario.runs`.
+        The runs of :func:`studies.wille_course_table2.scenario.runs`; ``results.seeds`` the seeds.
     smoke : bool
         The short pass.
 
@@ -137,20 +271,26 @@ def analyse(results: Results, smoke: bool) -> Analysis:
         The numbers.
     """
     start = time.perf_counter()
-    jobs = jobs_for(smoke)
-    runs = dict(zip([job["key"] for job in jobs], results.jobs[NAME], strict=True))
-    summaries = {key: summary(result) for key, result in runs.items()}
-    reduction = {w: 1.0 - summaries[("main", w, "course")]["error_deg"]
-                 / summaries[("main", w, "heading")]["error_deg"] for w in WORLDS}
-    heading = summaries[("main", "paper", "heading")]
-    return Analysis(smoke, jobs[0]["duration"], results.seconds + time.perf_counter() - start, runs,
-                    summaries, reduction, rudder_loop_gain(heading["mean_surge"]),
+    seeds = tuple(int(s) for s in results.seeds)
+    jobs = jobs_for(smoke, seeds)
+    runs = {tuple(job["key"]): result for job, result in zip(jobs, results.jobs[NAME], strict=True)}
+    table = pd.DataFrame([{"case": key[0], "world": key[1], "law": key[2], "seed": key[3], **summary(result)}
+                          for key, result in runs.items()])
+    rank = pd.DataFrame({"_switch": table["case"] != "main", "_world": table["world"] != "paper",
+                         "_law": table["law"] != "heading", "case": table["case"], "law": table["law"],
+                         "seed": table["seed"]})  # the headline first, the paper world first, heading first
+    table = table.loc[rank.sort_values(["_switch", "_world", "case", "_law", "law", "seed"], kind="stable").index]
+    table = table.reset_index(drop=True)
+    heading_surge = over.interval(table[(table["case"] == "main") & (table["world"] == "paper")
+                                        & (table["law"] == "heading")]["mean_surge"]).mean
+    return Analysis(smoke, jobs[0]["duration"], results.seconds + time.perf_counter() - start, seeds,
+                    simulated_seconds(jobs), runs, table, rudder_loop_gain(heading_surge),
                     rudder_loop_gain(PAPER_SPEED))
 
 
 def headline(analysis: Analysis) -> dict:
-    """The headline numbers: each headline run's distances, error, speed and rudder, and the
-    error reduction per world.
+    """The headline numbers: each headline number's mean over the seeds, the error reduction per
+    world, and the verdicts against the paper.
 
     Parameters
     ----------
@@ -160,11 +300,23 @@ def headline(analysis: Analysis) -> dict:
     Returns
     -------
     dict
-        ``{world}_{law}_{quantity}``, ``{world}_error_reduction`` and ``wall_time_s``.
+        ``{world}_{law}_{quantity}`` (the mean over the seeds), ``{world}_{law}_{quantity}_verdict``
+        (Table 2's numbers), ``{world}_error_reduction`` (the mean) with ``_low``, ``_high`` and
+        ``_verdict``, ``seeds`` (N), ``cost_s`` (the weighted simulated seconds) and
+        ``wall_time_s``.
     """
-    main = {(w, law): analysis.main(w, law) for w in WORLDS for law in ("heading", "course")}
-    numbers = {f"{w}_{law}_{k}": v for (w, law), s in main.items() for k, v in s.items()
-               if k in ("north", "east", "error_deg", "mean_surge", "rudder_rms_deg")}
-    numbers.update({f"{w}_error_reduction": r for w, r in analysis.reduction.items()})
-    numbers["wall_time_s"] = analysis.seconds
+    numbers: dict = {}
+    for world in WORLDS:
+        for law in HEADLINE_LAWS:
+            main = analysis.main(world, law)
+            for q in ("north", "east", "error_deg", "mean_surge", "rudder_rms_deg"):
+                numbers[f"{world}_{law}_{q}"] = main[q].mean
+            for q in QUANTITIES:
+                numbers[f"{world}_{law}_{q}_verdict"] = analysis.verdict(world, law, q)
+    for world in WORLDS:
+        r = analysis.reduction(world)
+        numbers.update({f"{world}_error_reduction": r.mean, f"{world}_error_reduction_low": r.low,
+                        f"{world}_error_reduction_high": r.high,
+                        f"{world}_error_reduction_verdict": analysis.reduction_verdict(world)})
+    numbers.update({"seeds": len(analysis.seeds), "cost_s": analysis.cost, "wall_time_s": analysis.seconds})
     return numbers
