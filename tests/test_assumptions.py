@@ -148,6 +148,17 @@ def test_study_smoke(tmp_path):
     assert headline["rows"] == 14
     for config in ("paper_hydrostatics", "friction_only", "paper_foils", "no_downwash", "no_windage"):
         assert np.isfinite(headline[f"{config}_speed_effect_max"]), config
+    # every row's verdict is one of the three words, decided on intervals over the smoke's 2 seeds
+    verdicts = [v for k, v in headline.items() if k.startswith("verdict_")]
+    assert len(verdicts) == 14 and all(v in ("holds", "breaks", "undecided at 2 seeds") for v in verdicts)
+    # the wind plane keeps every seed's row, and each switch is compared on both seeds at every point
+    plane_rows = pd.read_csv(tmp_path / "wind_plane.csv")
+    assert (plane_rows.groupby(["boat", "config", "tws", "twa"])["seed"].apply(tuple) == (0, 1)).all()
+    points = pd.read_csv(tmp_path / "effect_points.csv")
+    assert (points["n"] == 2).all() and (points["speed_rel_low"] <= points["speed_rel_high"]).all()
+    # Viel's 3-DOF model balances the sail by the keel with no leeway (Viel eq. 5): its mean
+    # lateral speed is ~0, while the 6-DOF robot drifts (the 6-DOF minus 3-DOF interval above 0)
+    assert headline["verdict_lateral"] == "breaks" and headline["lateral_speed_6dof"] > 0.05
     for sim in ("sim1", "sim2", "sim3"):
         for resistance in ("dsyhs", "friction"):
             assert headline[f"table1_{sim}_{resistance}_surge"] > 1.0, (sim, resistance)
@@ -179,21 +190,35 @@ def test_study_smoke(tmp_path):
         assert "\n| " in report[start:end]
     for name in ("sea_wind_plane.png", "sea_heights.png"):
         assert (tmp_path / name).stat().st_size > 20_000
+    # every run in a sea kept: one row per case and seed (smoke: 2 seeds, the seas differ)
     plane = pd.read_csv(tmp_path / "sea_wind_plane.csv")
-    assert sorted(plane["boat"]) == ["saoud_robot", "wille_yacht"]  # one point each
+    assert sorted(plane["boat"]) == ["saoud_robot"] * 2 + ["wille_yacht"] * 2  # one point each, 2 seeds
     table1, saoud = pd.read_csv(tmp_path / "sea_table1.csv"), pd.read_csv(tmp_path / "sea_saoud.csv")
-    assert len(table1) == 1 and len(saoud) == 1
+    for table in (plane, table1, saoud):
+        assert len(table) in (2, 4) and sorted(table["seed"]) == sorted([0, 1] * (len(table) // 2))
     for table, metrics in ((plane, SAILING), (table1, TABLE1), (saoud, SAILING)):
         for metric in metrics:
             assert np.isfinite(table[f"{metric}_calm"]).all() and np.isfinite(table[f"{metric}_sea"]).all()
-    # the calm runs of the wind plane in a sea are the study's own as-built runs, to the bit
-    base = pd.read_csv(tmp_path / "wind_plane.csv")
-    base = base[base["config"] == "baseline"]
-    for _, row in plane.iterrows():
-        same = base[(base["boat"] == row["boat"]) & (base["tws"] == row["tws"]) & (base["twa"] == row["twa"])]
-        assert same["steady_speed"].iloc[0] == row["speed_calm"]
-    # the calm Table 1 run of the sea's series is the study's own, to the bit
-    assert table1["surge_calm"].iloc[0] == headline["table1_sim3_dsyhs_surge"]
+    # the calm runs of the wind plane are deterministic (steady wind, exact start): the same on
+    # both seeds, while the two seas give two different runs
+    for _, group in plane.groupby("boat"):
+        assert group["speed_calm"].nunique() == 1 and group["roll_sd_sea"].nunique() == 2
+    # Table 1's calm run on seed 0 is the study's own Table 1 run (seed 0), to the bit; on seed 1
+    # its gusts differ
+    assert table1.loc[table1["seed"] == 0, "surge_calm"].iloc[0] == headline["table1_sim3_dsyhs_surge"]
+    assert table1["surge_calm"].nunique() == 2
+    # each case's numbers are means over its seeds: Table 1's roll in the sea has an interval
+    # that holds its two seeds' mean
+    cases = pd.read_csv(tmp_path / "sea_cases.csv")
+    t1 = cases[cases["series"] == "table1"].iloc[0]
+    if t1["n_kept"] == 2:
+        assert t1["roll_sd_sea_low"] < t1["roll_sd_sea"] < t1["roll_sd_sea_high"]
+        assert t1["roll_sd_sea"] == pytest.approx(table1["roll_sd_sea"].mean(), rel=1e-12)
+    assert set(cases["roll_sd_verdict"]) <= {"holds", "breaks", "undecided at 2 seeds", "undecided at 1 seed",
+                                             "lost its heading"}
+    # the runs that lost their heading: a share of cases x seeds with Wilson's interval about it
+    low, rate, high = (headline[f"sea_lost_heading_rate{end}"] for end in ("_low", "", "_high"))
+    assert 0.0 <= low <= rate <= high <= 1.0 and high > low
     # a sea of 0.2-0.7 m rolls both boats more than calm water
     assert (plane["roll_sd_sea"] > plane["roll_sd_calm"]).all()
     # every run's heading error is measured, and a case is lost where one exceeds the threshold
@@ -306,49 +331,60 @@ def test_developed_seas_are_equally_steep():
 
 
 def test_attribution_names_the_switch_that_removes_the_difference():
-    """A synthetic series: the largest difference beyond 10 % is picked, and the mechanism whose
-    switch brings it back to calm is named; none where no switch removes half of it."""
-    from sailmujoco.studies.assumptions.sea_analysis import attribute, largest_cases
+    """Synthetic cases over seeds: every difference whose verdict is *breaks* is picked, the
+    largest of each series and metric marked; the mechanism whose switch brings the metric back
+    to calm on every seed (its share's interval wholly above one half) is named; none where the
+    share's interval straddles one half or no switch removes half."""
+    from sailmujoco.studies.assumptions.sea_analysis import attribute, differing_cases, largest_cases
 
-    table = pd.DataFrame({"case": ["a", "b", "c", "d"], "roll_sd_rel": [0.05, 2.0, -0.5, 9.0],
-                          "speed_rel": [0.01, -0.02, 0.09, 3.0], "heel_rel": [0.0, 0.0, 0.0, 0.0],
-                          "drift_rel": [0.0, 0.0, 0.0, 0.0], "pitch_sd_rel": [0.0, 0.0, 0.0, 0.0],
-                          "lost_heading": ["", "", "", "calm"]})
-    # case d lost its heading: left out, though its differences are the largest
-    assert largest_cases({"saoud": table}, smoke=False) == [("saoud", "roll_sd", 1)]
-    calm, sea_value = 1.0, 3.0  # the roll amplitude, deg
-    named, removed = attribute(calm, sea_value, {"wave_foil_flow": 2.9, "wave_diffraction": 3.1,
-                                                 "wave_damping": 3.0, "wave_pressure_decay": 1.2})
-    assert named == "wave_pressure_decay" and removed["wave_pressure_decay"] == pytest.approx(0.9)
-    assert removed["wave_foil_flow"] == pytest.approx(0.05) and removed["wave_damping"] == 0.0
-    assert removed["wave_diffraction"] == pytest.approx(-0.05)  # switching it off makes it larger
-    # two switches each remove a third: no single one explains the difference
-    named, removed = attribute(calm, sea_value, {"a": 3.0 - 2 / 3, "b": 3.0 - 2 / 3, "c": float("nan")})
-    assert named is None and removed["a"] == pytest.approx(1 / 3)
+    verdicts = {m: ["holds"] * 4 for m in ("speed", "heel", "drift", "pitch_sd")}
+    table = pd.DataFrame({"case_index": [0, 1, 2, 3], "n_kept": [3, 3, 3, 0],
+                          "roll_sd_rel": [0.05, 2.0, -0.5, float("nan")],
+                          "roll_sd_verdict": ["holds", "breaks", "breaks", "lost its heading"],
+                          **{f"{m}_verdict": v for m, v in verdicts.items()}})
+    selected = differing_cases({"saoud": table}, smoke=False)
+    assert selected == [("saoud", "roll_sd", 1), ("saoud", "roll_sd", 2)]  # the lost case d has none
+    assert largest_cases({"saoud": table}, selected) == [("saoud", "roll_sd", 1)]
+    calm, sea_value = [1.0, 1.0, 1.0], [3.0, 3.2, 2.8]  # the roll, deg, on three seeds
+    # the pressure decay's switch removes 90 %, 91 %, 89 %; the foil flow's 5 % on each seed
+    named, removed = attribute(calm, sea_value, {"wave_foil_flow": [2.9, 3.09, 2.71],
+                                                 "wave_pressure_decay": [1.2, 1.2, 1.2]})
+    assert named == "wave_pressure_decay"
+    assert removed["wave_pressure_decay"].mean == pytest.approx((0.9 + 1 - 0.2 / 2.2 + 1 - 0.2 / 1.8) / 3)
+    assert removed["wave_pressure_decay"].low > 0.5 and removed["wave_foil_flow"].high < 0.5
+    assert removed["wave_foil_flow"].mean == pytest.approx(0.05)
+    # a share of 90 % on one seed and 10 % on another: the interval straddles one half, no name
+    named, removed = attribute([1.0, 1.0], [3.0, 3.0], {"a": [1.2, 2.8]})
+    assert named is None and removed["a"].mean == pytest.approx(0.5)
+    assert removed["a"].low < 0.5 < removed["a"].high
     # a falling metric (speed lost in the sea) the same way
-    named, _ = attribute(2.0, 1.0, {"wave_foil_flow": 1.95, "wave_damping": 1.1})
+    named, _ = attribute([2.0, 2.0], [1.0, 1.1], {"wave_foil_flow": [1.95, 1.96], "wave_damping": [1.1, 1.2]})
     assert named == "wave_foil_flow"
 
 
 def test_a_difference_takes_the_path_whose_switch_removes_it():
-    """The sea's two paths (hull, foils): the one whose switch removes at least half of a
-    difference is the path it takes; where that path's rerun lost its heading, the other path's
-    switch removing at most half means the lost one alone makes at least half (both off is the
-    calm boat); where neither removes half, each path alone makes more than half."""
+    """The sea's two paths (hull, foils): the one whose switch surely removes more than half of a
+    difference (its share's interval over seeds above one half) is the path it takes; where both
+    surely remove at most half, each path alone makes more than half; where that path's rerun
+    lost its heading on every seed, the other path's switch surely removing at most half means
+    the lost one alone makes at least half (both off is the calm boat); where an interval
+    straddles one half, the path is undecided."""
     from sailmujoco.studies.assumptions import sea_mechanisms
-    from sailmujoco.studies.assumptions.sea_analysis import _path_alone
+    from sailmujoco.studies.assumptions.sea_analysis import path_taken
 
-    nan = float("nan")
-    fine = {"wave_hull": False, "wave_foil_flow": False}
-    assert _path_alone({"wave_hull": nan, "wave_foil_flow": 0.05}, {**fine, "wave_hull": True}) == "wave_hull"
-    assert _path_alone({"wave_hull": nan, "wave_foil_flow": 0.7}, {**fine, "wave_hull": True}) is None
-    assert _path_alone({"wave_hull": 0.3, "wave_foil_flow": 0.2}, fine) is None  # nothing lost
+    from sailmujoco import stats
 
-    def row(mechanism, hull, foils, stalled=False):
-        return {"mechanism": mechanism, "wave_hull_removed": hull, "wave_foil_flow_removed": foils,
-                "wave_hull_stalled": stalled, "wave_foil_flow_stalled": False}
+    def share(low, high):
+        return stats.Interval(0.5 * (low + high), low, high, 2)
 
-    assert sea_mechanisms.path_of(row("wave_hull", 0.9, 0.1)) == "hull"
-    assert sea_mechanisms.path_of(row("wave_foil_flow", 0.2, 1.1)) == "foils"
-    assert sea_mechanisms.path_of(row("", 0.3, 0.2)) == "either"
-    assert sea_mechanisms.path_of(row("", nan, 0.8, stalled=True)) == "stalled"
+    nothing = stats.Interval(float("nan"), float("nan"), float("nan"), 0)
+    fine = {"wave_hull": (0, 2), "wave_foil_flow": (0, 2)}
+    assert path_taken({"wave_hull": share(0.8, 1.0), "wave_foil_flow": share(-0.1, 0.2)}, fine) == "hull"
+    assert path_taken({"wave_hull": share(0.1, 0.3), "wave_foil_flow": share(0.9, 1.2)}, fine) == "foils"
+    assert path_taken({"wave_hull": share(0.1, 0.4), "wave_foil_flow": share(0.2, 0.3)}, fine) == "either"
+    assert path_taken({"wave_hull": share(0.3, 0.7), "wave_foil_flow": share(0.0, 0.1)}, fine) == "undecided"
+    lost = {**fine, "wave_hull": (2, 2)}
+    assert path_taken({"wave_hull": nothing, "wave_foil_flow": share(0.0, 0.1)}, lost) == "hull alone"
+    assert path_taken({"wave_hull": nothing, "wave_foil_flow": share(0.4, 0.9)}, lost) == "stalled"
+    assert sea_mechanisms.path_of({"path": "hull alone"}) == "hull"
+    assert sea_mechanisms.path_of({"path": "undecided"}) == "undecided"

@@ -29,6 +29,7 @@ undecided unless the run is deterministic.
 from __future__ import annotations
 
 import math
+import warnings
 from dataclasses import dataclass
 from typing import Literal
 
@@ -174,7 +175,9 @@ def mean_interval(values, *, method: Method = "t", confidence: float = CONFIDENC
         return (Interval(mean, mean, mean, int(a.size), "exact") if a.size > 1
                 else Interval(mean, math.nan, math.nan, 1, method))
     if method == "t":
-        ci = stats.ttest_1samp(a, 0.0).confidence_interval(confidence_level=confidence)
+        with warnings.catch_warnings():  # values equal but for rounding: scipy warns, the interval is right
+            warnings.simplefilter("ignore", RuntimeWarning)
+            ci = stats.ttest_1samp(a, 0.0).confidence_interval(confidence_level=confidence)
     else:
         ci = stats.bootstrap((a,), np.mean, confidence_level=confidence, method="BCa",
                              n_resamples=BOOTSTRAP_RESAMPLES,

@@ -1,5 +1,12 @@
 """Assumption validation, the analysis: the wind plane as one table, each switch's effect point by
-point, the restoring errors, and the headline numbers.
+point and seed by seed, the single scenarios over their seeds, the restoring errors, and the
+headline numbers.
+
+Every stochastic number is a mean over seeds with its 95 % interval (:mod:`studies.kit.seeds`).
+A comparison of the boat as built (6-DOF) with a paper's simplification is made seed by seed: at
+each point the per-seed difference of the two arms, relative to the paper's arm
+(:func:`relative`), and its interval; a point's verdict is that interval against the tolerance
+(:func:`point_verdicts`), an assumption's the tally of its points' (:func:`tally`).
 """
 
 from __future__ import annotations
@@ -14,12 +21,29 @@ from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces import stability
 from sailmujoco.study import Results
 
-from ..kit import verdict
+from ..kit import seeds as over
 from .episodes import time_constants
-from .scenario import BOATS, BUILT, CONFIGS, PART_NAMES, RUNS_JOB, SPEED_FLOOR, plane_specs, table1_jobs
+from .scenario import (
+    BOATS,
+    BUILT,
+    CONFIGS,
+    HEEL_HOLDS_DEG,
+    PAPER_ARM,
+    PART_NAMES,
+    ROBOT_ONLY,
+    RUNS_JOB,
+    SPEED_FLOOR,
+    SPEED_HOLDS,
+    part_seeds,
+    plane_specs,
+)
 from .sea_analysis import SeaAnalysis, analyse_sea
 
 SAILING_SPEED = 0.3  # m/s: the robot "sails" (has a steady apparent wind) above this steady speed
+POINT = ["tws", "twa"]  # the columns that name a point of the wind plane
+KEEL_AOA_LINEAR_DEG = 10.0  # deg: Wille's lift is linear below this keel angle of attack
+PHI_STAR_HOLDS_DEG = 2.0  # deg: phi* is "the heel reached" within this
+LATERAL_HOLDS = 0.05  # m/s: the 6-DOF lateral speed within this of the 3-DOF model's
 
 
 @dataclass(frozen=True, eq=False)
@@ -29,33 +53,51 @@ class Analysis:
     Parameters
     ----------
     data : pandas.DataFrame
-        The wind plane: one row per boat, config, true wind speed (``tws``) and angle (``twa``).
+        The wind plane: one row per boat, config, true wind speed (``tws``), angle (``twa``)
+        and seed.
     effects : dict
-        ``(boat, config) -> ``:func:`speed_effects`'s table, for every config but the baseline.
+        ``(boat, config) -> ``:func:`paired_effects`'s per-seed table, for every switch.
+    points : dict
+        ``(boat, config) -> ``:func:`effect_points`'s table: one row per point, the
+        differences' means, intervals and verdicts.
+    plane : dict
+        ``boat -> ``:func:`baseline_points`'s table: the as-built boat's metrics over seeds.
     time_constants : dict
         Boat -> roll period, yaw time constant, roll natural frequency, I_xx.
-    course : dict
-        Wille's correction β_b against the drift sailed, the course error, the largest heel.
+    course : pandas.DataFrame
+        Wille's correction β_b against the drift sailed, the course error, the largest heel:
+        one row per seed.
     steady : pandas.DataFrame
-        Saoud's φ* against the steady heel, per wind, angle and l_φ.
-    drift : dict
-        Mean and largest |lateral speed| in position keeping, 3-DOF (``paper``) and 6-DOF.
+        Saoud's φ* against the steady heel, per wind, angle, l_φ and seed.
+    drift : pandas.DataFrame
+        Mean and largest |lateral speed| in position keeping, 3-DOF (``paper``) and 6-DOF
+        (``mujoco``): one row per seed.
     table1 : dict
-        ``(resistance, sim) ->`` the numbers of a Wille Table 1 run.
+        ``(resistance, sim) ->`` the numbers of a Wille Table 1 run (``table1_seeds``' first).
     restoring : dict
         Boat -> the heel reached and the largest errors of eq. 20 and eq. 66.
+    seeds : tuple
+        The study's seeds.
+    plane_seeds, single_seeds, table1_seeds : tuple
+        The seeds the wind plane, the single scenarios and Table 1 ran on.
     sea : studies.assumptions.sea_analysis.SeaAnalysis or None
         What a sea does to the boats (None: not analysed).
     """
 
     data: pd.DataFrame
     effects: dict
+    points: dict
+    plane: dict
     time_constants: dict
-    course: dict
+    course: pd.DataFrame
     steady: pd.DataFrame
-    drift: dict
+    drift: pd.DataFrame
     table1: dict
     restoring: dict
+    seeds: tuple = (0,)
+    plane_seeds: tuple = (0,)
+    single_seeds: tuple = (0,)
+    table1_seeds: tuple = (0,)
     sea: SeaAnalysis | None = None
 
 
@@ -77,70 +119,127 @@ def plane_table(specs: dict, tables: list) -> pd.DataFrame:
     return pd.concat(frames_, ignore_index=True)
 
 
-def pivot(data: pd.DataFrame, boat: str, config: str, value: str) -> pd.DataFrame:
-    """One metric of one boat and config over the wind plane (rows tws, columns twa).
+def switches(boat: str) -> list[str]:
+    """The configs compared with the boat as built on ``boat``.
+
+    Parameters
+    ----------
+    boat : str
+        A boat of ``BOATS``.
+    """
+    return [c for c in CONFIGS if c != "baseline" and (boat == "saoud_robot" or c not in ROBOT_ONLY)]
+
+
+def relative(ours, paper) -> np.ndarray:
+    """(ours - paper) / max(|paper|, SPEED_FLOOR), value by value: a speed difference relative to
+    the paper's arm, in m/s over the floor where the paper's boat is (nearly) stalled.
+
+    Parameters
+    ----------
+    ours, paper : array_like
+        The two arms' steady speeds, m/s.
+    """
+    ours, paper = np.asarray(ours, dtype=float), np.asarray(paper, dtype=float)
+    return (ours - paper) / np.maximum(np.abs(paper), SPEED_FLOOR)
+
+
+def paired_effects(data: pd.DataFrame, boat: str, config: str) -> pd.DataFrame:
+    """Seed by seed at each point both arms run: the steady speed and heel of the boat as built
+    (``_6dof``) and of the paper's simplification (``_paper``, ``PAPER_ARM``), the speed
+    difference relative to the paper's arm (:func:`relative`) and the heel difference in deg.
+    These rows are ``effects.csv``.
 
     Parameters
     ----------
     data : pandas.DataFrame
         The wind plane (:func:`plane_table`).
     boat, config : str
-        Which runs.
-    value : str
-        The metric's column.
+        Which boat, and the switch.
     """
-    d = data[(data["boat"] == boat) & (data["config"] == config)]
-    return d.pivot_table(index="tws", columns="twa", values=value)
-
-
-def delta(data: pd.DataFrame, boat: str, config: str, value: str) -> pd.DataFrame:
-    """One metric with ``config`` minus as built, over the wind plane.
-
-    Parameters
-    ----------
-    data : pandas.DataFrame
-        The wind plane (:func:`plane_table`).
-    boat, config : str
-        Which runs.
-    value : str
-        The metric's column.
-    """
-    base = pivot(data, boat, "baseline", value)
-    other = pivot(data, boat, config, value)
-    return other - base
-
-
-def speed_effects(data: pd.DataFrame, boat: str, config: str) -> pd.DataFrame:
-    """Point by point over the wind plane: steady speed and heel as built and with ``config``;
-    the speed change as :func:`studies.kit.verdict.difference` gives it (relative, or in m/s where the
-    boat as built makes less than SPEED_FLOOR). These rows are ``effects.csv``.
-
-    Parameters
-    ----------
-    data : pandas.DataFrame
-        The wind plane (:func:`plane_table`).
-    boat, config : str
-        Which boat, and the config compared with the boat as built.
-    """
-    keys, cols = ["tws", "twa"], ["steady_speed", "steady_heel"]
+    keys, cols = [*POINT, "seed"], ["steady_speed", "steady_heel"]
+    paper = PAPER_ARM[config]
+    ours = config if paper == "baseline" else "baseline"
     sel = data[data["boat"] == boat]
-    built = sel[sel["config"] == "baseline"][keys + cols]
-    other = sel[sel["config"] == config][keys + cols]
-    m = built.merge(other, on=keys, suffixes=("_built", "_switched"), how="outer").sort_values(keys)
-    diffs = verdict.differences(m["steady_speed_switched"], m["steady_speed_built"], floor=SPEED_FLOOR,
-                                unit="m/s")
+    a, b = sel[sel["config"] == ours][keys + cols], sel[sel["config"] == paper][keys + cols]
+    m = a.merge(b, on=keys, suffixes=("_6dof", "_paper")).sort_values(keys).reset_index(drop=True)
     m.insert(0, "config", config)
     m.insert(0, "boat", boat)
-    m["speed_change_pct"] = [100 * d.value if d.relative else np.nan for d in diffs]
-    m["speed_change_ms"] = m["steady_speed_switched"] - m["steady_speed_built"]
-    m["heel_change_deg"] = np.degrees(m["steady_heel_switched"] - m["steady_heel_built"])
-    m.attrs["diffs"] = diffs
-    return m.reset_index(drop=True)
+    m["speed_rel"] = relative(m["steady_speed_6dof"], m["steady_speed_paper"])
+    m["heel_diff_deg"] = np.degrees(m["steady_heel_6dof"] - m["steady_heel_paper"])
+    return m
+
+
+def speed_verdict(config: str, got) -> str:
+    """A point's verdict on the speed: the interval of the relative difference within
+    ±``SPEED_HOLDS`` of 0; for the sheeted sail a loss below ``SPEED_HOLDS`` (one-sided: a
+    sheeted sail that sails faster keeps the actuated sail's claim).
+
+    Parameters
+    ----------
+    config : str
+        The switch.
+    got : sailmujoco.stats.Interval
+        The point's relative speed difference over seeds.
+    """
+    if config == "sheeted":
+        return over.decide(got, -SPEED_HOLDS, "above")
+    return over.decide(got, 0.0, "within", band=SPEED_HOLDS)
+
+
+def effect_points(effects: pd.DataFrame, config: str) -> pd.DataFrame:
+    """One row per point: the speed and heel differences' means and intervals over seeds
+    (:func:`studies.kit.seeds.over_seeds`) and each point's verdicts (``speed_verdict``,
+    ``heel_verdict``: within ±``HEEL_HOLDS_DEG``).
+
+    Parameters
+    ----------
+    effects : pandas.DataFrame
+        :func:`paired_effects`'s rows.
+    config : str
+        The switch.
+    """
+    columns = ["speed_rel", "heel_diff_deg", "steady_speed_6dof", "steady_speed_paper"]
+    pts = over.over_seeds(effects, POINT, columns)
+    pts["speed_verdict"] = [speed_verdict(config, over.row_interval(r, "speed_rel")) for _, r in pts.iterrows()]
+    pts["heel_verdict"] = [over.decide(over.row_interval(r, "heel_diff_deg"), 0.0, "within", band=HEEL_HOLDS_DEG)
+                           for _, r in pts.iterrows()]
+    return pts
+
+
+BASELINE_METRICS = ["ct_cn_ratio", "pitch_amplitude_deg", "heave_amplitude_cm", "omega3_ratio",
+                    "roll_share_keel", "roll_share_others", "keel_aoa_deg", "drift_angle_deg",
+                    "steady_speed", "steady_heel_deg", "mean_pitch_deg"]
+
+
+def baseline_points(data: pd.DataFrame, boat: str) -> pd.DataFrame:
+    """The as-built boat's metrics at each point over its seeds (means, intervals, ``n``), in
+    the units the report prints (deg, cm; the roll shares as fractions; ``roll_share_others``:
+    keel + rudder + hull damping + added mass).
+
+    Parameters
+    ----------
+    data : pandas.DataFrame
+        The wind plane (:func:`plane_table`).
+    boat : str
+        Which boat.
+    """
+    b = data[(data["boat"] == boat) & (data["config"] == "baseline")].copy()
+    b["pitch_amplitude_deg"] = np.degrees(b["pitch_amplitude"])
+    b["heave_amplitude_cm"] = 100 * b["heave_amplitude"]
+    b["roll_share_others"] = (b["roll_share_keel"] + b["roll_share_rudder"] + b["roll_share_damping"]
+                              + b["roll_share_added_mass"])
+    b["keel_aoa_deg"] = np.degrees(np.abs(b["keel_aoa"]))
+    b["drift_angle_deg"] = np.degrees(b["drift_angle"])
+    b["steady_heel_deg"] = np.degrees(b["steady_heel"])
+    b["mean_pitch_deg"] = np.degrees(b["mean_pitch"])
+    out = over.over_seeds(b, POINT, BASELINE_METRICS)
+    out.insert(0, "boat", boat)
+    return out
 
 
 def restoring_errors(data: pd.DataFrame) -> dict:
     """Geometric righting moment against eq. 20 and its linearisation (eq. 66) over the heel
-    range the boats reached in the wind plane.
+    range the boats reached in the wind plane (the largest |steady heel| of any run).
 
     Parameters
     ----------
@@ -171,47 +270,157 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     Parameters
     ----------
     results : sailmujoco.study.Results
-        The runs of :func:`.scenario.runs`.
+        The runs of :func:`.scenario.runs` (and the sea's).
     smoke : bool
         The study's short pass.
     """
-    specs = plane_specs(smoke)
+    seeds = tuple(int(s) for s in results.seeds)
+    plane_seeds, single_seeds = part_seeds(seeds, "plane"), part_seeds(seeds, "single")
+    table1_seeds = part_seeds(seeds, "table1")
+    specs = plane_specs(smoke, plane_seeds)
     data = plane_table(specs, [results.sweeps[f"sweeps/{spec['name']}"] for spec in specs.values()])
     tc = time_constants()
     single = results.jobs[RUNS_JOB]
-    parts = dict(zip(PART_NAMES, single, strict=False))
-    table1 = dict(zip(table1_jobs(smoke), single[len(PART_NAMES):], strict=True))
-    restoring = restoring_errors(data)
-    effects = {(b, c): speed_effects(data, b, c) for b in BOATS for c in CONFIGS
-               if c != "baseline" and (data[(data["boat"] == b) & (data["config"] == c)]).size}
-    return Analysis(data, effects, tc, parts["course"], parts["steady"], parts["drift"], table1, restoring,
-                    analyse_sea(results, smoke))
+    n = len(single_seeds)
+    parts = {name: single[i * n:(i + 1) * n] for i, name in enumerate(PART_NAMES)}
+    course = pd.DataFrame([{"seed": s, **r} for s, r in zip(single_seeds, parts["course"], strict=True)])
+    steady = pd.concat(parts["steady"], ignore_index=True)
+    steady = steady[steady["seed"].isin(single_seeds)].reset_index(drop=True)
+    drift = pd.DataFrame([{"seed": s, **r} for s, r in zip(single_seeds, parts["drift"], strict=True)])
+    first = single[len(PART_NAMES) * n:len(PART_NAMES) * n + 6]  # Table 1 on its first seed
+    keys = [(r, s) for r in ("dsyhs", "friction") for s in ("sim1", "sim2", "sim3")]
+    table1 = dict(zip(keys, first, strict=True))
+    effects = {(b, c): paired_effects(data, b, c) for b in BOATS for c in switches(b)}
+    points = {key: effect_points(table, key[1]) for key, table in effects.items()}
+    plane = {b: baseline_points(data, b) for b in BOATS}
+    return Analysis(data, effects, points, plane, tc, course, steady, drift, table1, restoring_errors(data),
+                    seeds, plane_seeds, single_seeds, table1_seeds, analyse_sea(results, smoke))
 
 
-def effect(analysis: Analysis, boat: str, config: str) -> list:
-    """The speed changes of ``config`` against the boat as built, point by point (the rows of
-    effects.csv), as :class:`studies.kit.verdict.Difference`.
+def tally(verdicts, n_seeds: int, unit: str = "points") -> tuple[str, str]:
+    """An assumption's verdict from its points' (each *holds*, *breaks* or *undecided at N
+    seeds*): *breaks* where any point breaks, *holds* where every point holds, *undecided at N
+    seeds* otherwise; and the count, e.g. ``"2 of 24 points break, 3 undecided"``.
+
+    Parameters
+    ----------
+    verdicts : sequence of str
+        The points' verdicts.
+    n_seeds : int
+        The seeds the points ran on (for the undecided verdict's text).
+    unit : str
+        What a point is called.
+    """
+    verdicts = list(verdicts)
+    broke = sum(v == "breaks" for v in verdicts)
+    held = sum(v == "holds" for v in verdicts)
+    open_ = len(verdicts) - broke - held
+    if not verdicts:
+        return f"undecided at {n_seeds} seeds", f"no {unit}"
+    word = "breaks" if broke else "holds" if held == len(verdicts) else f"undecided at {n_seeds} seeds"
+    if word == "holds":
+        return word, f"{held} of {len(verdicts)} {unit} hold"
+    parts = [f"{broke} of {len(verdicts)} {unit} break"]
+    if open_:
+        parts.append(f"{open_} undecided")
+    return word, ", ".join(parts)
+
+
+def combined(verdicts: list[str], n_seeds: int) -> str:
+    """Several criteria's verdicts as one: *breaks* if any breaks, *holds* if all hold,
+    *undecided at N seeds* otherwise.
+
+    Parameters
+    ----------
+    verdicts : list of str
+        Each criterion's verdict.
+    n_seeds : int
+        The seeds the least-seeded criterion ran on.
+    """
+    if any(v == "breaks" for v in verdicts):
+        return "breaks"
+    if verdicts and all(v == "holds" for v in verdicts):
+        return "holds"
+    return f"undecided at {n_seeds} seeds"
+
+
+def point_intervals(points: pd.DataFrame, column: str) -> list:
+    """The intervals of ``column`` at each point of a table of points.
+
+    Parameters
+    ----------
+    points : pandas.DataFrame
+        A table of :func:`effect_points` or :func:`baseline_points`.
+    column : str
+        The number.
+    """
+    return [over.row_interval(r, column) for _, r in points.iterrows()]
+
+
+def judge_points(points: pd.DataFrame, column: str, bound: float, sense: str = "below",
+                 band: float | None = None) -> list[str]:
+    """Each point's verdict on ``column`` against ``bound`` (:func:`studies.kit.seeds.decide`).
+
+    Parameters
+    ----------
+    points : pandas.DataFrame
+        A table of points.
+    column : str
+        The number.
+    bound : float
+        The bound (or the centre of the band for ``"within"``).
+    sense : {"below", "above", "within"}
+        What the claim requires.
+    band : float, optional
+        The band's half-width.
+    """
+    return [over.decide(i, bound, sense, band=band) for i in point_intervals(points, column)]
+
+
+def switch_points(analysis: Analysis, config: str, boats=None) -> pd.DataFrame:
+    """The points of ``config`` on ``boats`` (all that ran it), one table with a ``boat`` column.
 
     Parameters
     ----------
     analysis : Analysis
         The study's numbers.
-    boat, config : str
-        Which boat and config.
+    config : str
+        The switch.
+    boats : list of str, optional
+        Which boats.
     """
-    return analysis.effects[(boat, config)].attrs["diffs"]
+    keys = [k for k in analysis.points if k[1] == config and (boats is None or k[0] in boats)]
+    return pd.concat([analysis.points[k].assign(boat=k[0]) for k in keys], ignore_index=True)
 
 
-def largest(diffs: list) -> float:
-    """The largest relative |change| of ``diffs`` (nan if none is relative).
+def largest(points: pd.DataFrame, column: str = "speed_rel") -> float:
+    """The largest |mean| of ``column`` over the points (nan if none).
 
     Parameters
     ----------
-    diffs : list of studies.kit.verdict.Difference
-        Speed changes.
+    points : pandas.DataFrame
+        A table of points.
+    column : str
+        The number.
     """
-    rel = [abs(d.value) for d in diffs if d.finite and d.relative]
-    return max(rel) if rel else float("nan")
+    v = np.abs(points[column].to_numpy(dtype=float))
+    return float(np.nanmax(v)) if np.isfinite(v).any() else float("nan")
+
+
+def plane_max(analysis: Analysis, column: str, boats=None) -> float:
+    """The largest point mean of a baseline metric over ``boats`` (all if None).
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+    column : str
+        A column of ``BASELINE_METRICS``.
+    boats : list of str, optional
+        Which boats.
+    """
+    v = np.concatenate([analysis.plane[b][column].to_numpy(dtype=float) for b in (boats or BOATS)])
+    return float(np.nanmax(v)) if np.isfinite(v).any() else float("nan")
 
 
 def roll_over_yaw(analysis: Analysis) -> dict:
@@ -226,60 +435,109 @@ def roll_over_yaw(analysis: Analysis) -> dict:
 
 
 def yacht_froude(analysis: Analysis) -> dict:
-    """The yacht's Froude numbers over the wind plane, as built and friction only.
+    """The yacht's largest Froude number over the wind plane (point means over seeds), as built
+    and friction only.
 
     Parameters
     ----------
     analysis : Analysis
         The study's numbers.
     """
-    length = get_boat("wille_yacht").hull.length
-    return {c: pivot(analysis.data, "wille_yacht", c, "steady_speed").to_numpy(dtype=float)
-            / math.sqrt(9.81 * length) for c in ("baseline", "friction_only")}
+    length = math.sqrt(9.81 * get_boat("wille_yacht").hull.length)
+    pts = analysis.points[("wille_yacht", "friction_only")]
+    return {"baseline": plane_max(analysis, "steady_speed", ["wille_yacht"]) / length,
+            "friction_only": float(np.nanmax(pts["steady_speed_paper"].to_numpy(dtype=float))) / length}
+
+
+def steady_cases(analysis: Analysis) -> pd.DataFrame:
+    """Saoud's steady states per case (l_φ, wind, angle) over seeds: φ*, the heel, the error
+    heel − φ* and the speed (means, intervals, ``n``), and whether the robot sails (steady speed
+    above ``SAILING_SPEED``) on every seed (``sailing``).
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+    """
+    s = analysis.steady
+    cases = over.over_seeds(s, ["l_phi", "tws", "twa"], ["phi_star_deg", "heel_deg", "error_deg", "speed"])
+    sails = s.groupby(["l_phi", "tws", "twa"], sort=False)["speed"].apply(lambda v: bool((v > SAILING_SPEED).all()))
+    cases["sailing"] = sails.to_numpy()
+    return cases
 
 
 def sailing(analysis: Analysis) -> pd.DataFrame:
-    """The steady-state runs (φ* against the heel) where the robot sails: a stalled boat has no
-    steady apparent wind.
+    """The steady-state cases (:func:`steady_cases`) where the robot sails on every seed: a
+    stalled boat has no steady apparent wind.
 
     Parameters
     ----------
     analysis : Analysis
         The study's numbers.
     """
-    return analysis.steady[analysis.steady["speed"] > SAILING_SPEED]
+    cases = steady_cases(analysis)
+    return cases[cases["sailing"]].reset_index(drop=True)
+
+
+def course_numbers(analysis: Analysis) -> dict:
+    """Wille's course hold over seeds (deg): β_b, the drift sailed, β_b − drift (paired by
+    seed), the course error and the largest heel.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+    """
+    c = analysis.course
+    deg = {k: np.degrees(c[k].to_numpy(dtype=float)) for k in ("beta_b", "drift", "drift_error", "heel_max")}
+    return {"beta_b": over.interval(deg["beta_b"]), "drift": over.interval(deg["drift"]),
+            "gap": over.paired(deg["beta_b"], deg["drift"]), "error": over.interval(deg["drift_error"]),
+            "heel_max": over.interval(deg["heel_max"])}
+
+
+def lateral_numbers(analysis: Analysis) -> dict:
+    """Position keeping over seeds (m/s): the mean |lateral speed| of the 3-DOF model and of the
+    6-DOF robot, their difference (paired by seed) and the 6-DOF's largest.
+
+    Parameters
+    ----------
+    analysis : Analysis
+        The study's numbers.
+    """
+    d = analysis.drift
+    paper, ours = d["paper"].to_numpy(dtype=float), d["mujoco"].to_numpy(dtype=float)
+    return {"paper": over.interval(paper), "mujoco": over.interval(ours), "difference": over.paired(ours, paper),
+            "mujoco_max": over.interval(d["mujoco_max"].to_numpy(dtype=float))}
 
 
 def numbers(analysis: Analysis) -> dict:
-    """The headline numbers, in the order of the table's rows.
+    """The headline numbers (interval means: the largest point mean over the plane where a
+    number varies over it), in the order of the table's rows.
 
     Parameters
     ----------
     analysis : Analysis
         The study's numbers.
     """
-    base = analysis.data[analysis.data["config"] == "baseline"]
-    ct = base[base["boat"] == "saoud_robot"]["ct_cn_ratio"].to_numpy(dtype=float)
-    sheet_rel = [d.value for d in effect(analysis, "saoud_robot", "sheeted") if d.finite and d.relative]
-    aoa_deg = np.degrees(base[base["boat"] == "wille_yacht"]["keel_aoa"].to_numpy(dtype=float))
     err = sailing(analysis)["error_deg"].to_numpy(dtype=float)
-    out = {"ct_cn_max": float(np.nanmax(ct)) if np.isfinite(ct).any() else float("nan"),
-           "ct_speed_effect_max": largest(effect(analysis, "saoud_robot", "ct_off")),
-           "pitch_amplitude_max_deg": float(np.degrees(np.nanmax(base["pitch_amplitude"].to_numpy(dtype=float)))),
-           "four_dof_speed_effect_max": largest(sum((effect(analysis, b, "four_dof") for b in BOATS), [])),
-           "omega3_ratio_max": float(np.nanmax(base["omega3_ratio"].to_numpy(dtype=float))),
+    sheet = analysis.points[("saoud_robot", "sheeted")]["speed_rel"].to_numpy(dtype=float)
+    out = {"ct_cn_max": plane_max(analysis, "ct_cn_ratio", ["saoud_robot"]),
+           "ct_speed_effect_max": largest(analysis.points[("saoud_robot", "ct_off")]),
+           "pitch_amplitude_max_deg": plane_max(analysis, "pitch_amplitude_deg"),
+           "four_dof_speed_effect_max": largest(switch_points(analysis, "four_dof")),
+           "omega3_ratio_max": plane_max(analysis, "omega3_ratio"),
            "roll_over_yaw_speed_min": min(roll_over_yaw(analysis).values()),
-           "keel_roll_share_max": float(np.nanmax(base["roll_share_keel"].to_numpy(dtype=float))),
-           "sheeted_speed_effect_min": min(sheet_rel) if sheet_rel else float("nan"),
-           "keel_aoa_max_deg": float(np.nanmax(aoa_deg))}
+           "keel_roll_share_max": plane_max(analysis, "roll_share_keel"),
+           "sheeted_speed_effect_min": float(np.nanmin(sheet)) if np.isfinite(sheet).any() else float("nan"),
+           "keel_aoa_max_deg": plane_max(analysis, "keel_aoa_deg", ["wille_yacht"])}
     out.update({f"{b}_restoring_error": v["paper_formula_error"] for b, v in analysis.restoring.items()})
-    out["phi_star_error_max_deg"] = float(np.nanmax(np.abs(err))) if err.size else float("nan")
-    out["lateral_speed_6dof"] = analysis.drift["mujoco"]
+    out["phi_star_error_max_deg"] = float(np.nanmax(np.abs(err))) if np.isfinite(err).any() else float("nan")
+    out["lateral_speed_6dof"] = lateral_numbers(analysis)["mujoco"].mean
     for config, _, _, _ in BUILT:
-        out[f"{config}_speed_effect_max"] = largest(sum((effect(analysis, b, config) for b in BOATS), []))
+        out[f"{config}_speed_effect_max"] = largest(switch_points(analysis, config))
     froude = yacht_froude(analysis)
-    out["yacht_froude_max"] = float(np.nanmax(froude["baseline"]))
-    out["yacht_froude_max_friction"] = float(np.nanmax(froude["friction_only"]))
+    out["yacht_froude_max"] = froude["baseline"]
+    out["yacht_froude_max_friction"] = froude["friction_only"]
     for key, value in analysis.table1.items():
         out[f"table1_{key[1]}_{key[0]}_roll_deg"] = value["roll_amplitude"]
         out[f"table1_{key[1]}_{key[0]}_surge"] = value["mean_surge"]

@@ -1,9 +1,10 @@
-"""Assumption validation, the single scenarios: one run each.
+"""Assumption validation, the single scenarios: one run each per seed.
 
 Wille's course correction against the drift sailed, Saoud's static optimum against the heel
 reached, the lateral drift in Viel's position keeping, and a Wille Table 1 run, each in a worker
-process (the job function :func:`part` runs one of them); and the free decay and rudder step of
-both boats (:func:`time_constants`, in the analysing process).
+process (the job function :func:`part` runs one of them on one seed); and the free decay and
+rudder step of both boats (:func:`time_constants`, in the analysing process: calm water, no
+wind, an exact start, nothing drawn).
 """
 
 from __future__ import annotations
@@ -21,16 +22,25 @@ from sailmujoco.physics import BoatPhysics, ForceSwitches
 
 from ..kit import run_episode
 from ..kit.wille import table1_numbers, table1_simulate
-from .scenario import BOATS
+from .scenario import BOATS, JITTER_DEG
+
+COURSE_SECONDS = (60.0, 200.0)  # s: Wille's course hold (smoke, full)
+STEADY_SECONDS = 40.0  # s: each of Saoud's steady states
+STEADY_CASES = ([(4.0, 90.0)], [(w, a) for w in (3.0, 5.0, 7.0) for a in (60.0, 90.0, 120.0)])  # (smoke, full)
+STEADY_L_PHI = ((0.1,), (0.1, 1.0))  # m: the robot's l_phi (smoke, full)
+DRIFT_SECONDS = (60.0, 200.0)  # s: position keeping (smoke, full)
+PAPER_WORLD_COST = 0.2  # the cost of a paper-world (3-DOF) second against a 6-DOF one
 
 
-def course_correction_error(smoke: bool) -> dict:
+def course_correction_error(smoke: bool, seed: int = 0) -> dict:
     """Wille's correction beta_b (eqs. 57-59) against the drift the 6-DOF yacht really sails at.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (60 s instead of 200 s).
+    seed : int
+        Draws the gusts, the wind's wander and the start heading (the task's own).
     """
     log = []
 
@@ -49,8 +59,8 @@ def course_correction_error(smoke: bool) -> dict:
 
         return Composite(logged, controller.sail)
 
-    metrics, traj, _ = run_episode("wille_yacht", "course_hold", "mujoco", factory, seed=0,
-                                   time_limit=60.0 if smoke else 200.0)
+    metrics, traj, _ = run_episode("wille_yacht", "course_hold", "mujoco", factory, seed=seed,
+                                   time_limit=COURSE_SECONDS[not smoke])
     log = np.array(log)
     steady = log[log[:, 0] > log[-1, 0] / 2]
     return {"beta_b": float(np.mean(steady[:, 1])), "drift": float(np.mean(steady[:, 2])),
@@ -58,17 +68,19 @@ def course_correction_error(smoke: bool) -> dict:
             "heel_max": float(np.max(np.abs(traj["heel"])))}
 
 
-def saoud_steady_state(smoke: bool) -> pd.DataFrame:
+def saoud_steady_state(smoke: bool, seed: int = 0) -> pd.DataFrame:
     """Saoud's predicted phi* against the steady heel of the 6-DOF robot, same apparent wind.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (one wind, one l_phi).
+    seed : int
+        Draws the start heading (within ``JITTER_DEG`` of the heading held; the wind is steady).
     """
     rows = []
-    cases = [(4.0, 90.0)] if smoke else [(w, a) for w in (3.0, 5.0, 7.0) for a in (60.0, 90.0, 120.0)]
-    for boat_l_phi in ((0.1,) if smoke else (0.1, 1.0)):
+    cases = STEADY_CASES[not smoke]
+    for boat_l_phi in STEADY_L_PHI[not smoke]:
         for wind, angle in cases:
             phis = []
 
@@ -87,13 +99,13 @@ def saoud_steady_state(smoke: bool) -> pd.DataFrame:
                 return Composite(controller.rudder, logged)
 
             metrics, traj, _ = run_episode(
-                "saoud_robot", "heading_hold", "mujoco", factory, seed=0, time_limit=40.0,
+                "saoud_robot", "heading_hold", "mujoco", factory, seed=seed, time_limit=STEADY_SECONDS,
                 boat_options={"l_phi": boat_l_phi}, wind_speed=wind, wind_from_deg=angle,
-                gusts=False, wander=False, heading_jitter_deg=0.0, steady_window=10.0)
+                gusts=False, wander=False, heading_jitter_deg=JITTER_DEG, steady_window=10.0)
             phis = np.array(phis)
             steady = phis[phis[:, 0] > 30.0][:, 1] if phis.size else np.array([np.nan])
             # Saoud's body frame is FLU like ours: his phi is our heel (positive starboard down)
-            rows.append({"l_phi": boat_l_phi, "tws": wind, "twa": angle,
+            rows.append({"l_phi": boat_l_phi, "tws": wind, "twa": angle, "seed": seed,
                          # no optimum logged after 30 s (the run stopped): no value, and no
                          # numpy "Mean of empty slice" warning in the log
                          "phi_star_deg": math.degrees(float(np.mean(steady))) if steady.size else math.nan,
@@ -104,18 +116,21 @@ def saoud_steady_state(smoke: bool) -> pd.DataFrame:
     return frame
 
 
-def lateral_drift(smoke: bool) -> dict:
-    """Position keeping, case 2: the lateral speed (leeway) of the 3-DOF model and of the robot.
+def lateral_drift(smoke: bool, seed: int = 0) -> dict:
+    """Position keeping, case 2: the lateral speed (leeway) of the 3-DOF model and of the robot,
+    both from the same start.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (60 s instead of 200 s).
+    seed : int
+        Draws the start heading (over the compass: the task's own).
     """
     out = {}
     for world in ("paper", "mujoco"):
-        _, traj, _ = run_episode("saoud_robot", "position_keeping", world, "viel", seed=0, case=2,
-                                 time_limit=60.0 if smoke else 200.0)
+        _, traj, _ = run_episode("saoud_robot", "position_keeping", world, "viel", seed=seed, case=2,
+                                 time_limit=DRIFT_SECONDS[not smoke])
         out[world] = float(np.mean(np.abs(traj["v"])))
         out[world + "_max"] = float(np.max(np.abs(traj["v"])))
     return out
@@ -125,17 +140,37 @@ PARTS = {"course": course_correction_error, "steady": saoud_steady_state, "drift
 
 
 def part(job: dict):
-    """One of the study's single runs (a job of the sweep engine): a part of ``PARTS`` or a
-    Table 1 simulation (its numbers).
+    """One of the study's single runs (a job of the sweep engine): a part of ``PARTS`` on one
+    seed, or a Table 1 simulation (its numbers).
 
     Parameters
     ----------
     job : dict
-        ``{"part": name, "smoke": bool}`` or ``{"part": "table1", "run": the Table 1 job}``.
+        ``{"part": name, "smoke": bool, "seed": int}`` or ``{"part": "table1", "run": the
+        Table 1 job}``.
     """
     if job["part"] == "table1":
         return table1_numbers(table1_simulate(job["run"]))
-    return PARTS[job["part"]](job["smoke"])
+    return PARTS[job["part"]](job["smoke"], job.get("seed", 0))
+
+
+def part_seconds(job: dict) -> float:
+    """The simulated seconds of one job of :func:`part` (a paper-world second counting
+    ``PAPER_WORLD_COST``), for the budget.
+
+    Parameters
+    ----------
+    job : dict
+        A job of :func:`part`.
+    """
+    if job["part"] == "table1":
+        return float(job["run"]["duration"])
+    full = not job["smoke"]
+    if job["part"] == "course":
+        return COURSE_SECONDS[full]
+    if job["part"] == "steady":
+        return STEADY_SECONDS * len(STEADY_CASES[full]) * len(STEADY_L_PHI[full])
+    return DRIFT_SECONDS[full] * (1.0 + PAPER_WORLD_COST)
 
 
 def time_constants() -> dict:

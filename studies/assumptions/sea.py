@@ -14,15 +14,24 @@ run in calm water:
 * Saoud's optimal sail (:func:`saoud_sea_specs`): the robot holding its heading on a beam reach
   in Saoud's wind, in the same seas.
 
+**Seeds.** Every case in a sea runs on each seed of the study (:attr:`sailmujoco.study.Results.seeds`):
+the seed draws the sea's phases and frequencies (``waves.seed``) and, in Table 1's runs, the
+gusts and the wind's wander as well (the run's own seed, the same in calm water, so each sea run
+is paired with the calm run of its seed). The calm runs of the wind plane and of Saoud's sail
+sail a steady wind from an exact start: deterministic, run once and paired with every seed.
+
 A run that stops early (a capsize) is kept with its reason. Each run's roll is the standard
 deviation of its heel over the measured window and its heading error the RMS over the same
 window (:func:`window_statistics`). What each difference comes from is
-measured by a second pass (:func:`mechanism_spec`, :func:`mechanism_jobs`): the case rerun with
-each of the sea's mechanisms (``MECHANISMS``) switched off in turn.
+measured by a second pass (:func:`mechanism_spec`, :func:`mechanism_jobs`): the case rerun on its
+first ``MECHANISM_SEEDS`` seeds with each of the sea's two paths (``PATHS``) switched off in turn,
+and the largest difference of each wind-plane series and metric with the hull's refinements
+(``MECHANISMS``) off as well.
 """
 
 from __future__ import annotations
 
+import inspect
 import math
 
 import numpy as np
@@ -43,7 +52,10 @@ FETCH_REASON = {
 }
 SEA_COMPONENTS = N_COMPONENTS  # -, components of each sea (full study): the kernel's default
 SMOKE_COMPONENTS = 4  # -, components of each sea (smoke)
-SEA_SEED = 0  # the seas' seed (the runs' own seed is the sweep's, 0)
+SEA_SEEDS = 4  # N: the seeds a full pass of the sea runs (the study's; --seeds overrides it)
+MECHANISM_SEEDS = 2  # the first seeds on which the mechanism reruns run (the budget's limit)
+# the calm runs of the wind plane and of Saoud's sail: a steady wind, an exact start (deterministic)
+STEADY = {"task.gusts": False, "task.wander": False, "task.heading_jitter_deg": 0.0}
 SEA_HS = (0.5, 1.0, 2.0)  # m, the seas of Table 1's runs and of Saoud's optimal sail
 SMOKE_HS = (1.0,)  # m, the smoke pass's one sea
 SMOKE_POINT = (10.0, 60.0)  # (m/s, deg): the one wind-plane point in a sea of the smoke pass
@@ -69,6 +81,9 @@ MECHANISM_NAMES = {  # what each switch takes out, in words
 SEA_JOB = "assumptions_sea"  # the job list of Table 1's runs in a sea
 CALM_JOB = "assumptions_sea_calm"  # ... of the same runs in calm water (the heel kept)
 MECHANISM_JOB = "assumptions_sea_mechanisms"  # ... and of their reruns, a mechanism off
+SEA_COST = 1.4  # the cost of a simulated second in a sea against one in calm water (the budget's unit)
+BUDGET = 73_437.0  # simulated seconds the sea's full pass may take, both passes together: 1.5 times
+#                   one realisation of each of its 72 cases, their calm runs and 290 reruns
 
 
 def developed_sea(hs: float) -> tuple[float, float]:
@@ -86,7 +101,7 @@ def developed_sea(hs: float) -> tuple[float, float]:
     return hs, 2.0 * math.pi * u19_5 / (PM_PEAK * constants.GRAVITY)
 
 
-def wind_sea(boat: str, u10: float, n_components: int) -> WaveConfig:
+def wind_sea(boat: str, u10: float, n_components: int, seed: int = 0) -> WaveConfig:
     """The fetch-limited sea a 10 m wind ``u10`` raises over ``boat``'s fetch.
 
     Parameters
@@ -97,9 +112,10 @@ def wind_sea(boat: str, u10: float, n_components: int) -> WaveConfig:
         Mean wind speed at 10 m, m/s.
     n_components : int
         Components of the sea.
+    seed : int
+        The sea's seed (its phases and frequencies).
     """
-    return WaveConfig.from_wind(u10, "fetch_limited", FETCH[boat], n_components=n_components,
-                                seed=SEA_SEED)
+    return WaveConfig.from_wind(u10, "fetch_limited", FETCH[boat], n_components=n_components, seed=seed)
 
 
 def _components(smoke: bool) -> int:
@@ -108,61 +124,75 @@ def _components(smoke: bool) -> int:
 
 def _with_trajectory(spec: dict, name: str) -> dict:
     return {**spec, "name": name, "trajectory_rate": TRAJECTORY_RATE,
-            "options": dict(spec["options"]), "zip": dict(spec["zip"])}
+            "options": {**spec["options"], **STEADY}, "zip": dict(spec["zip"])}
 
 
-def plane_sea_specs(smoke: bool) -> dict:
+def _over_seeds(zipped: dict, seeds) -> dict:
+    """``zipped``'s rows, each once per seed (case by case, seed by seed), with ``waves.seed``."""
+    n = len(zipped[next(iter(zipped))]) if zipped else 1
+    out = {key: [v for v in values for _ in seeds] for key, values in zipped.items()}
+    out["waves.seed"] = [int(seed) for _ in range(n) for seed in seeds]
+    return out
+
+
+def plane_sea_specs(smoke: bool, seeds=(0,)) -> dict:
     """The wind plane in calm water and in the sea each point's wind raises:
     ``{(boat, "calm" | "sea"): spec}``, the heel stored as a trajectory.
 
-    Each boat's as-built spec (:func:`.scenario.plane_specs`) with, in a sea, the zip's
-    ``waves.hs``, ``waves.tp`` and ``waves.direction_from_deg`` (the wind's bearing) of
-    :func:`wind_sea` at each point. Smoke: the point ``SMOKE_POINT`` only.
+    Each boat's as-built spec (:func:`.scenario.plane_specs`, its wind steady and its start
+    exact: ``STEADY``) with, in a sea, the zip's ``waves.hs``, ``waves.tp`` and
+    ``waves.direction_from_deg`` (the wind's bearing) of :func:`wind_sea` at each point, each
+    point once per seed of ``seeds`` (``waves.seed``: case by case, seed by seed). The calm
+    runs are deterministic: each point once. Smoke: the point ``SMOKE_POINT`` only.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass.
+    seeds : sequence of int
+        The seeds of the seas.
     """
     specs = {}
     for boat in BOATS:
         base = plane_specs(smoke)[(boat, "baseline")]
         calm = _with_trajectory(base, f"{boat}-calm")
+        calm["seeds"] = [0]
         if smoke:
             calm["zip"] = {"task.wind_speed": [SMOKE_POINT[0]], "task.wind_from_deg": [SMOKE_POINT[1]]}
         seas = [wind_sea(boat, u10, _components(smoke)) for u10 in calm["zip"]["task.wind_speed"]]
         sea = _with_trajectory(calm, f"{boat}-sea")
-        sea["options"].update({"waves.spectrum": "jonswap", "waves.n_components": _components(smoke),
-                               "waves.seed": SEA_SEED})
-        sea["zip"].update({"waves.hs": [w.hs for w in seas], "waves.tp": [w.tp for w in seas],
-                           "waves.direction_from_deg": list(calm["zip"]["task.wind_from_deg"])})
+        sea["options"].update({"waves.spectrum": "jonswap", "waves.n_components": _components(smoke)})
+        sea["zip"] = _over_seeds({**calm["zip"], "waves.hs": [w.hs for w in seas], "waves.tp": [w.tp for w in seas],
+                                  "waves.direction_from_deg": list(calm["zip"]["task.wind_from_deg"])}, seeds)
         specs[(boat, "calm")], specs[(boat, "sea")] = calm, sea
     return specs
 
 
-def saoud_sea_specs(smoke: bool) -> dict:
+def saoud_sea_specs(smoke: bool, seeds=(0,)) -> dict:
     """Saoud's optimal sail (controller ``saoud``) on the robot, heading held north, beam reach
     in Saoud's wind (4 m/s at the sail, :func:`studies.kit.saoud.wind_speed_10`), in calm water
-    and in the seas ``SEA_HS``: ``{"calm" | "sea": spec}``.
+    (deterministic: once) and in the seas ``SEA_HS`` (each on every seed of ``seeds``):
+    ``{"calm" | "sea": spec}``.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (one sea, 25 s).
+    seeds : sequence of int
+        The seeds of the seas.
     """
     duration = SMOKE_DURATION if smoke else SAOUD_DURATION
     heights = SMOKE_HS if smoke else SEA_HS
     calm = {"name": "saoud-calm", "boat": "saoud_robot", "task": "heading_hold", "world": "mujoco",
-            "controller": "saoud", "duration": duration, "trajectory_rate": TRAJECTORY_RATE,
-            "options": {"task.gusts": False, "task.wander": False, "task.diagnostics": True,
-                        "task.heading_jitter_deg": 0.0, "task.steady_window": duration / 3,
+            "controller": "saoud", "duration": duration, "trajectory_rate": TRAJECTORY_RATE, "seeds": [0],
+            "options": {**STEADY, "task.diagnostics": True, "task.steady_window": duration / 3,
                         "task.wind_speed": wind_speed_10(), "task.wind_from_deg": SAOUD_WIND_FROM_DEG},
             "zip": {}}
     seas = [developed_sea(hs) for hs in heights]
     sea = {**calm, "name": "saoud-sea",
            "options": {**calm["options"], "waves.spectrum": "pm", "waves.n_components": _components(smoke),
-                       "waves.seed": SEA_SEED, "waves.direction_from_deg": SAOUD_WIND_FROM_DEG},
-           "zip": {"waves.hs": [hs for hs, _ in seas], "waves.tp": [tp for _, tp in seas]}}
+                       "waves.direction_from_deg": SAOUD_WIND_FROM_DEG},
+           "zip": _over_seeds({"waves.hs": [hs for hs, _ in seas], "waves.tp": [tp for _, tp in seas]}, seeds)}
     return {"calm": calm, "sea": sea}
 
 
@@ -212,39 +242,51 @@ def table1_heading() -> float:
     return TASKS["beam_reach_roll"](seed=0).desired_heading
 
 
-def table1_calm_jobs(smoke: bool) -> list[dict]:
+def _table1_sims(smoke: bool) -> tuple:
+    return SMOKE_TABLE1_SIMS if smoke else TABLE1_SEA_SIMS
+
+
+def table1_calm_jobs(smoke: bool, seeds=(0,)) -> list[dict]:
     """Table 1's simulations of :func:`table1_sea_jobs` in calm water (the study's own runs,
-    :func:`.scenario.table1_jobs`), as jobs of :func:`table1_sea_run` with ``hs`` 0.
+    :func:`.scenario.table1_jobs`, on each seed of ``seeds``: its gusts and wander), as jobs of
+    :func:`table1_sea_run` with ``hs`` 0; sim by sim, seed by seed.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (sim 3).
+    seeds : sequence of int
+        The seeds.
     """
     jobs = table1_jobs(smoke)
-    return [{"run": jobs[("dsyhs", sim)], "hs": 0.0, "sim": sim}
-            for sim in (SMOKE_TABLE1_SIMS if smoke else TABLE1_SEA_SIMS)]
+    return [{"run": {**jobs[("dsyhs", sim)], "seed": int(seed)}, "hs": 0.0, "sim": sim, "seed": int(seed)}
+            for sim in _table1_sims(smoke) for seed in seeds]
 
 
-def table1_sea_jobs(smoke: bool) -> list[dict]:
+def table1_sea_jobs(smoke: bool, seeds=(0,)) -> list[dict]:
     """Table 1's simulations (as built, :func:`.scenario.table1_jobs`) in the seas ``SEA_HS``
-    from the wind's bearing: the jobs of :func:`studies.kit.wille.table1_simulate`, each with
-    its ``hs``.
+    from the wind's bearing, each on every seed of ``seeds`` (the run's gusts and wander and the
+    sea's phases): the jobs of :func:`studies.kit.wille.table1_simulate`, each with its ``hs``,
+    ``sim`` and ``seed``; sim by sim, sea by sea, seed by seed.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass (sim 3, one sea).
+    seeds : sequence of int
+        The seeds.
     """
     jobs = table1_jobs(smoke)
     out = []
-    for sim in (SMOKE_TABLE1_SIMS if smoke else TABLE1_SEA_SIMS):
+    for sim in _table1_sims(smoke):
         for hs in (SMOKE_HS if smoke else SEA_HS):
             _, tp = developed_sea(hs)
-            waves = {"spectrum": "pm", "hs": hs, "tp": tp, "direction_from_deg": table1_wind_from_deg(),
-                     "n_components": _components(smoke), "seed": SEA_SEED}
-            run = jobs[("dsyhs", sim)]
-            out.append({"run": {**run, "env": {**run["env"], "waves": waves}}, "hs": hs, "sim": sim})
+            for seed in seeds:
+                waves = {"spectrum": "pm", "hs": hs, "tp": tp, "direction_from_deg": table1_wind_from_deg(),
+                         "n_components": _components(smoke), "seed": int(seed)}
+                run = jobs[("dsyhs", sim)]
+                out.append({"run": {**run, "seed": int(seed), "env": {**run["env"], "waves": waves}},
+                            "hs": hs, "sim": sim, "seed": int(seed)})
     return out
 
 
@@ -282,63 +324,88 @@ def switched(mechanism: str) -> dict:
     return {**MECHANISM_ON, mechanism: dict(MECHANISMS)[mechanism]}
 
 
-def mechanism_spec(spec: dict, cases: list[int]) -> dict:
-    """A sea sweep's runs ``cases`` (indices into its zip) again, each with every mechanism of
-    ``MECHANISMS`` off in turn (``env.`` keys): the runs in the order case by case, mechanism
-    by mechanism.
+def mechanism_spec(spec: dict, reruns: list[tuple[int, str]]) -> dict:
+    """A sea sweep's runs again, each with one mechanism of ``MECHANISMS`` off (``env.`` keys):
+    ``reruns`` lists (the run's index in the sea spec's zip, the mechanism), in that order.
 
     Parameters
     ----------
     spec : dict
         A sea spec (:func:`plane_sea_specs`, :func:`saoud_sea_specs`).
-    cases : list of int
-        Its runs to repeat, by their index in the zip.
+    reruns : list of (int, str)
+        The runs to repeat and the mechanism each switches off.
     """
     zipped = {key: [] for key in spec["zip"]}
     zipped.update({f"env.{name}": [] for name in MECHANISM_ON})
-    for case in cases:
-        for name, _ in MECHANISMS:
-            for key, values in spec["zip"].items():
-                zipped[key].append(values[case])
-            for key, value in switched(name).items():
-                zipped[f"env.{key}"].append(value)
+    for index, name in reruns:
+        for key, values in spec["zip"].items():
+            zipped[key].append(values[index])
+        for key, value in switched(name).items():
+            zipped[f"env.{key}"].append(value)
     return {**spec, "name": f"{spec['name']}-mechanisms", "zip": zipped}
 
 
-def mechanism_jobs(jobs: list[dict], cases: list[int]) -> list[dict]:
-    """Table 1 runs in a sea (:func:`table1_sea_jobs`) ``cases`` again, each mechanism off in
-    turn, in the order case by case, mechanism by mechanism.
+def mechanism_jobs(jobs: list[dict], reruns: list[tuple[int, str]]) -> list[dict]:
+    """Table 1 runs in a sea (:func:`table1_sea_jobs`) again, each with one mechanism off:
+    ``reruns`` lists (the job's index, the mechanism), in that order.
 
     Parameters
     ----------
     jobs : list of dict
         The Table 1 sea jobs.
-    cases : list of int
-        Their indices to repeat.
+    reruns : list of (int, str)
+        The jobs to repeat and the mechanism each switches off.
     """
     out = []
-    for case in cases:
-        job = jobs[case]
-        for name, _ in MECHANISMS:
-            run = {**job["run"], "env": {**job["run"]["env"], **switched(name)}}
-            out.append({**job, "run": run, "mechanism": name})
+    for index, name in reruns:
+        job = jobs[index]
+        run = {**job["run"], "env": {**job["run"]["env"], **switched(name)}}
+        out.append({**job, "run": run, "mechanism": name})
     return out
 
 
-def runs(smoke: bool) -> Runs:
+def simulated_seconds(runs: Runs) -> float:
+    """The cost of the sea's runs among ``runs``: their simulated seconds, a run in a sea
+    counting ``SEA_COST`` per second and one in calm water 1 (the others' runs: 0).
+
+    Parameters
+    ----------
+    runs : sailmujoco.study.Runs
+        A pass's runs.
+    """
+    from sailmujoco.sweep.spec import expand, validate
+
+    total = 0.0
+    for spec, _ in runs.sweeps:
+        if spec["name"].endswith(("-calm", "-sea", "-sea-mechanisms")):
+            for run in expand(validate(spec)):
+                total += run["duration"] * (SEA_COST if run.get("waves_options", {}).get("hs", 0.0) > 0.0 else 1.0)
+    for name, (_, items) in runs.jobs.items():
+        if name in (SEA_JOB, CALM_JOB, MECHANISM_JOB):
+            total += sum(item["run"]["duration"] * (SEA_COST if "waves" in item["run"].get("env", {}) else 1.0)
+                         for item in items)
+    return total
+
+
+def runs(smoke: bool, seeds=(0,)) -> Runs:
     """The study's first pass: its runs (:func:`.scenario.runs`) and the sea's, the wind plane
     in calm water and in a sea (:func:`plane_sea_specs`), Saoud's optimal sail
     (:func:`saoud_sea_specs`) and Table 1 in the seas (:func:`table1_sea_jobs`) and in calm
-    water (:func:`table1_calm_jobs`).
+    water (:func:`table1_calm_jobs`), every case in a sea on each seed of ``seeds``.
 
     Parameters
     ----------
     smoke : bool
         The study's short pass.
+    seeds : sequence of int
+        The seeds (:attr:`sailmujoco.study.Results.seeds`).
     """
-    base = scenario_runs(smoke)
-    specs = [*plane_sea_specs(smoke).values(), *saoud_sea_specs(smoke).values()]
+    seeds = tuple(int(s) for s in seeds)
+    takes_seeds = len(inspect.signature(scenario_runs).parameters) >= 2
+    base = scenario_runs(smoke, seeds) if takes_seeds else scenario_runs(smoke)
+    specs = [*plane_sea_specs(smoke, seeds).values(), *saoud_sea_specs(smoke, seeds).values()]
     return Runs(sweeps=base.sweeps + tuple((spec, f"sweeps/{spec['name']}") for spec in specs),
-                jobs={**base.jobs, SEA_JOB: (f"{__package__}.sea:table1_sea_run", table1_sea_jobs(smoke)),
-                      CALM_JOB: (f"{__package__}.sea:table1_sea_run", table1_calm_jobs(smoke))},
+                jobs={**base.jobs,
+                      SEA_JOB: (f"{__package__}.sea:table1_sea_run", table1_sea_jobs(smoke, seeds)),
+                      CALM_JOB: (f"{__package__}.sea:table1_sea_run", table1_calm_jobs(smoke, seeds))},
                 label=base.label)

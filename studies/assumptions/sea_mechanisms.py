@@ -1,22 +1,25 @@
 """Assumption validation, the sea's part of the report: where each difference comes from.
 
 Each difference a sea makes (:func:`.sea_analysis.attribution`) takes one of the sea's two
-paths into the boat, the hull or the keel and rudder (:data:`.sea.PATHS`): :func:`path_of`
-says which, :func:`path_counts` how many per series and metric, :func:`named` in words with
-the switches that show it, and :func:`mechanisms_section` writes the report's section.
+paths into the boat, the hull or the keel and rudder (:data:`.sea.PATHS`), decided on the
+mechanism reruns' seeds: :func:`path_of` says which, :func:`path_counts` how many per series and
+metric, :func:`named` in words with the switches that show it, and :func:`mechanisms_section`
+writes the report's section.
 """
 
 from __future__ import annotations
 
-import numpy as np
+import math
+
 import pandas as pd
 
 from . import sea
 from .sea_analysis import DIFFERENCE, EXPLAINS, HEADING_LOST_DEG, SERIES, SeaAnalysis, lost_cases, metrics_of
+from .sea_analysis import removed_interval as _removed
 
 
 def paths(s: SeaAnalysis) -> list[str]:
-    """The path of every difference beyond ``DIFFERENCE`` (:func:`path_of`).
+    """The path of every difference that breaks (:func:`path_of`).
 
     Parameters
     ----------
@@ -35,23 +38,27 @@ def _rows_of(s: SeaAnalysis, series: str, metric: str) -> pd.DataFrame:
 
 
 def path_of(row) -> str:
-    """Which of the sea's paths a difference takes: "hull", "foils", "either" (neither switch
-    removes half of it: each path alone makes more than half) or "stalled" (neither switch
-    removes half, and a path's rerun lost its heading).
+    """Which of the sea's paths a difference takes: "hull", "foils" (its switch surely removes
+    more than half of it, or the other's surely at most half where this one's rerun lost its
+    heading), "either" (each switch surely removes at most half: each path alone makes more than
+    half), "stalled" (a path's rerun lost its heading, and the other's share does not decide) or
+    "undecided" (a share's interval straddles one half).
 
     Parameters
     ----------
     row : mapping
-        A row of :func:`.sea_analysis.attribution`.
+        A row of :func:`.sea_analysis.attribution` (``path``: :func:`.sea_analysis.path_taken`).
     """
-    if row["mechanism"]:
-        return {"wave_hull": "hull", "wave_foil_flow": "foils"}[row["mechanism"]]
-    if any(row[f"{name}_stalled"] for name in sea.PATHS):
-        return "stalled"
-    return "either"
+    return row["path"].replace(" alone", "")
 
 
-PATH_WORDS = {"hull": "the hull", "foils": "the foils", "either": "either path alone", "stalled": "stalled"}
+PATH_WORDS = {"hull": "the hull", "foils": "the foils", "either": "either path alone",
+              "stalled": "stalled", "undecided": "undecided"}
+
+
+def _undecided(s: SeaAnalysis) -> str:
+    n = sorted({int(v) for v in s.mechanisms["n"]}) if not s.mechanisms.empty else [0]
+    return f"undecided at {'-'.join(str(v) for v in dict.fromkeys([n[0], n[-1]]))} seeds"
 
 
 def path_counts(rows: pd.DataFrame) -> str:
@@ -64,9 +71,9 @@ def path_counts(rows: pd.DataFrame) -> str:
     """
     if rows.empty:
         return "—"
-    paths = [path_of(row) for _, row in rows.iterrows()]
-    return ", ".join(f"{PATH_WORDS[p]} {paths.count(p)}" for p in PATH_WORDS if paths.count(p)) + \
-        f" (of {len(paths)})"
+    taken = [path_of(row) for _, row in rows.iterrows()]
+    return ", ".join(f"{PATH_WORDS[p]} {taken.count(p)}" for p in PATH_WORDS if taken.count(p)) + \
+        f" (of {len(taken)})"
 
 
 def mechanism_text(s: SeaAnalysis, series: str, metric: str) -> str:
@@ -82,13 +89,27 @@ def mechanism_text(s: SeaAnalysis, series: str, metric: str) -> str:
     return path_counts(_rows_of(s, series, metric))
 
 
+def share_text(row, name: str) -> str:
+    """The share switch ``name`` removes, in per cent: ``mean [low, high] %`` (or "stalled").
+
+    Parameters
+    ----------
+    row : mapping
+        A row of :func:`.sea_analysis.attribution`.
+    name : str
+        A mechanism of :data:`.sea.MECHANISMS`.
+    """
+    if row[f"{name}_n"] and row[f"{name}_stalled"] == row[f"{name}_n"]:
+        return "stalled"
+    got = _removed(row, name)
+    if not math.isfinite(got.mean):
+        return "—"
+    scaled = type(got)(100 * got.mean, 100 * got.low, 100 * got.high, got.n, got.method)
+    return scaled.fixed(0, "%")
+
+
 def _switch(row, name: str) -> str:
-    return f"{sea.MECHANISM_NAMES[name]} (`env.{name} = {_off(name)}` removes {_percent(row[f'{name}_removed'])})"
-
-
-def _removals(row, names) -> str:
-    """"`env.a = false` removes 12 % and `env.b = false` removes 80 %"."""
-    return " and ".join(f"`env.{n} = {_off(n)}` removes {_percent(row[f'{n}_removed'])}" for n in names)
+    return f"{sea.MECHANISM_NAMES[name]} (`env.{name} = {_off(name)}` removes {share_text(row, name)})"
 
 
 def named(row) -> str:
@@ -101,29 +122,22 @@ def named(row) -> str:
         A row of :func:`.sea_analysis.attribution`.
     """
     path, refinement = row["mechanism"], row.get("refinement", "")
-    if path and row.get("path_alone", False):
-        other = next(n for n in sea.PATHS if n != path)
-        return (f"{sea.MECHANISM_NAMES[path]} alone (`env.{other} = {_off(other)}` removes "
-                f"{_percent(row[f'{other}_removed'])}; with `env.{path} = {_off(path)}` the boat lost its heading)")
+    taken = row["path"]
+    if taken.endswith(" alone"):
+        lost = "wave_hull" if taken.startswith("hull") else "wave_foil_flow"
+        other = next(n for n in sea.PATHS if n != lost)
+        return (f"{sea.MECHANISM_NAMES[lost]} alone (`env.{other} = {_off(other)}` removes "
+                f"{share_text(row, other)}; with `env.{lost} = {_off(lost)}` the boat lost its heading)")
     if path and refinement and path == "wave_hull":
         return f"{_switch(row, path)}, chiefly {_switch(row, refinement)}"
     if path:
         return _switch(row, path)
-    removed = {name: row[f"{name}_removed"] for name, _ in sea.MECHANISMS}
-    finite = {k: v for k, v in removed.items() if np.isfinite(v)}
-    if not finite:
-        return "every rerun stalled" if all(row[f"{n}_stalled"] for n in removed) else "no rerun finished"
-    paths = " and ".join(f"`env.{n} = {_off(n)}` {_percent(finite[n])}" for n in sea.PATHS if n in finite)
-    if any(row[f"{n}_stalled"] for n in sea.PATHS):
-        return f"not attributed: a path's rerun lost its heading (the other's switch removes {paths})"
-    if refinement:
-        return f"{_switch(row, refinement)}; each path alone makes more than half of it ({paths} removed)"
-    return (f"either path alone makes more than half of it (their switches remove {paths}): the two "
-            "do not add")
-
-
-def _percent(share: float) -> str:
-    return f"{round(100.0 * share)} %"  # an int: no "-0 %"
+    both = " and ".join(f"`env.{n} = {_off(n)}` {share_text(row, n)}" for n in sea.PATHS)
+    if taken == "stalled":
+        return f"not attributed: a path's rerun lost its heading ({both})"
+    if taken == "either":
+        return f"either path alone makes more than half of it (their switches remove {both}): the two do not add"
+    return f"undecided at {int(row['n'])} seeds ({both} removed)"
 
 
 def _off(name: str) -> str:
@@ -143,39 +157,39 @@ def mechanisms_section(r, s: SeaAnalysis) -> None:
         The sea's numbers.
     """
     names = ", ".join(f"`env.{name} = {_off(name)}`" for name, _ in sea.MECHANISMS)
+    paths_off = ", ".join(f"`env.{name} = {_off(name)}`" for name in sea.PATHS)
+    refined = int(s.mechanisms["largest"].sum()) if not s.mechanisms.empty else 0
+    fewer = (f" (fewer seeds than the cases' {len(s.seeds)}: the reruns' budget)"
+             if sea.MECHANISM_SEEDS < len(s.seeds) else "")
     r.section("Where each difference comes from", (
-        f"Every case with a difference beyond {100 * DIFFERENCE:g} % "
-        f"is run again with each of the sea's mechanisms off in turn ({names}). The share "
-        "of the difference a switch removes is 1 − (switched − calm)/(sea − calm). The sea reaches "
+        f"Every case with a difference that breaks the ±{100 * DIFFERENCE:g} % band is run again, on its "
+        f"first {sea.MECHANISM_SEEDS} seeds on which both runs kept their heading{fewer}, with each of the sea's two paths into the boat off "
+        f"in turn ({paths_off}); the largest difference of each series and metric also with the hull's "
+        "refinements off, as far as the sea's budget of simulated time allows (all mechanisms: "
+        f"{names}). The share of the difference a switch removes is 1 − (switched − calm)/(sea − calm), "
+        "seed by seed, given as its mean with its 95 % interval over those seeds. The sea reaches "
         "the boat by two paths, the hull (`env.wave_hull`) and the keel and rudder "
         "(`env.wave_foil_flow`); with both off the boat in a sea is the calm boat, to the bit. The "
-        f"path whose switch removes at least {100 * EXPLAINS:g} % of the difference, the more of the "
-        "two, is the one it takes; where neither does, each path alone makes more than half of the "
-        "difference (the two do not add: each excites the same motion, or they cancel in part). The "
-        "refinement of the hull's path (diffraction, damping relative to the water, the pressure's "
-        "decay with depth) whose switch removes at least as much, the most, names the part of the "
-        "hull's physics it comes from. Only cases where "
-        "the calm run, the run in the sea and every switched run keep their heading are attributed: a "
-        "switched run that loses it is marked stalled, its share not counted."))
+        f"path whose share's interval lies wholly above {100 * EXPLAINS:g} %, the more of the two, is the "
+        f"one it takes; where both lie wholly below, each path alone makes more than half of the "
+        "difference (the two do not add: each excites the same motion, or they cancel in part); where "
+        "an interval straddles the half, the path is undecided at those seeds. The refinement of the "
+        "hull's path (diffraction, damping relative to the water, the pressure's decay with depth) "
+        "whose share lies wholly above the half, the most, names the part of the hull's physics it "
+        "comes from. A switched run that loses its heading is marked stalled, its seed not counted."))
     if s.mechanisms.empty:
-        r.paragraph(f"No metric differs by more than {100 * DIFFERENCE:g} %.")
+        r.paragraph(f"No metric's difference breaks the ±{100 * DIFFERENCE:g} % band.")
     else:
-        r.paragraph("Every difference, by the path it takes and, where the hull's, by the refinement "
-                    "that removes at least half of it:")
+        r.paragraph("Every difference that breaks, by the path it takes and, where the hull's, by the "
+                    "refinement that surely removes more than half of it (refinements rerun for "
+                    f"{refined} differences, the largest of their series and metric):")
         r.table(_path_rows(s))
         either = [row for _, row in s.mechanisms.iterrows() if path_of(row) == "either"]
         if either:
             r.paragraph("Made by either path alone: " + "; ".join(
-                f"{row['series']}, {row['case']}, {row['metric']} {row['calm']:.2f} → {row['sea']:.2f} "
-                f"({_removals(row, sea.PATHS)})" for row in either) + ".")
-        r.paragraph("The largest difference of each series and metric, each switch's share:")
+                f"{row['series']}, {row['case']}, {row['metric']} ({named(row)})" for row in either) + ".")
+        r.paragraph("The largest difference of each series and metric, each switch's share (— : not rerun):")
         r.table(_largest_rows(s))
-        idle = [name for name, _ in sea.MECHANISMS
-                if (s.mechanisms[f"{name}_off"] == s.mechanisms["sea"]).all()]
-        if idle:
-            r.paragraph("Switched off, " + ", ".join(f"`env.{n} = {_off(n)}`" for n in idle)
-                        + " leave" + ("s" if len(idle) == 1 else "") + " every metric of these reruns "
-                        "as it is with the switch on, to the bit.")
     _left_out(r, s)
 
 
@@ -186,12 +200,13 @@ def _path_rows(s: SeaAnalysis) -> list[dict]:
             m = _rows_of(s, series, metric)
             if m.empty:
                 continue
-            paths = [path_of(row) for _, row in m.iterrows()]
-            hull = m[[p == "hull" for p in paths]]
+            taken = [path_of(row) for _, row in m.iterrows()]
+            hull = m[[p == "hull" for p in taken]]
             finer = [sea.MECHANISM_NAMES[n] for n in hull["refinement"] if n]
-            rows.append({"series": label, "metric": f"{name} [{unit}]", "differences": len(m),
-                         **{(f"by {PATH_WORDS[p]}" if p != "stalled" else "not attributed (rerun stalled)"): paths.count(p)
-                            for p in PATH_WORDS},
+            rows.append({"series": label, "metric": f"{name} [{unit}]", "differences that break": len(m),
+                         **{(f"by {PATH_WORDS[p]}" if p not in ("stalled", "undecided")
+                             else "not attributed (rerun stalled)" if p == "stalled" else _undecided(s)):
+                            taken.count(p) for p in PATH_WORDS},
                          "of the hull's, chiefly": "; ".join(
                              f"{n}: {finer.count(n)}" for n in sorted(dict.fromkeys(finer), key=lambda n: -finer.count(n)))
                          or "no one refinement"})
@@ -202,24 +217,35 @@ def _largest_rows(s: SeaAnalysis) -> list[dict]:
     rows = []
     for _, m in s.mechanisms[s.mechanisms["largest"]].iterrows():
         row = {"series": m["series"], "case": m["case"], "metric": f"{m['metric']} [{m['unit']}]",
-               "calm → sea": f"{m['calm']:.2f} → {m['sea']:.2f}"}
+               f"calm → sea (N={int(m['n_kept'])})": f"{_value(m, 'calm')} → {_value(m, 'sea')}",
+               "seeds rerun": m["mechanism_seeds"]}
         for name, _ in sea.MECHANISMS:
-            row[f"`env.{name} = {_off(name)}` removes"] = "stalled" if m[f"{name}_stalled"] else (
-                _percent(m[f"{name}_removed"]) if np.isfinite(m[f"{name}_removed"]) else "—")
+            row[f"`env.{name} = {_off(name)}` removes"] = share_text(m, name) if m[f"{name}_n"] else "—"
         row["explained by"] = named(m)
         rows.append(row)
     return rows
 
 
+def _value(row, column: str) -> str:
+    from sailmujoco import stats
+
+    got = stats.Interval(float(row[column]), float(row[f"{column}_low"]), float(row[f"{column}_high"]),
+                         int(row["n_kept"]))
+    return got.fixed(2)
+
+
 def _left_out(r, s: SeaAnalysis) -> None:
     lost = lost_cases(s.tables)
     if lost.empty:
-        r.paragraph("Every case keeps its heading in calm water and in the sea: none is left out.")
+        r.paragraph("Every case keeps its heading on every seed, in calm water and in the sea: no seed is left out.")
         return
-    r.paragraph(f"Left out: the {len(lost)} cases whose calm or sea run lost its heading (heading error RMS "
-                f"over the window beyond {HEADING_LOST_DEG:g}°). Their difference is that of a boat off its "
-                "course, not of one of the sea's mechanisms on a boat sailing it.")
-    r.table([{"series": row["series"], "case": row["case"], "lost its heading": row["lost"],
-              "heading error RMS, calm → sea [deg]": f"{row['heading_rms_calm']:.1f} → {row['heading_rms_sea']:.1f}",
-              "speed or surge, calm → sea [m/s]": f"{row['speed_calm']:.2f} → {row['speed_sea']:.2f}"}
+    r.paragraph(f"Left out: the seeds on which the calm or the sea run lost its heading (heading error RMS "
+                f"over the window beyond {HEADING_LOST_DEG:g}°), in {len(lost)} cases. Their difference is that of "
+                "a boat off its course, not of one of the sea's mechanisms on a boat sailing it; a case's "
+                "numbers are over its other seeds.")
+    r.table([{"series": row["series"], "case": row["case"],
+              "seeds lost, calm / sea (of N)": f"{row['lost_calm']} / {row['lost_sea']} (of {row['n']})",
+              "heading error RMS, calm → sea [deg]": f"{row['heading_rms_calm'].fixed(1)} → "
+                                                    f"{row['heading_rms_sea'].fixed(1)}"}
              for _, row in lost.iterrows()])
+

@@ -2,6 +2,8 @@
 
 :func:`write` adds ``SEA_FILES`` and ``SEA_FIGURES`` to the study's folder, :func:`sections`
 the sections after the study's own, :func:`summary_sentence` one sentence of the summary.
+Every number of a run in a sea is the mean over the study's seeds with its 95 % interval
+(:mod:`sailmujoco.stats`); each case's difference has its verdict against the ±10 % band.
 """
 
 from __future__ import annotations
@@ -12,11 +14,12 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from sailmujoco import constants
+from sailmujoco import constants, stats
 from sailmujoco.forces.waves import BAND
 from sailmujoco.options import PM_HS, PM_PEAK, U19_5_PER_U10, fully_developed_sea
 
 from ..kit import save_figure, setup_matplotlib
+from ..kit import seeds as kit_seeds
 from ..kit.saoud import TRUE_WIND
 from ..kit.verdict import value_range
 from ..kit.wille import TABLE1_WIND, TABLE1_WINDOW
@@ -26,22 +29,27 @@ from .figures import write as write_figures
 from .sea_analysis import (
     DIFFERENCE,
     HEADING_LOST_DEG,
+    LOST,
     SAILING,
     TABLE1,
     SeaAnalysis,
+    interval_of,
     metrics_of,
 )
 from .sea_mechanisms import PATH_WORDS, mechanism_text, mechanisms_section, paths
 from .table import headline as table_headline
 
 SEA_FILES = {"saoud_robot": "sea_wind_plane.csv", "table1": "sea_table1.csv", "saoud": "sea_saoud.csv",
-             "mechanisms": "sea_mechanisms.csv"}  # the wind plane's file holds both boats
+             "cases": "sea_cases.csv", "mechanisms": "sea_mechanisms.csv",
+             "reruns": "sea_mechanism_reruns.csv"}  # the wind plane's file holds both boats
 SEA_FIGURES = {"plane": "sea_wind_plane.png", "series": "sea_heights.png"}
+VERDICTS = ("breaks", "holds", "undecided")  # a difference's verdicts, in the order the report counts them
 
 
 def write(analysis, out: Path) -> None:
     """The study's figures and data (:func:`.figures.write`), then the sea's: ``SEA_FILES``
-    and ``SEA_FIGURES``.
+    (the runs one row per case and seed, the cases with their intervals and verdicts, the
+    mechanisms and their reruns) and ``SEA_FIGURES``.
 
     Parameters
     ----------
@@ -52,20 +60,64 @@ def write(analysis, out: Path) -> None:
     """
     write_figures(analysis, out)
     out, s = Path(out), analysis.sea
-    pd.concat([s.tables["saoud_robot"], s.tables["wille_yacht"]], ignore_index=True).to_csv(
+    pd.concat([s.runs["saoud_robot"], s.runs["wille_yacht"]], ignore_index=True).to_csv(
         out / SEA_FILES["saoud_robot"], index=False)
-    s.tables["table1"].to_csv(out / SEA_FILES["table1"], index=False)
-    s.tables["saoud"].to_csv(out / SEA_FILES["saoud"], index=False)
+    s.runs["table1"].to_csv(out / SEA_FILES["table1"], index=False)
+    s.runs["saoud"].to_csv(out / SEA_FILES["saoud"], index=False)
+    pd.concat([t.assign(series=series) for series, t in s.tables.items()], ignore_index=True).to_csv(
+        out / SEA_FILES["cases"], index=False)
     s.mechanisms.to_csv(out / SEA_FILES["mechanisms"], index=False)
+    s.reruns.to_csv(out / SEA_FILES["reruns"], index=False)
     plt = setup_matplotlib()
     _plane_figure(plt, s, out)
     _series_figure(plt, s, out)
 
 
+def _verdict_kind(verdict: str) -> str:
+    return "undecided" if verdict.startswith("undecided") else verdict
+
+
+def _verdicts(s: SeaAnalysis) -> dict:
+    """Every case's and metric's verdict, counted: breaks, holds, undecided (cases with no seed
+    that kept its heading have none)."""
+    found = [_verdict_kind(v) for series, t in s.tables.items() for m in metrics_of(series)
+             for v in t[f"{m}_verdict"] if v != LOST]
+    return {k: found.count(k) for k in VERDICTS}
+
+
+def lost_rate(s: SeaAnalysis, which: str = "any") -> stats.Interval:
+    """The share of the runs in a sea (cases x seeds) that lost their heading (``which="sea"``)
+    or sailed beside a calm run that lost it too (``"any"``), with Wilson's interval.
+
+    Parameters
+    ----------
+    s : SeaAnalysis
+        The sea's numbers.
+    which : {"any", "sea"}
+        Which runs count.
+    """
+    rows = pd.concat(list(s.runs.values()), ignore_index=True)
+    lost = rows["lost_heading"] != "" if which == "any" else rows["lost_heading"].str.contains("sea")
+    return stats.pass_rate(int(lost.sum()), len(rows))
+
+
+def _plane_cases(s: SeaAnalysis) -> pd.DataFrame:
+    return pd.concat([s.tables["saoud_robot"], s.tables["wille_yacht"]], ignore_index=True)
+
+
+def _extreme(table: pd.DataFrame, column: str, largest: bool) -> pd.Series | None:
+    """The row of ``table`` (cases with a kept seed) whose mean ``column`` is largest (or smallest)."""
+    kept = table[(table["n_kept"] > 0) & np.isfinite(table[column])]
+    if kept.empty:
+        return None
+    return kept.loc[kept[column].idxmax() if largest else kept[column].idxmin()]
+
+
 def headline(analysis) -> dict:
-    """The study's headline numbers (:func:`.table.headline`) and the sea's: the largest
-    relative change of each metric per series over the cases that keep their heading, the
-    number of sea runs that stopped early and of cases that lost their heading.
+    """The study's headline numbers (:func:`.table.headline`) and the sea's: per series and
+    metric the largest mean relative change over the cases and how many break the band, the sea
+    runs that stopped early and the runs that lost their heading (cases x seeds), the share of
+    them with its interval, the verdicts counted and the paths of the differences that break.
 
     Parameters
     ----------
@@ -73,79 +125,101 @@ def headline(analysis) -> dict:
         The study's numbers.
     """
     out = table_headline(analysis)
-    for series, table in analysis.sea.tables.items():
+    s = analysis.sea
+    for series, table in s.tables.items():
+        kept = table[table["n_kept"] > 0]
         for metric in metrics_of(series):
-            rel = _kept(table)[f"{metric}_rel"].abs().to_numpy(dtype=float)
+            rel = kept[f"{metric}_rel"].abs().to_numpy(dtype=float)
             out[f"sea_{series}_{metric}_change_max"] = float(np.nanmax(rel)) if np.isfinite(rel).any() else math.nan
-        out[f"sea_{series}_stopped"] = int((table["status"] != "ok").sum())
-        out[f"sea_{series}_lost_heading"] = int((table["lost_heading"] != "").sum())
-    out["sea_mechanism_rows"] = len(analysis.sea.mechanisms)
-    taken = paths(analysis.sea)
+            out[f"sea_{series}_{metric}_breaks"] = int((table[f"{metric}_verdict"] == "breaks").sum())
+        out[f"sea_{series}_stopped"] = int((s.runs[series]["status"] != "ok").sum())
+        out[f"sea_{series}_lost_heading"] = int((s.runs[series]["lost_heading"] != "").sum())
+    for which in ("any", "sea"):
+        got = lost_rate(s, which)
+        key = "sea_lost_heading_rate" if which == "any" else "sea_lost_heading_in_sea_rate"
+        out.update({key: got.mean, f"{key}_low": got.low, f"{key}_high": got.high})
+    plane = _plane_cases(s)
+    for name, largest in (("min", False), ("max", True)):
+        row = _extreme(plane, "speed_rel", largest)
+        out[f"sea_speed_change_{name}"] = float(row["speed_rel"]) if row is not None else math.nan
+    row = _extreme(plane, "roll_sd_sea", True)
+    out["sea_roll_sd_max"] = float(row["roll_sd_sea"]) if row is not None else math.nan
+    out.update({f"sea_differences_{k}": v for k, v in _verdicts(s).items()})
+    out["sea_mechanism_rows"] = len(s.mechanisms)
+    taken = paths(s)
     for path in PATH_WORDS:
         out[f"sea_differences_by_{path}"] = taken.count(path)
+    out["sea_seeds"] = len(s.seeds)
+    out["sea_simulated_seconds"] = float(s.cost.get("first", 0.0) + s.cost.get("mechanisms", 0.0))
     return out
 
 
-def _span(values, fmt: str = "{:.2f}", scale: float = 1.0) -> str:
-    """:func:`.kit.verdict.value_range`, one value where both ends read the same."""
-    text = value_range(values, scale, fmt)
-    low, _, high = text.partition(" … ")
-    return low if low == high else text
-
-
-def _kept(table: pd.DataFrame) -> pd.DataFrame:
-    """The cases where calm and sea runs keep their heading."""
-    return table[table["lost_heading"] == ""]
+def _percent(row, column: str) -> str:
+    got = interval_of(row, column)
+    return type(got)(100 * got.mean, 100 * got.low, 100 * got.high, got.n, got.method).fixed(0, "%")
 
 
 def _pivot(table: pd.DataFrame, column: str) -> pd.DataFrame:
     return table.pivot_table(index="tws", columns="twa", values=column, dropna=False)
 
 
-def _mark_lost(plt, ax, table: pd.DataFrame) -> None:
-    """A red hatched frame and "lost: calm | sea | both" on each cell whose calm or sea run lost
-    its heading."""
+def _mark_cells(plt, ax, table: pd.DataFrame, metric: str | None) -> None:
+    """On each cell: a red hatched frame and "lost: calm k | sea k" where a seed's calm or sea run
+    lost its heading; "?" where ``metric``'s verdict is undecided, "✓" where it holds."""
     speeds, angles = sorted(set(table["tws"])), sorted(set(table["twa"]))
-    for _, row in table[table["lost_heading"] != ""].iterrows():
+    for _, row in table.iterrows():
         i, j = speeds.index(row["tws"]), angles.index(row["twa"])
-        ax.add_patch(plt.Rectangle((j - 0.45, i - 0.45), 0.9, 0.9, fill=False, edgecolor="red", hatch="//",
-                                   linewidth=1.5, alpha=0.6))
-        which = "both" if row["lost_heading"] == "calm, sea" else row["lost_heading"]
-        ax.text(j, i - 0.3, f"lost: {which}", ha="center", va="center", color="red", fontsize=7,
-                bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1.0})
+        if metric is not None:
+            kind = _verdict_kind(row[f"{metric}_verdict"])
+            mark = {"holds": "✓", "undecided": "?"}.get(kind)
+            if mark:
+                ax.text(j + 0.3, i + 0.28, mark, ha="center", va="center", color="white", fontsize=9,
+                        fontweight="bold")
+        if row["lost_calm"] or row["lost_sea"]:
+            ax.add_patch(plt.Rectangle((j - 0.45, i - 0.45), 0.9, 0.9, fill=False, edgecolor="red", hatch="//",
+                                       linewidth=1.5, alpha=0.6))
+            ax.text(j, i - 0.3, f"lost: {row['lost_calm']} | {row['lost_sea']}", ha="center", va="center",
+                    color="red", fontsize=7, bbox={"facecolor": "white", "edgecolor": "none", "alpha": 0.8, "pad": 1.0})
 
 
 def _plane_figure(plt, s: SeaAnalysis, out: Path) -> None:
     fig, axes = plt.subplots(2, 2, figsize=(11, 8))
+    n = len(s.seeds)
     for row, boat in enumerate(("saoud_robot", "wille_yacht")):
         table = s.tables[boat]
         heatmap(plt, 100 * _pivot(table, "speed_rel"), axes[row, 0],
-                f"{boat}: steady speed in the sea vs calm (✓ |Δ| < {100 * DIFFERENCE:g} %)", "%",
-                lambda v: abs(v) < 100 * DIFFERENCE)
+                f"{boat}: steady speed in the sea vs calm, mean of {n} seeds\n"
+                f"(✓ holds within ±{100 * DIFFERENCE:g} %, ? undecided, else breaks)", "%")
         heatmap(plt, _pivot(table, "roll_sd_sea"), axes[row, 1],
-                f"{boat}: roll (heel's SD) in the sea (calm: {value_range(table['roll_sd_calm'], fmt='{:.2f}')}°)",
-                "deg")
-        for ax in axes[row]:
-            _mark_lost(plt, ax, table)
-    fig.suptitle("What the sea a wind raises does over the wind plane (× = no data)\nred hatch: the calm or "
-                 f"sea run lost its heading (heading error RMS > {HEADING_LOST_DEG:g}°)")
+                f"{boat}: roll (heel's SD) in the sea, mean of {n} seeds\n"
+                f"(calm: {value_range(table['roll_sd_calm'], fmt='{:.2f}')}°; ? its change undecided)", "deg")
+        _mark_cells(plt, axes[row, 0], table, "speed")
+        _mark_cells(plt, axes[row, 1], table, "roll_sd")
+    fig.suptitle("What the sea a wind raises does over the wind plane (× = no data); red hatch: seeds on "
+                 f"which the calm | sea run lost its heading\n(heading error RMS > {HEADING_LOST_DEG:g}°); "
+                 "each cell's mean over the seeds that kept it")
     save_figure(fig, out / SEA_FIGURES["plane"])
 
 
 def _series_figure(plt, s: SeaAnalysis, out: Path) -> None:
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4))
+    fig, axes = plt.subplots(1, 2, figsize=(11, 4.4))
     t1 = s.tables["table1"]
-    for sim, group in t1.groupby("sim"):
-        calm = float(group["roll_sd_calm"].iloc[0])
-        axes[0].plot([0.0, *group["hs"]], [calm, *group["roll_sd_sea"]], "o-", label=sim)
+    for k, (sim, group) in enumerate(t1.groupby("sim")):
+        calm = interval_of(group.iloc[0], "roll_sd_calm")
+        x = np.array([0.0, *group["hs"]]) + 0.03 * (k - 1)
+        kit_seeds.errorbar(axes[0], x, [calm, *(interval_of(r, "roll_sd_sea") for _, r in group.iterrows())],
+                           fmt="o-", label=sim)
     _mark_stops(axes[0], t1)
-    axes[0].set_title("Wille's roll controller (Table 1): roll, the heel's SD", fontsize=9)
+    axes[0].set_title(f"Wille's roll controller (Table 1): roll, the heel's SD\n(mean and 95 % interval, "
+                      f"{len(s.seeds)} seeds)", fontsize=9)
     sa = s.tables["saoud"]
-    for metric in ("roll_sd", "heel", "pitch_sd"):
-        axes[1].plot([0.0, *sa["hs"]], [float(sa[f"{metric}_calm"].iloc[0]), *sa[f"{metric}_sea"]], "o-",
-                     label=SAILING[metric][0].split(" (")[0])
+    for k, metric in enumerate(("roll_sd", "heel", "pitch_sd")):
+        calm = interval_of(sa.iloc[0], f"{metric}_calm")
+        x = np.array([0.0, *sa["hs"]]) + 0.03 * (k - 1)
+        kit_seeds.errorbar(axes[1], x, [calm, *(interval_of(r, f"{metric}_sea") for _, r in sa.iterrows())],
+                           fmt="o-", label=SAILING[metric][0].split(" (")[0])
     _mark_stops(axes[1], sa)
-    axes[1].set_title("Saoud's optimal sail (robot, beam reach)", fontsize=9)
+    axes[1].set_title("Saoud's optimal sail (robot, beam reach)\n(calm: one deterministic run)", fontsize=9)
     for ax in axes:
         ax.set_xlabel("significant wave height Hs [m] (0: calm water)")
         ax.set_ylabel("[deg]")
@@ -157,70 +231,80 @@ def _series_figure(plt, s: SeaAnalysis, out: Path) -> None:
 
 
 def _mark_stops(ax, table: pd.DataFrame) -> None:
-    """A red cross on the roll of each run in a sea that stopped early, a red circle where it
-    lost its heading."""
-    stopped = table[table["status"] != "ok"]
+    """A red cross on the roll of each case with a sea run that stopped early, a red circle where
+    a sea run lost its heading."""
+    stopped = table[table["stopped"] > 0]
     if len(stopped):
-        ax.scatter(stopped["hs"], stopped["roll_sd_sea"], marker="x", s=80, color="red", label="stopped early",
-                   zorder=3)
-    lost = table[table["lost_heading"].str.contains("sea")]
+        ax.scatter(stopped["hs"], stopped["roll_sd_sea"], marker="x", s=80, color="red",
+                   label="a seed stopped early", zorder=3)
+    lost = table[table["lost_sea"] > 0]
     if len(lost):
         ax.scatter(lost["hs"], lost["roll_sd_sea"], marker="o", s=120, facecolors="none", edgecolors="red",
-                   label="lost its heading", zorder=3)
+                   label="a seed lost its heading", zorder=3)
+
+
+def _at(row) -> str:
+    return f"{row['boat']} {row['case']}"
 
 
 def summary_sentence(s: SeaAnalysis) -> str:
-    """One sentence for the summary: the speed change over the wind plane, the roll, the stops,
-    the cases that lost their heading and the paths the differences take.
+    """One sentence for the summary: the speed change over the wind plane, the roll, the
+    verdicts, the runs that lost their heading and the paths the differences take, each with
+    its interval.
 
     Parameters
     ----------
     s : SeaAnalysis
         The sea's numbers.
     """
-    plane = pd.concat([s.tables["saoud_robot"], s.tables["wille_yacht"]])
-    kept = _kept(plane)
-    stopped = sum(int((t["status"] != "ok").sum()) for t in s.tables.values())
-    lost = sum(int((t["lost_heading"] != "").sum()) for t in s.tables.values())
-    runs = sum(len(t) for t in s.tables.values())
+    plane = _plane_cases(s)
+    low, high = _extreme(plane, "speed_rel", False), _extreme(plane, "speed_rel", True)
+    roll = _extreme(plane, "roll_sd_sea", True)
+    stopped = sum(int((t["status"] != "ok").sum()) for t in s.runs.values())
+    runs = sum(len(t) for t in s.runs.values())
+    cases = sum(len(t) for t in s.tables.values())
+    lost = lost_rate(s)
+    counts = _verdicts(s)
     taken = paths(s)
-    stops = f"{stopped} of {runs} runs in a sea stopped early, " if stopped else ""
-    return (f"In a sea, where the boat keeps its heading, the steady speed changes by "
-            f"{value_range(kept['speed_rel'], 100, '{:+.0f}')} % and the roll σ reaches "
-            f"{value_range(kept['roll_sd_sea'], fmt='{:.1f}').split(' … ')[-1]}°; {stops}"
-            f"{lost} of {runs} cases lost their heading; of {len(taken)} differences beyond "
-            f"{100 * DIFFERENCE:g} %, " + ", ".join(
-                f"{taken.count(p)} come by {PATH_WORDS[p]}" if p != "stalled"
-                else f"{taken.count(p)} not attributed (a rerun lost its heading)"
-                for p in PATH_WORDS if taken.count(p))
-            + " (sections \"The sea against calm water\", \"Where each difference comes from\").")
+    stops = f"{stopped} of {runs} runs stopped early; " if stopped else ""
+    speed = ("" if low is None else
+             f"steady speed {_percent(low, 'speed_rel')} to {_percent(high, 'speed_rel')}, roll σ up to "
+             f"{interval_of(roll, 'roll_sd_sea').fixed(1, 'deg')} (wind plane); ")
+    return (f"In a sea ({cases} cases × {len(s.seeds)} seeds, means with 95 % intervals): {speed}{stops}"
+            f"heading lost in {round(lost.mean * lost.n)} of {runs} runs, {lost.fixed(2)}; of the differences "
+            f"beyond ±{100 * DIFFERENCE:g} %, {counts['breaks']} break, {counts['holds']} hold, "
+            f"{counts['undecided']} undecided; of the {len(taken)} attributed, " + ", ".join(
+                f"{taken.count(p)} by {PATH_WORDS[p]}" if p not in ("stalled", "undecided")
+                else f"{taken.count(p)} {p}" for p in PATH_WORDS if taken.count(p)) + ".")
 
 
-def _stops(table: pd.DataFrame) -> str:
-    stopped = table[table["status"] != "ok"]
+def _stops(s: SeaAnalysis, series: str) -> str:
+    table = s.tables[series]
+    stopped = table[table["stopped"] > 0]
     if stopped.empty:
         return "Every run in a sea sailed to its end."
-    return f"{len(stopped)} of {len(table)} runs in a sea stopped early: " + "; ".join(
-        f"{row['case']}: {row['stopped'].splitlines()[0] if row['stopped'] else row['status']}"
-        for _, row in stopped.iterrows()) + "."
+    runs = s.runs[series]
+    why = runs[runs["status"] != "ok"]
+    return f"{int(why.shape[0])} of {len(runs)} runs in a sea stopped early: " + "; ".join(
+        f"{row['case']} seed {row['seed']}: {row['stopped'].splitlines()[0] if row['stopped'] else row['status']}"
+        for _, row in why.iterrows()) + "."
 
 
 def _plane_rows(s: SeaAnalysis) -> list[dict]:
     rows = []
     for boat in ("saoud_robot", "wille_yacht"):
-        t = _kept(s.tables[boat])
+        t = s.tables[boat]
+        kept = t[t["n_kept"] > 0]
         for metric, (label, unit, _) in SAILING.items():
-            rel = t[f"{metric}_rel"].to_numpy(dtype=float)
-            top = t.iloc[np.nanargmax(np.abs(rel))] if np.isfinite(rel).any() else None
+            kinds = [_verdict_kind(v) for v in kept[f"{metric}_verdict"]]
+            top = kept.loc[kept[f"{metric}_rel"].abs().idxmax()] if np.isfinite(kept[f"{metric}_rel"]).any() else None
             rows.append({
                 "boat": boat, "metric": f"{label} [{unit}]",
-                "calm": value_range(t[f"{metric}_calm"], fmt="{:.2f}"),
-                "in the sea": value_range(t[f"{metric}_sea"], fmt="{:.2f}"),
-                "change": value_range(t[f"{metric}_change"], fmt="{:+.2f}") + f" {unit}",
-                f"beyond ±{100 * DIFFERENCE:g} %": f"{int((np.abs(rel) > DIFFERENCE).sum())} of {len(t)}"
-                + f" ({len(s.tables[boat]) - len(t)} lost their heading)",
-                "largest": "—" if top is None else f"{100 * top[f'{metric}_rel']:+.0f} % at {top['case']}",
-                "the sea's path, each difference": mechanism_text(s, boat, metric)})
+                "calm (deterministic)": value_range(kept[f"{metric}_calm"], fmt="{:.2f}"),
+                f"breaks / holds / undecided (of {len(kept)} cases)":
+                    f"{kinds.count('breaks')} / {kinds.count('holds')} / {kinds.count('undecided')}",
+                "largest mean change": "—" if top is None else f"{_percent(top, f'{metric}_rel')} at {top['case']}",
+                "the sea's path, each that breaks": mechanism_text(s, boat, metric)})
     return rows
 
 
@@ -234,6 +318,31 @@ def _sea_state_rows(s: SeaAnalysis) -> list[dict]:
     return rows
 
 
+def method_text(s: SeaAnalysis) -> str:
+    """The sea's method line: the seeds and what they draw, the interval, the verdict rule, the
+    mechanism reruns' seeds and what the seeds cost.
+
+    Parameters
+    ----------
+    s : SeaAnalysis
+        The sea's numbers.
+    """
+    cost = s.cost
+    spent = cost.get("first", 0.0) + cost.get("mechanisms", 0.0)
+    return kit_seeds.method_line(
+        s.seeds, what="every number of a run in a sea",
+        extra=(f"The seed draws the sea's phases and frequencies and, in Table 1's runs, the gusts and "
+               "the wind's wander (the calm run of the same seed has the same gusts); the calm runs of the "
+               "wind plane and of Saoud's sail sail a steady wind from an exact start, so they are "
+               "deterministic: one run, paired with every seed. A case's difference is (sea − calm)/"
+               "max(|calm|, floor) seed by seed, over the seeds on which both runs keep their heading; "
+               f"its verdict: *holds* where its interval lies within ±{100 * DIFFERENCE:g} % (the calm-water "
+               f"value stands), *breaks* where it lies wholly beyond. The mechanism reruns run on the "
+               f"first {sea.MECHANISM_SEEDS} seeds only (section \"Where each difference comes from\"). Cost: "
+               f"{spent:,.0f} simulated seconds (a second in a sea counts {sea.SEA_COST:g}), of a budget of "
+               f"{cost.get('budget', sea.BUDGET):,.0f}."))
+
+
 def _plane_section(r, s: SeaAnalysis) -> None:
     components = int(s.tables["saoud_robot"]["n_components"].iloc[0])
     r.section("The sea against calm water: the wind plane", (
@@ -241,26 +350,33 @@ def _plane_section(r, s: SeaAnalysis) -> None:
         "wind raises, against the same run in calm water. The sea is fetch-limited JONSWAP (γ 3.3; "
         "Hs = 1.6e-3 χ^½ U10²/g, Tp = 0.2857 χ^⅓ U10/g, χ = g F/U10², each at most its fully "
         "developed value; Hasselmann et al. 1973, Shore Protection Manual 1984 eqs. 3-33, 3-34), "
-        "long-crested, the waves from the wind's bearing, seed 0, "
-        + f"{components} components"
-        + ". The fetch F: " + "; ".join(f"{b} {sea.FETCH[b] / 1000:g} km ({sea.FETCH_REASON[b]})"
-                                         for b in sea.FETCH) + "."))
+        f"long-crested, the waves from the wind's bearing, {components} components, one realisation "
+        "per seed. The fetch F: " + "; ".join(f"{b} {sea.FETCH[b] / 1000:g} km ({sea.FETCH_REASON[b]})"
+                                                 for b in sea.FETCH) + "."))
+    r.paragraph(method_text(s))
     r.table(_sea_state_rows(s))
     r.paragraph(
-        f"Each metric over the steady window (the last third of the run): a difference counts where "
-        f"|sea − calm| exceeds {100 * DIFFERENCE:g} % of the calm value, or of the floor where the calm "
-        "value is smaller (" + ", ".join(f"{label} {floor:g} {unit}" for label, unit, floor in SAILING.values())
-        + "; heel and drift angle as magnitudes). " + ROLL_TEXT + " " + _lost_text() + " The table's "
-        "ranges and counts are over the cases where both runs keep their heading. The last "
-        "column: how many of those differences the waves' forces on the hull explain, how many the "
-        "orbital flow at the foils, and how many either path makes alone (section \"Where each "
-        "difference comes from\").")
+        f"Each metric over the steady window (the last third of the run): the band is ±{100 * DIFFERENCE:g} % "
+        "of the calm value, or of the floor where the calm value is smaller (" + ", ".join(
+            f"{label} {floor:g} {unit}" for label, unit, floor in SAILING.values())
+        + "; heel and drift angle as magnitudes). " + ROLL_TEXT + " " + _lost_text() + " The table counts "
+        "the cases with a seed on which both runs keep their heading; the largest change is the case "
+        "mean's with its interval. The last column: how many of the differences that break the waves' "
+        "forces on the hull explain, how many the orbital flow at the foils, how many either path makes "
+        "alone, and how many stay undecided at the reruns' seeds (section \"Where each difference "
+        "comes from\").")
     r.table(_plane_rows(s))
-    r.paragraph(" ".join(f"{boat}: {_stops(s.tables[boat])} {_lost_list(s.tables[boat])}"
+    lost, lost_sea = lost_rate(s), lost_rate(s, "sea")
+    r.paragraph(f"Over every series (cases × seeds), {round(lost.mean * lost.n)} of {lost.n} runs in a sea lost their "
+                f"heading or sailed beside a calm run that lost it: {lost.fixed(2)} (the share with Wilson's 95 % "
+                f"interval); the run in the sea itself lost it in {round(lost_sea.mean * lost_sea.n)}: "
+                f"{lost_sea.fixed(2)}.")
+    r.paragraph(" ".join(f"{boat}: {_stops(s, boat)} {_lost_list(s.tables[boat])}"
                          for boat in ("saoud_robot", "wille_yacht")))
-    r.figure(SEA_FIGURES["plane"], "Steady speed in the sea against calm water, and the roll (the heel's "
-                                   "standard deviation) in the sea, over true wind angle × true wind speed; "
-                                   "hatched: a case that lost its heading")
+    r.figure(SEA_FIGURES["plane"], "Steady speed in the sea against calm water (✓ holds within the band, "
+                                   "? undecided), and the roll (the heel's standard deviation) in the sea, "
+                                   "each the mean over the seeds, over true wind angle × true wind speed; "
+                                   "hatched: a case with a seed that lost its heading")
 
 
 ROLL_TEXT = (
@@ -273,31 +389,34 @@ ROLL_TEXT = (
 def _lost_text() -> str:
     return (f"A run whose heading error RMS over the window exceeds {HEADING_LOST_DEG:g}° lost its heading "
             "(it turned head to wind and stalled, bore away, or yawed that far about its course): the "
-            "difference of such a case compares a boat sailing its course with one that is not, and is "
-            "marked, not counted.")
+            "difference on such a seed compares a boat sailing its course with one that is not, and is "
+            "left out of its case's numbers.")
 
 
 def _lost_list(table: pd.DataFrame) -> str:
-    lost = table[table["lost_heading"] != ""]
+    lost = table[(table["lost_calm"] > 0) | (table["lost_sea"] > 0)]
     if lost.empty:
-        return "Every case keeps its heading."
-    return (f"{len(lost)} of {len(table)} cases lost their heading: " + "; ".join(
-        f"{row['case']} ({row['lost_heading']}: heading error RMS {row['heading_rms_calm']:.0f}° calm, "
-        f"{row['heading_rms_sea']:.0f}° in the sea)" for _, row in lost.iterrows()) + ".")
+        return "Every case keeps its heading on every seed."
+    return (f"{len(lost)} of {len(table)} cases lost their heading on a seed: " + "; ".join(
+        f"{row['case']} (calm {row['lost_calm']}, sea {row['lost_sea']} of {row['n']} seeds; heading error RMS "
+        f"{interval_of({**row, 'n_kept': row['n']}, 'heading_rms_calm').fixed(0)}° calm, "
+        f"{interval_of({**row, 'n_kept': row['n']}, 'heading_rms_sea').fixed(0)}° in the sea)"
+        for _, row in lost.iterrows()) + ".")
 
 
 def _series_rows(table: pd.DataFrame, metrics: dict, first: list[str]) -> list[dict]:
     rows = []
     for _, row in table.iterrows():
         out = {c: row[c] for c in first}
-        out["Hs [m]"], out["Tp [s]"] = row["hs"], row["tp"]
+        out["Hs [m]"], out["Tp [s]"] = row["hs"], f"{row['tp']:.2f}"
         for metric, (label, unit, _) in metrics.items():
-            out[f"{label} [{unit}]"] = f"{row[f'{metric}_calm']:.2f} → {row[f'{metric}_sea']:.2f}"
-        out["heel's period in the sea [s]"] = f"{row['roll_period_sea']:.2f}"
-        stop = row["stopped"].splitlines()[0] if row["stopped"] else ""
-        out["run in the sea"] = "sailed to the end" if row["status"] == "ok" else f"stopped: {stop}"
-        if row["lost_heading"]:
-            out["run in the sea"] += f"; lost its heading ({row['lost_heading']})"
+            out[f"{label} [{unit}]"] = (f"{interval_of(row, f'{metric}_calm').fixed(2)} → "
+                                        f"{interval_of(row, f'{metric}_sea').fixed(2)}: {row[f'{metric}_verdict']}")
+        out["heel's period in the sea [s]"] = interval_of({**row, "n_kept": row["n"]}, "roll_period_sea").fixed(2)
+        note = "sailed to the end" if not row["stopped"] else f"stopped early on {row['stopped']} of {row['n']} seeds"
+        if row["lost_sea"] or row["lost_calm"]:
+            note += f"; lost its heading on {row['lost_sea']} (sea), {row['lost_calm']} (calm) of {row['n']} seeds"
+        out["runs in the sea"] = note
         rows.append(out)
     return rows
 
@@ -309,18 +428,20 @@ def _heights_text() -> str:
     per_root = 2.0 * math.pi / (PM_PEAK * math.sqrt(g * PM_HS))
     return (f"fully developed Pierson-Moskowitz seas: the wind that raises a sea of height Hs blows "
             f"U19.5 = (g Hs/{PM_HS:g})^½, its peak period Tp = 2π U19.5/({PM_PEAK:g} g) = {per_root:.2f} Hs^½ s "
-            f"(Stewart 2008 eqs. 16.29-16.33): {seas}; long-crested, seed 0")
+            f"(Stewart 2008 eqs. 16.29-16.33): {seas}; long-crested, one realisation per seed")
 
 
 def _series_sections(r, s: SeaAnalysis) -> None:
     table1_hs, _ = fully_developed_sea(TABLE1_WIND)
     t1 = s.tables["table1"]
     r.section("Wille's roll controller in a sea (Table 1)", (
-        f"Table 1's three simulations (6-DOF, seed 0, as built) in {_heights_text()}; the waves from "
+        f"Table 1's three simulations (6-DOF, as built) in {_heights_text()}; the waves from "
         f"the wind's bearing ({float(t1['wave_from_deg'].iloc[0]):g}°, beam seas from the windward side). "
         f"Table 1's own wind (U10 {TABLE1_WIND:g} m/s) would raise a fully developed sea of Hs {table1_hs:.2f} m. "
-        f"Calm: the Table 1 runs of the table above, run again with their heel and heading kept; each "
-        f"value calm → in the sea, over the last {TABLE1_WINDOW:g} s. The roll is the heel's standard "
+        f"Calm: the Table 1 runs of the table above on the same seeds (the same gusts and wander), run again "
+        f"with their heel and heading kept; each value calm → in the sea, over the last {TABLE1_WINDOW:g} s, "
+        f"the mean over {len(s.seeds)} seeds with its interval, and the verdict of the change against the "
+        f"±{100 * DIFFERENCE:g} % band. The roll is the heel's standard "
         "deviation (section \"The sea against calm water: the wind plane\"), not Table 1's roll "
         "amplitude; the heel's period is its mean zero-up-crossing period in the sea."))
     r.table(_series_rows(t1, TABLE1, ["sim"]))
@@ -328,19 +449,32 @@ def _series_sections(r, s: SeaAnalysis) -> None:
     r.section("Saoud's optimal sail in a sea", (
         f"The robot with Saoud's optimal sail (controller ``saoud``) holds its heading north, the wind "
         f"from {sea.SAOUD_WIND_FROM_DEG:g}° (a beam reach) at Saoud's {TRUE_WIND:g} m/s at the sail, in the same seas "
-        f"from the wind's bearing. Each value calm → in the sea, over the last third of the run. "
-        + _stops(sa)))
+        f"from the wind's bearing. Each value calm (one deterministic run) → in the sea (the mean over "
+        f"{len(s.seeds)} seeds with its interval), over the last third of the run, with the change's verdict. "
+        + _stops(s, "saoud")))
     r.table(_series_rows(sa, SAILING, []))
     r.figure(SEA_FIGURES["series"], "Roll (the heel's standard deviation) of Table 1's runs, and the robot's "
-                                    "heel, roll and pitch, against the sea's height")
+                                    "heel, roll and pitch, against the sea's height: means over the seeds "
+                                    "with their 95 % intervals")
+
+
+def _each(table: pd.DataFrame, column: str, scale: float = 1.0, decimals: int = 2, n_column: str = "n_kept") -> str:
+    """``column``'s mean with its interval in each row of ``table`` (times ``scale``), by its Hs."""
+    out = []
+    for _, row in table.iterrows():
+        got = interval_of({**row, "n_kept": row[n_column]}, column)
+        got = type(got)(scale * got.mean, scale * got.low, scale * got.high, got.n, got.method)
+        out.append(f"Hs {row['hs']:g} m: {got.fixed(decimals)}")
+    return ", ".join(out)
 
 
 def _resonance_section(r, s: SeaAnalysis) -> None:
-    g, res = constants.GRAVITY, s.resonance
+    res = s.resonance
     boats, seas = res["boats"].set_index("boat"), res["seas"]
     robot, yacht = boats.loc["saoud_robot"], boats.loc["wille_yacht"]
     sa, t1 = s.tables["saoud"], s.tables["table1"]
-    waves = g * sa["roll_period_sea"] ** 2 / (2.0 * math.pi)
+    slope = stats.Interval(float(seas["rms_slope"].mean()), float(seas["rms_slope_low"].min()),
+                           float(seas["rms_slope_high"].max()), len(s.seeds))
     r.section("Why a sea rolls the boats", (
         "Each boat's roll is a resonance the waves' slope drives. Its undamped period with sway free, "
         "T4 = 2π ((I_xx,G + A44 + z_G² m A22/(m + A22))/(ρ g V GM))^½ (z_G the CG's height above the "
@@ -349,30 +483,43 @@ def _resonance_section(r, s: SeaAnalysis) -> None:
         f"period, g T4²/2π, are {robot['wavelength']:.1f} m long for the robot "
         f"({robot['wavelength'] / robot['length']:.1f} hull lengths) and {yacht['wavelength']:.1f} m for the "
         f"yacht ({yacht['wavelength'] / yacht['length']:.1f} hull lengths). Sailing Saoud's beam reach in the seas, the "
-        f"robot's heel swings at a mean zero-up-crossing period of {_span(sa['roll_period_sea'])} s, "
-        f"{_span(sa['roll_period_sea'] / robot['t4'])} T4 (the sailing boat's roll is damped by keel, rudder and "
-        "sail, and the slope spectrum falls with frequency: both move the response below the undamped "
-        f"resonance): waves {_span(waves, '{:.1f}')} m long, "
-        f"{_span(waves / robot['length'], '{:.1f}')} hull lengths, the short waves of the spectrum's "
+        f"robot's heel swings at a mean zero-up-crossing period (s; mean over the seeds with its interval) of "
+        f"{_each(sa, 'roll_period_sea', n_column='n')}, in T4: "
+        f"{_each(sa, 'roll_period_sea', 1.0 / robot['t4'], n_column='n')} (the sailing boat's roll is damped by "
+        "keel, rudder and sail, and the slope spectrum falls with frequency: both move the response below "
+        "the undamped resonance); deep-water waves of that period, g T²/2π, are "
+        f"{_wavelengths(sa, robot['length'])} hull lengths long, the short waves of the spectrum's "
         "tail, where the long-wave model (a hull short against the wave it rides) is at the edge of its "
         "validity. A Pierson-Moskowitz sea has S(ω) = (5/16) Hs² ωp⁴ ω⁻⁵ exp(−1.25 (ωp/ω)⁴); with "
         "Tp = 4.99 Hs^½ the product Hs² ωp⁴ is the same for every height, so above the peak the spectrum "
         "and the slope spectrum (ω²/g)² S(ω) do not depend on Hs, and each of these seas is as steep as the "
         f"others. At the robot's roll frequency the slope spectrum is "
-        f"({_span(seas['slope_density'], scale=1e3)}) × 10⁻³ rad² s in the three seas and the RMS slope of the "
-        f"simulated components ({BAND[0]:g}-{BAND[1]:g} ωp) {_span(seas['rms_slope'], '{:.1f}')}°; the robot's "
-        f"roll σ is {_span(sa['roll_sd_sea'], '{:.1f}')}° in the seas run (" + ", ".join(
-            f"Hs {row['hs']:g} m: {row['roll_sd_sea']:.1f}°" for _, row in sa.iterrows()) + "). The yacht's resonance lies near the "
-        "smallest sea's peak: Tp/T4 = " + ", ".join(f"{row['tp_over_t4']:.2f} at Hs {row['hs']:g} m"
-                                                    for _, row in seas.iterrows())
-        + f"; the heel of Table 1's runs in the seas swings at {_span(t1['roll_period_sea'])} s, "
-        f"{_span(t1['roll_period_sea'] / yacht['t4'])} T4, and their roll σ is " + ", ".join(
-            f"{row['sim']} Hs {row['hs']:g} m: {row['roll_sd_sea']:.1f}° ({row['roll_sd_calm']:.1f}° calm)"
-            for _, row in t1.iterrows()) + "."))
+        f"({value_range(seas['slope_density'], 1e3, '{:.2f}')}) × 10⁻³ rad² s in the three seas and the RMS "
+        f"slope of the simulated components ({BAND[0]:g}-{BAND[1]:g} ωp) {slope.fixed(1)}° over the seeds' "
+        f"realisations; the robot's roll σ (deg) is {_each(sa, 'roll_sd_sea', decimals=1)}. The yacht's "
+        "resonance lies near the smallest sea's peak: Tp/T4 = " + ", ".join(
+            f"{row['tp_over_t4']:.2f} at Hs {row['hs']:g} m" for _, row in seas.iterrows())
+        + "; the heel of Table 1's runs in the seas swings at (s) " + "; ".join(
+            f"{sim}: {_each(group, 'roll_period_sea', n_column='n')}" for sim, group in t1.groupby("sim"))
+        + ", and their roll σ (deg, calm → sea) is " + "; ".join(
+            f"{row['sim']} Hs {row['hs']:g} m: {interval_of(row, 'roll_sd_calm').fixed(1)} → "
+            f"{interval_of(row, 'roll_sd_sea').fixed(1)}" for _, row in t1.iterrows()) + "."))
     r.table([{"Hs [m]": f"{row['hs']:g}", "Tp [s]": f"{row['tp']:.2f}", "yacht Tp/T4": f"{row['tp_over_t4']:.2f}",
               "robot ω4/ωp": f"{row['omega4_over_omegap']:.2f}",
               "slope spectrum at the robot's ω4 [rad² s]": f"{row['slope_density']:.2e}",
-              "RMS slope [deg]": f"{row['rms_slope']:.2f}"} for _, row in seas.iterrows()])
+              f"RMS slope [deg] (N={len(s.seeds)})": kit_seeds.row_interval(row, "rms_slope", len(s.seeds)).fixed(2)}
+             for _, row in seas.iterrows()])
+
+
+def _wavelengths(table: pd.DataFrame, length: float) -> str:
+    """Per Hs: the deep-water wave of each seed's heel period, in hull lengths, mean with its interval."""
+    g = constants.GRAVITY
+    out = []
+    for _, row in table.iterrows():
+        got = interval_of({**row, "n_kept": row["n"]}, "roll_period_sea")
+        waves = [g * t**2 / (2.0 * math.pi) / length for t in (got.mean, got.low, got.high)]
+        out.append(f"Hs {row['hs']:g} m: {waves[0]:.1f} (period's interval: {waves[1]:.1f}-{waves[2]:.1f})")
+    return ", ".join(out)
 
 
 def sections(r, s: SeaAnalysis) -> None:
