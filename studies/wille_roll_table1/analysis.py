@@ -1,5 +1,6 @@
-"""The numbers of the Table 1 runs: per run and seed means, reductions, the moment shares of
-Fig. 3 and the optima of Fig. 8."""
+"""The numbers of the Table 1 runs: per run, and over the seeds as means with 95 % intervals;
+the reductions paired by seed (law on against law off on the same gusts) and their verdicts; the
+moment shares of Fig. 3 and the optima of Fig. 8."""
 
 from __future__ import annotations
 
@@ -13,8 +14,11 @@ from sailmujoco.controllers.wille import lift_slope
 from sailmujoco.controllers.wille_roll import build_sail_tables
 
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.stats import Interval, pass_rate
 from sailmujoco.study import Results
 
+from ..kit import seeds as over
+from ..kit.verdict import TOLERANCE
 from ..kit.wille import BOAT, MOMENT_TERMS, TABLE1_WINDOW, table1_numbers
 from .scenario import (
     FIG8_WINDS,
@@ -22,14 +26,18 @@ from .scenario import (
     LAG_SWITCH_S,
     NAME,
     PAPER_TABLE1,
-    REALISATION_SEEDS,
-    SEEDS,
     SIMS,
     WITHIN,
     WORLDS,
     fig8_tables,
     jobs_for,
+    paper_sim,
+    realisation_seeds,
 )
+
+REDUCTION_BOUND = 0.60  # the paper's reductions (73 %, 93 %) reproduced: each at least 60 %
+LAW_SIMS = ("sim2", "sim2_mean", "sim3")  # the simulations with the roll law on
+BASES = ("sim1", "sim1_mean")  # the simulations with it off
 
 
 def reduction(before: dict, after: dict) -> float:
@@ -159,6 +167,44 @@ class RunTable:
         """
         return (case, world, sim, seed) in self.n
 
+    def values(self, world, sim, key) -> np.ndarray:
+        """One number of the headline runs, one per seed (in the order of :attr:`seeds`).
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+        sim : str
+            A key of :data:`SIMS`.
+        key : str
+            The number (a key of :func:`studies.kit.wille.table1_numbers`).
+
+        Returns
+        -------
+        numpy.ndarray
+            The values.
+        """
+        return np.array([self.get("main", world, sim, s)[key] for s in self.seeds], dtype=float)
+
+    def interval(self, world, sim, key) -> Interval:
+        """One number of the headline runs over the seeds: its mean with the 95 % interval.
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+        sim : str
+            A key of :data:`SIMS`.
+        key : str
+            The number.
+
+        Returns
+        -------
+        sailmujoco.stats.Interval
+            Mean [low, high] over the seeds.
+        """
+        return over.interval(self.values(world, sim, key))
+
     def mean(self, world, sim) -> dict:
         """The headline runs' numbers, averaged over the seeds.
 
@@ -177,25 +223,49 @@ class RunTable:
         values = [self.get("main", world, sim, s) for s in self.seeds]
         return {k: float(np.mean([v[k] for v in values])) for k in values[0]}
 
-    def span(self, world, sim, key) -> tuple[float, float]:
-        """The smallest and largest of one number over the headline seeds.
+    def reduction(self, world, base, sim, case="main", seeds=None) -> Interval:
+        """The share of the roll amplitude the law takes away, seed by seed on the same gusts
+        (1 - amplitude of ``sim`` / amplitude of ``base``), over the seeds.
 
         Parameters
         ----------
         world : str
             A key of :data:`WORLDS`.
-        sim : str
-            A key of :data:`SIMS`.
-        key : str
-            The number.
+        base, sim : str
+            The law-off and the law-on simulation.
+        case : str
+            The case of the law-on runs (the law-off runs are the same case where it ran them,
+            else the headline's).
+        seeds : sequence of int, optional
+            The seeds (the headline seeds if not given).
 
         Returns
         -------
-        tuple of float
-            (min, max).
+        sailmujoco.stats.Interval
+            Mean [low, high] of the per-seed reductions.
         """
-        values = [self.get("main", world, sim, s)[key] for s in self.seeds]
-        return min(values), max(values)
+        seeds = self.seeds if seeds is None else tuple(seeds)
+        before_case = case if all(self.has(case, world, base, s) for s in seeds) else "main"
+        cuts = [reduction(self.get(before_case, world, base, s), self.get(case, world, sim, s)) for s in seeds]
+        return over.interval(cuts)
+
+    def cut(self, world, base, sim) -> Interval:
+        """How many degrees of roll amplitude the law takes away, paired by seed (``base`` minus
+        ``sim`` on the same gusts).
+
+        Parameters
+        ----------
+        world : str
+            A key of :data:`WORLDS`.
+        base, sim : str
+            The law-off and the law-on simulation.
+
+        Returns
+        -------
+        sailmujoco.stats.Interval
+            Mean [low, high] of the per-seed differences (deg).
+        """
+        return over.paired(self.values(world, base, "roll_amplitude"), self.values(world, sim, "roll_amplitude"))
 
     def realisations(self) -> list[tuple[int, dict, dict]]:
         """(seed, sim 1, sim 3) of the paper world over the headline seeds and the extra
@@ -207,7 +277,7 @@ class RunTable:
             (seed, sim 1's numbers, sim 3's numbers).
         """
         cases = [("main", seed) for seed in self.seeds]
-        cases += [("realisations", seed) for seed in REALISATION_SEEDS]
+        cases += [("realisations", seed) for seed in realisation_seeds(self.seeds)]
         return [(seed, self.get(case, "paper", "sim1", seed), self.get(case, "paper", "sim3", seed))
                 for case, seed in cases if self.has(case, "paper", "sim3", seed)]
 
@@ -370,12 +440,12 @@ def analyse(results: Results, smoke: bool) -> Analysis:
         The numbers.
     """
     start = time.perf_counter()
-    jobs = jobs_for(smoke)
+    jobs = jobs_for(smoke, results.seeds)
     raw = dict(zip([job["key"] for job in jobs], results.jobs[NAME], strict=True))
     tables = {}
     for world in WORLDS:
         tables.update(fig8_tables(world, results.sweeps[f"fig8_sweep_{world}"]))
-    runs = RunTable(raw, (0,) if smoke else SEEDS)
+    runs = RunTable(raw, results.seeds)
     return Analysis(
         smoke=smoke, runs=runs, n_jobs=len(jobs), tables=tables,
         switch8=None if smoke else _switch8(raw),
@@ -387,9 +457,76 @@ def analyse(results: Results, smoke: bool) -> Analysis:
         froude_speed=math.sqrt(9.81 * get_boat(BOAT).hull.length))
 
 
+def table1_verdict(got: Interval, sim: str, key: str) -> str:
+    """A Table 1 number over seeds against the paper's: *holds* when its interval lies within
+    :data:`studies.kit.verdict.TOLERANCE` (10 %) of the paper's number, *breaks* when it lies
+    wholly outside that band, else *undecided at N seeds*.
+
+    Parameters
+    ----------
+    got : sailmujoco.stats.Interval
+        Ours over the seeds.
+    sim : str
+        A key of :data:`SIMS`.
+    key : str
+        A key of :data:`PAPER_TABLE1`'s entries.
+
+    Returns
+    -------
+    str
+        The verdict.
+    """
+    paper = PAPER_TABLE1[paper_sim(sim)][key]
+    return over.decide(got, paper, "within", band=TOLERANCE * abs(paper))
+
+
+@dataclass(frozen=True)
+class RollCut:
+    """What the roll law takes away in one world, law on against law off on the same gusts.
+
+    Parameters
+    ----------
+    cut : sailmujoco.stats.Interval
+        Roll amplitude off minus on (deg), paired by seed.
+    cut_verdict : str
+        Whether the law cuts the roll at all (the cut above 0).
+    reduction : sailmujoco.stats.Interval
+        The per-seed reduction 1 - on / off.
+    reduction_verdict : str
+        Whether it reaches :data:`REDUCTION_BOUND` (the paper's 73 % and 93 % reproduced).
+    """
+
+    cut: Interval
+    cut_verdict: str
+    reduction: Interval
+    reduction_verdict: str
+
+
+def roll_cut(r: RunTable, world: str, base: str, sim: str) -> RollCut:
+    """:class:`RollCut` of ``sim`` against ``base`` in ``world``.
+
+    Parameters
+    ----------
+    r : RunTable
+        The runs.
+    world : str
+        A key of :data:`WORLDS`.
+    base, sim : str
+        The law-off and the law-on simulation.
+
+    Returns
+    -------
+    RollCut
+        The cut, the reduction and their verdicts.
+    """
+    cut, red = r.cut(world, base, sim), r.reduction(world, base, sim)
+    return RollCut(cut, over.decide(cut, 0.0, "above"), red, over.decide(red, REDUCTION_BOUND, "above"))
+
+
 def headline(analysis: Analysis) -> dict:
-    """The headline numbers: Table 1's seed means and reductions, the Fig. 3 shares, the Fig. 8
-    optima per world, and (full mode) sim 3 over the gust realisations and the lag switch.
+    """The headline numbers: Table 1's seed means (with the roll amplitude's interval) and the
+    reductions paired by seed with their verdicts, the Fig. 3 shares, the Fig. 8 optima per
+    world, and (full mode) sim 3 over the gust realisations and the lag switch.
 
     Parameters
     ----------
@@ -399,19 +536,31 @@ def headline(analysis: Analysis) -> dict:
     Returns
     -------
     dict
-        ``{world}_{sim}_{quantity}``, ``{world}_reduction_{base}_{sim}``, ``{world}_share_...``,
-        ``{world}_fig8_optimum_deg_{U10}``, ``paper_sim3_...``, ``simulation_wall_time_s`` and
-        ``wall_time_s``.
+        ``{world}_{sim}_{quantity}`` (seed means; ``_low`` / ``_high`` the interval's ends for
+        the roll amplitude; ``_verdict`` each Table 1 number's against the paper's within
+        10 %), ``{world}_reduction_{base}_{sim}`` (the mean per-seed reduction,
+        with ``_low``, ``_high`` and ``_verdict`` against :data:`REDUCTION_BOUND`),
+        ``{world}_roll_cut_{base}_{sim}_deg`` (law off minus on, with ``_verdict``: the law
+        cuts the roll), ``{world}_share_...``, ``{world}_fig8_optimum_deg_{U10}``,
+        ``paper_sim3_...``, ``seeds``, ``simulation_wall_time_s`` and ``wall_time_s``.
     """
-    r, numbers = analysis.runs, {}
+    r, numbers = analysis.runs, {"seeds": len(analysis.runs.seeds)}
     for w in WORLDS:
-        means = {s: r.mean(w, s) for s in SIMS}
         for s in SIMS:
             for k in ("roll_amplitude", "max_roll_rate", "mean_surge", "mean_heel"):
-                numbers[f"{w}_{s}_{k}"] = means[s][k]
-        for base in ("sim1", "sim1_mean"):
-            for s in ("sim2", "sim2_mean", "sim3"):
-                numbers[f"{w}_reduction_{base}_{s}"] = reduction(means[base], means[s])
+                numbers[f"{w}_{s}_{k}"] = r.interval(w, s, k).mean
+            amp = r.interval(w, s, "roll_amplitude")
+            numbers[f"{w}_{s}_roll_amplitude_low"], numbers[f"{w}_{s}_roll_amplitude_high"] = amp.low, amp.high
+            for k in ("roll_amplitude", "max_roll_rate", "mean_surge"):
+                numbers[f"{w}_{s}_{k}_verdict"] = table1_verdict(r.interval(w, s, k), s, k)
+        for base in BASES:
+            for s in LAW_SIMS:
+                c = roll_cut(r, w, base, s)
+                key = f"{w}_reduction_{base}_{s}"
+                numbers.update({key: c.reduction.mean, f"{key}_low": c.reduction.low,
+                                f"{key}_high": c.reduction.high, f"{key}_verdict": c.reduction_verdict})
+                numbers[f"{w}_roll_cut_{base}_{s}_deg"] = c.cut.mean
+                numbers[f"{w}_roll_cut_{base}_{s}_verdict"] = c.cut_verdict
         for k in ("sail + restoring", "keel", "rudder + damping"):
             numbers[f"{w}_share_{k.replace(' + ', '_')}"] = analysis.shares[w][k]
         for wind in FIG8_WINDS:
@@ -422,9 +571,29 @@ def headline(analysis: Analysis) -> dict:
         numbers["paper_sim3_realisations"] = len(amps)
         numbers["paper_sim3_realisations_min"] = min(amps)
         numbers["paper_sim3_realisations_within"] = sum(a <= paper3 * (1 + WITHIN) for a in amps)
+        numbers["paper_sim3_realisations_within_high"] = realisations_within(r).high
         for seed in LAG_SEEDS:
             for t, n in r.lag(seed)[1:]:
                 numbers[f"paper_sim3_lag_{t:g}_seed{seed}_roll_amplitude"] = n["roll_amplitude"]
     numbers["simulation_wall_time_s"] = analysis.simulation_seconds
     numbers["wall_time_s"] = analysis.seconds
     return numbers
+
+
+def realisations_within(r: RunTable) -> Interval:
+    """The share of the paper world's gust realisations whose sim-3 roll amplitude lies within
+    :data:`WITHIN` of the paper's (at most 1 + WITHIN times it), with Wilson's interval.
+
+    Parameters
+    ----------
+    r : RunTable
+        The runs.
+
+    Returns
+    -------
+    sailmujoco.stats.Interval
+        k of n with its interval.
+    """
+    paper3 = PAPER_TABLE1["sim3"]["roll_amplitude"]
+    amps = [n3["roll_amplitude"] for _, _, n3 in r.realisations()]
+    return pass_rate(sum(a <= paper3 * (1 + WITHIN) for a in amps), len(amps))

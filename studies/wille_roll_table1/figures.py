@@ -1,4 +1,5 @@
-"""Figs. 3 and 5-8 reproduced, sim 3 over the gust realisations, and the study's CSV data."""
+"""Figs. 3 and 5-8 reproduced, Table 1 over the seeds with 95 % intervals, sim 3 over the gust
+realisations, and the study's CSV data."""
 
 from __future__ import annotations
 
@@ -12,22 +13,26 @@ from sailmujoco.controllers.wille_roll import PHI_D
 from sailmujoco.figures import legend_below, moment_unit
 
 from ..kit import save_figure, setup_matplotlib
+from ..kit import seeds as over
 from ..kit.wille import MOMENT_TERMS, TABLE1_DURATION, TABLE1_WIND, TABLE1_WINDOW
-from .analysis import Analysis, RunTable
+from .analysis import BASES, LAW_SIMS, REDUCTION_BOUND, Analysis, RunTable
 from .scenario import (
     FIG8_LABELS,
     FIG8_WINDS,
     LAG_SEEDS,
     PAPER_OPTIMUM_DEG,
+    PAPER_REDUCTION,
     PAPER_SAIL_LAG_S,
     PAPER_TABLE1,
-    REALISATION_SEEDS,
+    QUANTITIES,
     SAIL_FACTOR,
     SHARES_WIND,
     SIM_LABELS,
     SIMS,
     WITHIN,
     WORLDS,
+    paper_sim,
+    realisation_seeds,
 )
 
 SIM_STYLE = {"sim1": ("tab:blue", "-"), "sim1_mean": ("tab:blue", ":"), "sim2": ("tab:orange", "-"),
@@ -37,7 +42,9 @@ SIM_STYLE = {"sim1": ("tab:blue", "-"), "sim1_mean": ("tab:blue", ":"), "sim2": 
 FIGURES = {  # the figures' files, by name
     "5": "fig5_heel.png", "6": "fig6_p.png", "7": "fig7_p.png", "3": "fig3_moments.png",
     "8": "fig8_speed_vs_heel.png", "seeds": "fig5_seeds.png", "realisations": "sim3_realisations.png",
+    "intervals": "table1_intervals.png",
 }
+WORLD_STYLE = {"paper": ("tab:blue", "o"), "mujoco": ("tab:red", "s")}
 
 
 def figure_series(r: RunTable, out, plt, column, sims, number, title, ylabel) -> Path:
@@ -149,8 +156,9 @@ def figure_realisations(r: RunTable, out, plt) -> Path:
                      label=f"paper {paper:g}° ± {100 * WITHIN:.0f} %")
         axis.axhline(paper, color="tab:green", lw=1.0)
     reals = r.realisations()
-    for headline, marker, label in ((True, "o", "seeds 0-4 (Table 1 mean)"),
-                                    (False, "x", f"seeds {REALISATION_SEEDS[0]}-{REALISATION_SEEDS[-1]}")):
+    more = realisation_seeds(r.seeds)
+    for headline, marker, label in ((True, "o", f"seeds 0-{r.seeds[-1]} (Table 1)"),
+                                    (False, "x", f"seeds {more[0]}-{more[-1]}" if more else "")):
         pts = [(n1["mean_heel"], n3["roll_amplitude"]) for seed, n1, n3 in reals
                if (seed in r.seeds) == headline]
         if pts:
@@ -169,15 +177,68 @@ def figure_realisations(r: RunTable, out, plt) -> Path:
             pts = r.lag(seed, fast)
             if len(pts) > 1:
                 bx.plot([t for t, _ in pts], [n["roll_amplitude"] for _, n in pts], marker="o", ls=style,
-                        color=colour, label=f"seed {seed}, control at {50 if fast else 10} Hz")
+                        color=colour, label=f"seed {seed} alone, control at {50 if fast else 10} Hz")
     bx.set_xlim(left=0.0)
     bx.set_ylim(bottom=0.0)
     bx.set_xlabel(f"sail actuator lag T_λ [s] (paper {PAPER_SAIL_LAG_S:g} s)")
     bx.set_ylabel("sim 3: roll amplitude [deg]")
-    bx.set_title("sim 3's residual against the sail actuator's lag", fontsize=10)
+    bx.set_title("sim 3's residual against the sail actuator's lag\n(one seed per line: an illustration)",
+                 fontsize=10)
     bx.legend(fontsize=7, loc="upper left")
     fig.suptitle("Table 1, sim 3: what sets the remaining roll with perfect wind", fontsize=11)
     return save_figure(fig, out / FIGURES["realisations"])
+
+
+def figure_intervals(r: RunTable, out, plt) -> Path:
+    """Table 1 over the seeds: each number's mean with its 95 % interval per world against the
+    paper's, and the reductions paired by seed against the paper's and the 60 % bound.
+
+    Parameters
+    ----------
+    r : RunTable
+        The runs.
+    out : pathlib.Path
+        The study's folder.
+    plt : module
+        matplotlib.pyplot (:func:`studies.kit.setup_matplotlib`).
+
+    Returns
+    -------
+    pathlib.Path
+        The figure's file.
+    """
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8))
+    x = np.arange(len(SIMS))
+    for ax, (key, name) in zip(axes.ravel()[:3], QUANTITIES.items(), strict=True):
+        for k, world in enumerate(WORLDS):
+            colour, marker = WORLD_STYLE[world]
+            over.errorbar(ax, x + (k - 0.5) * 0.18, [r.interval(world, sim, key) for sim in SIMS], fmt=marker,
+                          color=colour, label=f"{WORLDS[world]}, N = {len(r.seeds)}")
+        ax.scatter(x, [PAPER_TABLE1[paper_sim(sim)][key] for sim in SIMS], marker="_", s=400, color="k",
+                   zorder=4, label="paper (one realisation)")
+        ax.set_xticks(x, [SIM_LABELS[sim].split(":")[0] + ("\n(mean wind)" if "mean" in sim else "") for sim in SIMS],
+                      fontsize=8)
+        ax.set_ylabel(name)
+    axes[0, 0].legend(fontsize=7)
+    ax = axes[1, 1]
+    pairs = [(b, s) for b in BASES for s in LAW_SIMS
+             if not (b == "sim1" and s == "sim2_mean" or b == "sim1_mean" and s == "sim2")]
+    x = np.arange(len(pairs))
+    for k, world in enumerate(WORLDS):
+        colour, marker = WORLD_STYLE[world]
+        got = [r.reduction(world, b, s) for b, s in pairs]
+        over.errorbar(ax, x + (k - 0.5) * 0.18, [type(g)(100 * g.mean, 100 * g.low, 100 * g.high, g.n) for g in got],
+                      fmt=marker, color=colour, label=WORLDS[world])
+    ax.scatter(x, [100 * PAPER_REDUCTION[paper_sim(s)] for _, s in pairs], marker="_", s=400, color="k", zorder=4,
+               label="paper")
+    ax.axhline(100 * REDUCTION_BOUND, color="k", lw=0.7, ls="--", label=f"{100 * REDUCTION_BOUND:.0f} %")
+    ax.set_xticks(x, [f"{b.replace('_mean', ' (mean)')} → {s.replace('_mean', ' (mean)')}" for b, s in pairs],
+                  fontsize=8)
+    ax.set_ylabel("roll amplitude reduction, per seed [%]")
+    ax.legend(fontsize=7)
+    fig.suptitle(f"Table 1 over {len(r.seeds)} gust realisations (seeds 0-{r.seeds[-1]}): means with 95 % "
+                 f"intervals, beam reach U10 = {TABLE1_WIND:g} m/s", fontsize=11)
+    return save_figure(fig, out / FIGURES["intervals"])
 
 
 def figure_moments(r: RunTable, out, plt) -> Path:
@@ -281,8 +342,12 @@ def write_data(analysis: Analysis, out: Path) -> None:
         table.to_csv(out / f"fig8_{variant}.csv", index=False)
     if analysis.switch8 is not None:
         analysis.switch8.to_csv(out / "fig8_paper_sail_switch.csv", index=False)
-    pd.DataFrame([{"case": k[0], "world": k[1], "sim": k[2], "seed": k[3], **v} for k, v in r.n.items()]
-                 ).sort_values(["case", "world", "sim", "seed"]).to_csv(out / "runs.csv", index=False)
+    rows = pd.DataFrame([{"case": k[0], "world": k[1], "sim": k[2], "seed": k[3], **v} for k, v in r.n.items()]
+                        ).sort_values(["case", "world", "sim", "seed"])
+    rows.to_csv(out / "runs.csv", index=False)
+    main = rows[rows["case"] == "main"]
+    over.over_seeds(main, ["world", "sim"], ["roll_amplitude", "max_roll_rate", "mean_surge", "mean_heel",
+                                             "wind_ce", "on"]).to_csv(out / "table1.csv", index=False)
     seed = r.median_seed()
     for world in WORLDS:
         for sim in SIMS:
@@ -308,6 +373,7 @@ def write(analysis: Analysis, out: Path) -> None:
                   "roll angle φ, all simulations", "φ [deg]")
     figure_series(r, out, plt, "p_deg_s", ("sim1", "sim2"), 6, "roll rate p, simulations 1 and 2", "p [deg/s]")
     figure_series(r, out, plt, "p_deg_s", ("sim2", "sim3"), 7, "roll rate p, simulations 2 and 3", "p [deg/s]")
+    figure_intervals(r, out, plt)
     figure_moments(r, out, plt)
     figure_fig8(analysis.tables, analysis.switch8, out, plt)
     if not analysis.smoke:
