@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from sailmujoco.controllers import factories
 
+from sailmujoco import stats
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.forces.wind import log_profile
 
@@ -19,6 +20,32 @@ L_PHI = (0.1, 1.0)  # m, the paper's two metacentric heights (Figs. 3-4)
 TRUE_WIND = 4.0  # m/s, §VII-B
 PHI_MAX_DEG = 30.0  # deg, the roll limit of S (§VII-B, Fig. 7)
 WIND_SOURCE = "saoud_v"  # what S and Bm read as the apparent wind (controllers.saoud.observed_apparent_wind)
+# deg, half-width of the start heading the seed draws (uniform, the task's own heading jitter).
+# Figs. 6-7 sail a steady wind from a fixed start, so without it every seed would run the same
+# trajectory and a verdict would follow the last bit of the arithmetic. Kept small: the paper
+# starts on heading 0.
+HEADING_JITTER_DEG = 2.0
+SEED_DRAWS = (f"The wind is steady (the paper's scenario); what a seed draws is the start heading, "
+              f"uniform within ±{HEADING_JITTER_DEG:g}° of heading 0 (the task's start jitter).")
+
+
+RATIO_DIGITS = 3  # significant digits of a ratio at least; more where its interval's ends need them
+
+
+def ratio_cell(got: stats.Interval, digits: int = RATIO_DIGITS) -> str:
+    """A ratio's ``mean [low, high]`` with the fewest significant digits (at least ``digits``, at
+    most 7) that tell its ends apart, so an interval that sits just above or below 1 shows it.
+
+    Parameters
+    ----------
+    got : sailmujoco.stats.Interval
+        The ratio over seeds.
+    digits : int
+        The fewest significant digits.
+    """
+    while digits < 7 and got.decided and got.low != got.high and f"{got.low:.{digits}g}" == f"{got.high:.{digits}g}":
+        digits += 1
+    return got.text(digits)
 
 
 def wind_speed_10(boat: str = BOAT, l_phi: float = 0.1, speed: float = TRUE_WIND) -> float:

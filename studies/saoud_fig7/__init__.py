@@ -11,7 +11,7 @@ from sailmujoco.study import Study
 from .analysis import analyse, headline
 from .figure import write
 from .report import report
-from .scenario import NAME, TITLE, VIDEO, more_runs, runs
+from .scenario import NAME, SEEDS, TITLE, VIDEO, more_runs, runs
 
 STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
-              headline=headline, more_runs=more_runs, video=VIDEO)
+              headline=headline, more_runs=more_runs, video=VIDEO, seeds=SEEDS)

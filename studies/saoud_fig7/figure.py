@@ -5,23 +5,23 @@ from __future__ import annotations
 from pathlib import Path
 
 import numpy as np
-import pandas as pd
 
 from sailmujoco.figures import legend_below
 
 from ..kit import save_figure, setup_matplotlib
 from ..kit.saoud import PHI_MAX_DEG, TRUE_WIND, WORLDS
+from ..kit.seeds import errorbar
 from .analysis import HELD_DEG, Analysis
 
 STYLE = {"S": dict(color="tab:blue", marker="o", label=f"S: optimal sail, $\\phi_{{max}}$ = {PHI_MAX_DEG:g}°"),
          "Bm": dict(color="tab:red", marker="s", label="Bm: Briere trimming (Fig. 5)"),
          "vel_max": dict(color="k", ls="--", marker=".", label="vel_max: best fixed sail")}
-GRID_COLUMNS = ["world", "l_phi", "angle", "sail_deg", "status", "speed", "heel", "heading_error_rms"]
+GRID_COLUMNS = ["world", "l_phi", "angle", "sail_deg", "seed", "status", "speed", "heel", "heading_error_rms"]
 
 
 def write(analysis: Analysis, out: Path) -> None:
-    """``fig7.csv`` (per angle, every law and check), ``vel_max_grid.csv`` (every fixed-sail
-    run) and ``fig7.png``.
+    """``fig7.csv`` (per angle, the means over the seeds), ``fig7_seeds.csv`` (per angle and seed),
+    ``vel_max_grid.csv`` (every fixed-sail run) and ``fig7.png``.
 
     Parameters
     ----------
@@ -32,23 +32,24 @@ def write(analysis: Analysis, out: Path) -> None:
     """
     out = Path(out)
     analysis.table.to_csv(out / "fig7.csv", index=False)
-    analysis.grid[GRID_COLUMNS].sort_values(["world", "l_phi", "angle", "sail_deg"]).to_csv(
+    analysis.per_seed.to_csv(out / "fig7_seeds.csv", index=False)
+    analysis.grid[GRID_COLUMNS].sort_values(["world", "l_phi", "angle", "sail_deg", "seed"]).to_csv(
         out / "vel_max_grid.csv", index=False)
-    plot(analysis.table, analysis.settings.l_phis, out / "fig7.png")
+    plot(analysis, out / "fig7.png")
 
 
-def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
-    """Fig. 7: steady speed of S, Bm and vel_max against ∠v_w^B, per world and l_φ.
+def plot(analysis: Analysis, path: Path) -> None:
+    """Fig. 7: steady speed of S, Bm and vel_max against ∠v_w^B, per world and l_φ: the mean over
+    the seeds with its 95 % interval.
 
     Parameters
     ----------
-    table : pandas.DataFrame
-        :func:`~.analysis.fig7_table`.
-    l_phis : sequence of float
-        The metacentric heights run [m].
+    analysis : Analysis
+        The study's numbers.
     path : pathlib.Path
         The PNG written.
     """
+    table, l_phis = analysis.table, analysis.settings.l_phis
     plt = setup_matplotlib()
     fig, axes = plt.subplots(len(l_phis), len(WORLDS), figsize=(5.5 * len(WORLDS), 3.8 * len(l_phis)),
                              squeeze=False, sharex=True)
@@ -58,7 +59,8 @@ def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
             ax = axes[row, col]
             g = table[(table["world"] == world) & (table["l_phi"] == l_phi)].sort_values("angle")
             for name in ("vel_max", "S", "Bm"):
-                ax.plot(g["angle"], g[name], ms=4, **STYLE[name])
+                errorbar(ax, g["angle"], [analysis.interval(world, l_phi, a, name) for a in g["angle"]],
+                         ms=4, **STYLE[name])
             for law in ("S", "Bm"):
                 if f"{law}_eq4" in g and g[f"{law}_eq4"].notna().any():
                     ax.plot(g["angle"], g[f"{law}_eq4"], ls=":", color=STYLE[law]["color"], lw=1.2,
@@ -86,6 +88,7 @@ def plot(table: pd.DataFrame, l_phis, path: Path) -> None:
                               "[deg]\n0 = dead run, 180 = head to wind")
             ax.set_ylabel("maximum velocity [m/s]")
     legend_below(fig, axes, ncol=3)
-    fig.suptitle(f"Saoud Fig. 7 (reproduced): steady speed at |v_w| = {TRUE_WIND:g} m/s (at the sail)")
+    fig.suptitle(f"Saoud Fig. 7 (reproduced): steady speed at |v_w| = {TRUE_WIND:g} m/s (at the sail); "
+                 f"mean of N = {len(analysis.seeds)} seeds, bars: its 95 % interval")
     save_figure(fig, path)
 
