@@ -510,3 +510,13 @@ def test_the_architecture_page_names_paths_that_exist():
     missing = sorted(path for path in _named_paths(ARCHITECTURE.read_text(encoding="utf-8"))
                      if not (REPO / path).exists())
     assert not missing, "docs/architecture.md names paths that do not exist:\n  " + "\n  ".join(missing)
+
+
+def test_every_package_of_the_source_ships_with_pip_install():
+    """pyproject.toml names its packages one by one: a new room left out of the list imports
+    in a source tree (and here, editable) but is missing after ``pip install .``."""
+    import tomllib
+
+    listed = set(tomllib.loads((REPO / "pyproject.toml").read_text())["tool"]["setuptools"]["packages"])
+    found = {name for name, (_, is_package) in MODULES.items() if is_package}
+    assert found - listed == set()
