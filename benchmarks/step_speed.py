@@ -93,7 +93,7 @@ def main() -> None:
     args = parser.parse_args()
     print(f"{'boat':12s} {'hydrostatics':12s} {'bare mj_step':>13s} {'step(1)':>9s} "
           f"{'ratio':>6s} {'step(20)':>9s} {'ratio':>6s}")
-    for boat in ("wille_yacht", "saoud_robot"):
+    for boat in ("wille_yacht", "saoud_robot", "viel_boat"):
         for hydrostatics in ("paper", "geometric"):
             for python_loop in ((False, True) if args.python_loop else (False,)):
                 r = measure(boat, hydrostatics, args.steps, args.integrator, python_loop, args.dofs)
