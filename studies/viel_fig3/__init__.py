@@ -12,7 +12,7 @@ from sailmujoco.study import Study
 from .analysis import analyse, headline
 from .figures import write
 from .report import report
-from .scenario import NAME, TITLE, VIDEO, runs
+from .scenario import NAME, SEEDS_N, TITLE, VIDEO, runs
 
 STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
-              headline=headline, video=VIDEO)
+              headline=headline, video=VIDEO, seeds=SEEDS_N)

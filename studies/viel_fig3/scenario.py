@@ -34,7 +34,14 @@ DEFAULT_START = (-30.0, 40.0)  # m, the task's default start
 STARTS = (DEFAULT_START, (30.0, 40.0), (0.0, 50.0), (-40.0, 0.0), (0.0, -40.0))
 SMOKE_STARTS = (DEFAULT_START, (0.0, 50.0))
 SWITCH_STARTS = (DEFAULT_START, (30.0, 40.0), (0.0, -40.0))  # the printed-rudder switch runs from these
-SEEDS = (0, 1)  # the task draws the start heading from the seed
+SEEDS_N = 3  # N: the seeds every world's task-start runs and the start grid run on (the task draws the
+# start heading from the seed, uniform over the compass); N = 3 decides the per-world verdicts within
+# the study's share of `study all` (see `simulated_seconds`)
+SWITCH_SEED = 0  # the switches and the heading-hold check run on this seed alone (diagnostics)
+SWITCH_CASES_6DOF = (1, 2, 6)  # the 6-DOF switches' cases: steady 10 m/s, steady 5 m/s, the widest swing
+RATE_BOUND = 0.5  # a claim made for every run "holds" for a world when the whole Wilson interval of
+# its pass rate lies above one half (it holds in most runs), "breaks" when the whole interval lies below
+WEIGHTS = {"paper": 0.2, "mujoco": 1.0}  # cost of a simulated second: paper world, 6-DOF in calm water
 VIEL_LENGTH = 4.0  # m, Viel's boat: Table 1 gives no length; ~2 p8 (G to rudder 2 m), a guess
 UNDER_WAY = {"heading_deg": 135.0, "surge": 1.5}  # compass deg, m/s: the first tack, under way
 TRAJECTORY_RATE = 2.0  # Hz, samples kept for the figures and the stop-based measures
@@ -67,15 +74,17 @@ worlds: Viel's own 3-DOF model (``paper``, Table 1 boat) and three 6-DOF MuJoCo 
 distance between sailboat and target remains lower than {PAPER_MAX_M:g} m after [it] has entered the
 target area".
 
-Runs: the task's start (-30, 40) m, 0.5 m/s on a heading drawn from seed 0, the paper's control
-period dt = {PAPER_DT:g} s (§5.1) in all three worlds, the paper's gains unchanged. The paper world's
+Runs: the task's start (-30, 40) m at 0.5 m/s on a heading the seed draws (uniform over the
+compass, as the task does), in every world on every seed; the paper's control period
+dt = {PAPER_DT:g} s (§5.1) in all worlds, the paper's gains unchanged. The paper world's
 rudder forces (eqs. 7-8) are read linear in the speed, as Table 1's unit of p5 (kg/s) and
 Jaulin's model it comes from have them (:func:`sailmujoco.reference.viel_model.rudder_forces`). The
-paper world also runs from five start positions and two headings (seeds 0, 1) on the sweep
-engine. One difference at a time is switched (paper world: eqs. 7-8 as printed with v², the
-suite's control period 0.1 s, no hull-wind term p1; 6-DOF boats: starting under way on the
-tack, a target circle scaled to the boat's length, and a PID heading-hold check of what the
-boat can sail in 5 and 10 m/s). These are diagnostics, not the paper's setup.
+paper world also runs from four more start positions on every seed. One difference at a time is
+switched, on seed {SWITCH_SEED} alone (paper world: eqs. 7-8 as printed with v², the suite's control
+period 0.1 s, no hull-wind term p1; 6-DOF boats in cases {", ".join(map(str, SWITCH_CASES_6DOF))}:
+starting under way on the tack, a target circle scaled to the boat's length; and a PID
+heading-hold check of what the boat can sail in 5 and 10 m/s). These are diagnostics, not the
+paper's setup, and give no verdict.
 """
 
 
@@ -140,8 +149,9 @@ def sweep_spec(key: str, cases, starts, seeds, duration: float) -> dict:
             "zip": {"task.case": [c for c, _ in pairs], "task.start": [s for _, s in pairs]}}
 
 
-def variant_specs(cases, switch_starts, duration: float) -> list[dict]:
-    """The switching experiments: paper world (rudder law, dt, p1) and 6-DOF (start, circles).
+def variant_specs(cases, switch_starts, duration: float, six_dof_cases=None) -> list[dict]:
+    """The switching experiments, on :data:`SWITCH_SEED`: paper world (rudder law, dt, p1) and
+    6-DOF (start, circles).
 
     Parameters
     ----------
@@ -151,17 +161,20 @@ def variant_specs(cases, switch_starts, duration: float) -> list[dict]:
         Start positions (m) of the printed-rudder switch.
     duration : float
         Run length [s].
+    six_dof_cases : sequence of int, optional
+        The cases of the 6-DOF switches (all of ``cases`` if not given).
     """
     specs = []
     scale = get_boat("wille_yacht").hull.length / VIEL_LENGTH
     for case in cases:
-        common = {"case": case, "duration": duration, "start": DEFAULT_START, "seed": 0}
+        common = {"case": case, "duration": duration, "start": DEFAULT_START, "seed": SWITCH_SEED}
         specs += [{**common, "variant": "dt_0.1", "world": "paper", "dt": 0.1},
                   {**common, "variant": "no_hull_wind", "world": "paper", "p1": 0.0}]
         for start in switch_starts:
             specs.append({**common, "start": start, "variant": "printed_rudder", "world": "paper",
                           "rudder_law": "printed"})
-        specs.append({**common, "variant": "baseline", "world": "viel_boat"})  # the Fig. 3 column
+        if six_dof_cases is not None and case not in six_dof_cases:
+            continue
         for boat in ("viel_boat", "wille_yacht", "saoud_robot"):
             specs.append({**common, "variant": "under_way", "world": boat, **UNDER_WAY})
         specs.append({**common, "variant": "under_way_scaled", "world": "wille_yacht", "scale": scale,
@@ -178,41 +191,92 @@ def capability_specs(duration: float) -> list[dict]:
         Run length [s].
     """
     return [{"kind": "heading_hold", "variant": "pid_heading_hold", "world": boat, "wind_speed": speed,
-             "desired_heading_deg": 135.0, "duration": duration}
+             "desired_heading_deg": 135.0, "duration": duration, "seed": SWITCH_SEED}
             for boat in ("wille_yacht", "saoud_robot") for speed in (5.0, 10.0)]
 
 
-def switch_specs(smoke: bool) -> list[dict]:
-    """Every job of :func:`.switches.simulate`: the switches and the heading-hold check.
+def viel_boat_specs(cases, seeds, duration: float) -> list[dict]:
+    """viel_boat's Fig. 3 column: the task's start in every case on every seed, run through
+    :func:`.switches.simulate` (which also samples what the boat does).
+
+    Parameters
+    ----------
+    cases : sequence of int
+        Wind cases.
+    seeds : sequence of int
+        Seeds (the start heading).
+    duration : float
+        Run length [s].
+    """
+    return [{"case": case, "duration": duration, "start": DEFAULT_START, "seed": int(seed),
+             "variant": "baseline", "world": "viel_boat"} for seed in seeds for case in cases]
+
+
+def switch_specs(smoke: bool, seeds=(0,)) -> list[dict]:
+    """Every job of :func:`.switches.simulate`: viel_boat's column on every seed, the switches and
+    the heading-hold check (on :data:`SWITCH_SEED`).
 
     Parameters
     ----------
     smoke : bool
         The study's short pass: the cheap paper-world switches in case 1 only.
+    seeds : sequence of int
+        The seeds of viel_boat's column.
     """
-    specs = (variant_specs(cases(smoke), (DEFAULT_START,) if smoke else SWITCH_STARTS, duration(smoke))
+    specs = (viel_boat_specs(cases(smoke), seeds, duration(smoke))
+             + variant_specs(cases(smoke), (DEFAULT_START,) if smoke else SWITCH_STARTS, duration(smoke),
+                             None if smoke else SWITCH_CASES_6DOF)
              + capability_specs(SMOKE_CAPABILITY_DURATION if smoke else CAPABILITY_DURATION))
     if smoke:  # one case is enough to exercise the cheap paper-world switches
         specs = [s for s in specs if not (s.get("variant") in ("dt_0.1", "no_hull_wind") and s["case"] != 1)]
     return specs
 
 
-def runs(smoke: bool) -> Runs:
-    """The study's runs: each swept world's episodes, a sweep stored in ``sweeps/<world>`` (its
-    records, with their 2 Hz trajectories, are ``Results.records``), and the switching experiments.
+def runs(smoke: bool, seeds=(0,)) -> Runs:
+    """The study's runs: each swept world's episodes on every seed, a sweep stored in
+    ``sweeps/<world>`` (its records, with their 2 Hz trajectories, are ``Results.records``), and
+    the jobs of :func:`switch_specs`.
 
     Parameters
     ----------
     smoke : bool
-        The study's short pass (cases 1-2, 60 s, two starts, seed 0).
+        The study's short pass (cases 1-2, 60 s, two starts).
+    seeds : sequence of int
+        The seeds (the start heading) of every world's task-start runs and the start grid.
     """
     starts = SMOKE_STARTS if smoke else STARTS
-    seeds = (0,) if smoke else SEEDS
     specs = {"paper": sweep_spec("paper", cases(smoke), starts, seeds, duration(smoke)),
-             "wille_yacht": sweep_spec("wille_yacht", cases(smoke), [DEFAULT_START], [0], duration(smoke)),
-             "saoud_robot": sweep_spec("saoud_robot", cases(smoke), [DEFAULT_START], [0], duration(smoke))}
+             "wille_yacht": sweep_spec("wille_yacht", cases(smoke), [DEFAULT_START], seeds, duration(smoke)),
+             "saoud_robot": sweep_spec("saoud_robot", cases(smoke), [DEFAULT_START], seeds, duration(smoke))}
     return Runs(sweeps=tuple((spec, sweep_folder(key)) for key, spec in specs.items()),
-                jobs={SWITCHES_JOB: (f"{__package__}.switches:simulate", switch_specs(smoke))})
+                jobs={SWITCHES_JOB: (f"{__package__}.switches:simulate", switch_specs(smoke, seeds))})
+
+
+def simulated_seconds(smoke: bool, seeds) -> dict:
+    """What the study's runs cost, counted from their lists (deterministic, unlike wall time):
+    simulated seconds, weighted by :data:`WEIGHTS` (a 6-DOF second counts 1, a paper-world second
+    0.2), for the headline runs (every seed) and the switches (one seed).
+
+    Parameters
+    ----------
+    smoke : bool
+        The study's short pass.
+    seeds : sequence of int
+        The seeds.
+    """
+    r = runs(smoke, tuple(seeds))
+    headline_cost = 0.0
+    for spec, _ in r.sweeps:
+        n = len(spec["zip"]["task.case"]) * len(spec["seeds"])
+        headline_cost += n * spec["duration"] * WEIGHTS[spec["world"]]
+    switch_cost = 0.0
+    for job in r.jobs[SWITCHES_JOB][1]:
+        weight = WEIGHTS["paper" if job["world"] == "paper" else "mujoco"]
+        if job.get("variant") == "baseline":
+            headline_cost += job["duration"] * weight
+        else:
+            switch_cost += job["duration"] * weight
+    return {"headline": headline_cost, "switches": switch_cost, "total": headline_cost + switch_cost}
 
 
 def sweep_folder(key: str) -> str:
