@@ -98,13 +98,13 @@ def test_the_robots_righting_curve_is_in_newton_metres(monkeypatch, tmp_path):
 
 
 def test_polar_figures_say_where_the_wind_comes_from(monkeypatch, tmp_path):
-    from sailmujoco.design import polar
+    from sailmujoco.design import polar, polar_compare
 
     frame = pd.DataFrame({"tws": [2.0] * 4 + [4.0] * 4, "twa": [45.0, 90.0, 135.0, 180.0] * 2,
                           "speed": [0.3, 0.5, 0.4, 0.35, 0.6, 0.9, 0.8, 0.7]})
     saved = _captured(monkeypatch)
     polar.plot_polar(frame, tmp_path / "p.png", "robot")
-    polar.plot_comparison({"saoud": frame, "best": frame.assign(speed=frame["speed"] * 1.1)},
+    polar_compare.plot_comparison({"saoud": frame, "best": frame.assign(speed=frame["speed"] * 1.1)},
                           tmp_path / "c.png", "robot")
     texts = [t.get_text() for t in saved[0][1].axes[0].texts]
     assert any("true wind\nfrom 0°" in t for t in texts)

@@ -4,7 +4,7 @@ import pandas as pd
 import pytest
 
 from sailmujoco.cli.main import main
-from sailmujoco.design import polar
+from sailmujoco.design import polar, polar_compare
 
 
 def test_best_vmg_picks_the_right_angles():
@@ -28,9 +28,9 @@ def test_comparison_summary_by_twa_band():
         "briere": pd.DataFrame({"tws": [2.0] * 3 + [4.0] * 4, "twa": twa[:3] + twa,
                                 "speed": [0.25, 0.40, 0.50, 0.60, 0.50, 0.60, 0.25]}),
     }
-    table = polar.comparison_table(frames)
+    table = polar_compare.comparison_table(frames)
     assert len(table) == 8 and table["briere"].isna().sum() == 1
-    summary = polar.ratio_summary(table).set_index(["controller", "band"])
+    summary = polar_compare.ratio_summary(table).set_index(["controller", "band"])
     s = summary.loc[("saoud", "close-hauled")]  # 0.45/0.50 = 0.9 at 2 m/s, 0.30/0.60 = 0.5 at 4 m/s
     assert (s["ratio_min"], s["ratio_max"]) == pytest.approx((0.5, 0.9))
     assert (s["min_tws"], s["min_twa"], s["min_speed"], s["min_best"]) == (4.0, 45.0, 0.30, 0.60)
@@ -43,10 +43,10 @@ def test_comparison_summary_by_twa_band():
     s = summary.loc[("briere", "running")]  # only 4 m/s: 0.25/0.50
     assert (s["ratio_min"], s["ratio_max"], s["min_tws"]) == pytest.approx((0.5, 0.5, 4.0))
     assert summary.loc[("briere", "close-hauled"), "ratio_min"] == pytest.approx(0.5)  # 0.25/0.5
-    text = polar.comparison_markdown(table, polar.ratio_summary(table), "sailmujoco polar x")
+    text = polar_compare.comparison_markdown(table, polar_compare.ratio_summary(table), "sailmujoco polar x")
     assert "| saoud | close-hauled | 45-45 | 0.50 (4 m/s, 45°: 0.30 / 0.60 m/s) | 0.90 (2 m/s, 45°" in text
     assert "| 2 | 180 | 0.40 | 0.40 | — | 1.00 | — |" in text  # the point briere did not finish
-    assert polar.ratio_summary(polar.comparison_table({"saoud": frames["saoud"]})).empty
+    assert polar_compare.ratio_summary(polar_compare.comparison_table({"saoud": frames["saoud"]})).empty
 
 
 def test_polar_command_writes_figure_and_csv(tmp_path, capsys):

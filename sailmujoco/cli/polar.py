@@ -13,16 +13,13 @@ from ..boat.catalogue import boat_label, get_boat
 from ..design.polar import (
     STEADY_WINDOW_S,
     best_vmg,
-    comparison_markdown,
-    comparison_table,
     finished_points,
     first_failure,
     over_seeds,
-    plot_comparison,
     plot_polar,
-    ratio_summary,
     sweep_table,
 )
+from ..design.polar_compare import comparison_markdown, comparison_table, plot_comparison, ratio_summary
 from ..options import World, choices
 from ..sweep import controller_label
 from .arguments import (

@@ -16,7 +16,8 @@ from sailmujoco.figures import robust_limits
 
 from ..kit import save_figure, setup_matplotlib
 from ..kit import seeds as over
-from .analysis import Analysis, judge_points, steady_cases
+from .analysis import Analysis, judge_points
+from .headline_numbers import steady_cases
 from .scenario import BOATS, BUILT, SPEED_HOLDS
 
 FIGURES = {"wind_plane": "wind_plane.png", "phi_star": "phi_star_vs_heel.png", "effects": "effects.png"}
@@ -162,7 +163,13 @@ def _effects_figure(plt, a: Analysis, out: Path) -> None:
 
 
 def over_intervals(points: pd.DataFrame) -> list:
-    """The speed difference's interval at each point of a table of points."""
+    """The speed difference's interval at each point of a table of points.
+
+    Parameters
+    ----------
+    points : pandas.DataFrame
+        Wind-plane points over seeds, with ``speed_rel`` and its interval columns.
+    """
     return [over.row_interval(r, "speed_rel") for _, r in points.iterrows()]
 
 

@@ -23,15 +23,17 @@ from .analysis import (
     PHI_STAR_HOLDS_DEG,
     Analysis,
     combined,
-    course_numbers,
     judge_points,
+    tally,
+)
+from .headline_numbers import (
+    course_numbers,
     lateral_numbers,
     numbers,
     roll_over_yaw,
     sailing,
     steady_cases,
     switch_points,
-    tally,
 )
 from .scenario import BOATS, BUILT, HEEL_HOLDS_DEG, SPEED_FLOOR, SPEED_HOLDS
 
@@ -66,7 +68,7 @@ VERDICT_KEYS = ("ct", "four_dof", "roll_speed", "roll_moments", "sheeted", "smal
 
 
 def headline(analysis: Analysis) -> dict:
-    """The headline numbers (:func:`.analysis.numbers`), each row's verdict (``verdict_<row>``:
+    """The headline numbers (:func:`.headline_numbers.numbers`), each row's verdict (``verdict_<row>``:
     *holds*, *breaks* or *undecided at N seeds*) and the number of rows of the table.
 
     Parameters
@@ -81,7 +83,13 @@ def headline(analysis: Analysis) -> dict:
 
 
 def where(row) -> str:
-    """``"(tws m/s, twa°)"`` of a point's row."""
+    """``"(tws m/s, twa°)"`` of a point's row.
+
+    Parameters
+    ----------
+    row : mapping or pandas.Series
+        A wind-plane point, with ``tws`` [m/s] and ``twa`` [deg].
+    """
     return f"({row['tws']:g} m/s, {row['twa']:g}°)"
 
 
