@@ -106,7 +106,7 @@ from .finite_wing import (
     FB_SAIL_SLOPE,
 )
 from .hull_foils import hull_foil_force, point_flow
-from .hydrostatics import geometric_buoyancy, paper_restoring
+from .hydrostatics import hull_buoyancy, paper_restoring
 from .kernel_arguments import with_parameters
 from .resistance import residuary_surge_force
 from .sail import sail_force
@@ -350,7 +350,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     mode = P[P_HYDRO_MODE]
     water_dz, water_dpitch = 0.0, 0.0  # the water's heave and pitch rates at the hull (a sea)
     if mode == 2.0:
-        diag[D_SUBMERGED] = geometric_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
+        diag[D_SUBMERGED] = hull_buoyancy(qpos[2], R, columns, P[P_RHO_W], P[P_G], wrench)
         if waves and P[sb + SB_HULL] > 0.0:  # + the sea's part, on the coarse grid (forces/sea_hull.py)
             added[0], added[1], added[2] = P[P_A1], P[P_A2], P[P_A3]
             nx, ny = int(P[sb + SB_NX]), int(P[sb + SB_NY])

@@ -73,6 +73,65 @@ def submerged_volume(pos_z, rot, columns):
     return vol, qx, qy, qz
 
 
+@kernel(reassociate=True)
+def upright_submerged_volume(pos_z, rot, columns):
+    """:func:`submerged_volume` of a hull not upside down (R22 >= 1e-12), summed on vector lanes.
+
+    The same cut of each column, written without branches (a dry column adds zeros) and with
+    its four sums left to the compiler's order, so that the loop over the columns runs on
+    vector registers: within a few units in the last place of the ordered sum (at most about
+    1e-14 of the volume). Other attitudes go to :func:`submerged_volume`.
+
+    Parameters
+    ----------
+    pos_z : float
+        World height of CO (z up, water plane z = 0), m.
+    rot : numpy.ndarray, shape (3, 3)
+        Rotation body -> world (body FLU, world ENU).
+    columns : numpy.ndarray, shape (5, n)
+        The hull's vertical columns in body coordinates, rows (x, y, area, z_bottom, z_top).
+
+    Returns
+    -------
+    vol, qx, qy, qz : float
+        V (m^3) and its first moment about CO along body x, y, z (m^4).
+    """
+    r22 = rot[2, 2]
+    if not r22 >= 1e-12:
+        return submerged_volume(pos_z, rot, columns)
+    r20, r21 = rot[2, 0], rot[2, 1]
+    vol = 0.0
+    qx = 0.0
+    qy = 0.0
+    qz = 0.0
+    for k in range(columns.shape[1]):
+        x = columns[0, k]
+        y = columns[1, k]
+        zb = columns[3, k]
+        hi = min(columns[4, k], -(pos_z + r20 * x + r21 * y) / r22)  # wet below body z_w
+        dv = columns[2, k] * max(hi - zb, 0.0)
+        vol += dv
+        qx += dv * x
+        qy += dv * y
+        qz += dv * (zb + hi)
+    return vol, qx, qy, 0.5 * qz
+
+
+@kernel
+def hull_buoyancy(pos_z, rot, columns, rho, g, out):
+    """:func:`geometric_buoyancy` with the column sums of :func:`upright_submerged_volume`
+    (the force kernel's calm-water hydrostatics); returns the submerged volume.
+
+    Parameters
+    ----------
+    pos_z, rot, columns, rho, g, out
+        As :func:`geometric_buoyancy`.
+    """
+    vol, qx, qy, qz = upright_submerged_volume(pos_z, rot, columns)
+    buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
+    return vol
+
+
 @kernel
 def geometric_buoyancy(pos_z, rot, columns, rho, g, out):
     """Buoyancy wrench (body frame, about CO) into ``out``; returns the submerged volume.

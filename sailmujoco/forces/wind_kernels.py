@@ -14,6 +14,7 @@ import math
 import numpy as np
 
 from ..jit.kernel import kernel
+from .lane_math import SINCOS_RANGE, sincos
 
 
 @kernel
@@ -36,8 +37,17 @@ def gust_cosines(t, frequency, phase, cache):
     if cache[0] == t:
         return
     two_pi_t = 2.0 * math.pi * t
-    for k in range(frequency.shape[0]):
-        cache[1 + k] = math.cos(two_pi_t * frequency[k] + phase[k])
+    n = frequency.shape[0]
+    bound = 0.0  # the largest argument's size bound: the polynomial cosine's range
+    for k in range(n):
+        bound = max(bound, abs(two_pi_t * frequency[k]) + abs(phase[k]))
+    if bound < SINCOS_RANGE:  # on vector lanes (forces/lane_math.py: within 2 ulp of math.cos)
+        for k in range(n):
+            c, _ = sincos(two_pi_t * frequency[k] + phase[k])
+            cache[1 + k] = c
+    else:
+        for k in range(n):
+            cache[1 + k] = math.cos(two_pi_t * frequency[k] + phase[k])
     cache[0] = t
 
 
