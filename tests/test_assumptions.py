@@ -179,7 +179,7 @@ def test_study_smoke(tmp_path):
     assert layout_problems(report) == []  # title, summary, main table
     assert report.count("\n| ") >= 10 and (tmp_path / "wind_plane.png").stat().st_size > 30_000
     # the sea: its sections, each with a table, its CSVs, its figures
-    from sailmujoco.studies.assumptions.sea_analysis import SAILING, TABLE1
+    from sailmujoco.studies.assumptions.sea_cases import SAILING, TABLE1
 
     sections = ["The sea against calm water: the wind plane", "Wille's roll controller in a sea (Table 1)",
                 "Saoud's optimal sail in a sea", "Why a sea rolls the boats",
@@ -282,7 +282,7 @@ def test_fully_developed_seas_of_a_height():
 
 
 def test_differences_are_relative_to_calm_or_to_the_floor():
-    from sailmujoco.studies.assumptions.sea_analysis import TABLE1, compare
+    from sailmujoco.studies.assumptions.sea_cases import TABLE1, compare
 
     calm = [{"status": "ok", "stopped": "", "roll_sd": 0.2, "surge": 4.0, "heel": 10.0, "heading_rms": 2.0}]
     sea_ = [{"status": "stopped", "stopped": "capsized", "roll_sd": 0.5, "surge": 3.0, "heel": 10.5,
@@ -335,7 +335,7 @@ def test_attribution_names_the_switch_that_removes_the_difference():
     largest of each series and metric marked; the mechanism whose switch brings the metric back
     to calm on every seed (its share's interval wholly above one half) is named; none where the
     share's interval straddles one half or no switch removes half."""
-    from sailmujoco.studies.assumptions.sea_analysis import attribute, differing_cases, largest_cases
+    from sailmujoco.studies.assumptions.sea_attribution import attribute, differing_cases, largest_cases
 
     verdicts = {m: ["holds"] * 4 for m in ("speed", "heel", "drift", "pitch_sd")}
     table = pd.DataFrame({"case_index": [0, 1, 2, 3], "n_kept": [3, 3, 3, 0],
@@ -370,7 +370,7 @@ def test_a_difference_takes_the_path_whose_switch_removes_it():
     the lost one alone makes at least half (both off is the calm boat); where an interval
     straddles one half, the path is undecided."""
     from sailmujoco.studies.assumptions import sea_mechanisms
-    from sailmujoco.studies.assumptions.sea_analysis import path_taken
+    from sailmujoco.studies.assumptions.sea_attribution import path_taken
 
     from sailmujoco import stats
 

@@ -2,14 +2,16 @@
 and what it costs the controller.
 
 The study, in the order it runs: :mod:`.scenario` (the boats, the switches, the runs as data,
-the seeds each part runs on; its ``ABOUT`` lists the scenarios in the report), :mod:`.episodes`
-(the single scenarios and the time constants), :mod:`.analysis` (the wind plane, each switch's
-effect seed by seed, the headline numbers), :mod:`.figures` (figures and CSV data), :mod:`.table`
-(one row per assumption) and :mod:`.report` (report.md). What a sea does to the boats:
-:mod:`.sea` (its runs; :func:`.sea.runs` is the study's first pass, the calm runs of
-:func:`.scenario.runs` with the sea's, every part on the study's seeds), :mod:`.sea_analysis`
-(against calm water, and the mechanism behind each difference) and :mod:`.sea_report` (its
-files and sections).
+the seeds each part runs on; its ``ABOUT`` lists the scenarios in the report), :mod:`.durations`
+(how long the single scenarios sail, and their cost), :mod:`.episodes` (the single scenarios and
+the time constants), :mod:`.analysis` (the wind plane, each switch's effect seed by seed),
+:mod:`.headline_numbers` (the numbers read off it), :mod:`.figures` (figures and CSV data),
+:mod:`.table` (one row per assumption) and :mod:`.report` (report.md). What a sea does to the
+boats: :mod:`.sea` (its runs; :func:`.sea.runs` is the study's first pass, the calm runs of
+:func:`.scenario.runs` with the sea's, every part on the study's seeds), :mod:`.sea_cases`
+(against calm water, case by case), :mod:`.sea_attribution` (the mechanism behind each
+difference), :mod:`.sea_analysis` (the mechanism reruns and the whole), :mod:`.sea_figures`
+(its files and figures), :mod:`.sea_mechanisms` and :mod:`.sea_report` (its sections).
 """
 
 from sailmujoco.study import Study
@@ -19,7 +21,8 @@ from .analysis import analyse
 from .report import report
 from .scenario import NAME, SEEDS, TITLE, VIDEO
 from .sea_analysis import mechanism_runs
-from .sea_report import headline, write
+from .sea_figures import write
+from .sea_report import headline
 
 STUDY = Study(name=NAME, title=TITLE, runs=sea.runs, analyse=analyse, write=write, report=report,
               headline=headline, more_runs=mechanism_runs, video=VIDEO,

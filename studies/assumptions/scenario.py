@@ -22,6 +22,7 @@ from sailmujoco.study import Runs
 
 from ..kit.verdict import TOLERANCE
 from ..kit.wille import TABLE1_DURATION, TABLE1_SMOKE_DURATION, TABLE1_WIND
+from .durations import part_seconds
 
 NAME = "assumptions"
 TITLE = "Assumption validation in 6-DOF: where the papers' simplifications hold and where they break"
@@ -197,8 +198,6 @@ def simulated_seconds(runs_: Runs) -> float:
     runs_ : sailmujoco.study.Runs
         A pass's runs.
     """
-    from .episodes import part_seconds
-
     names = {f"sweeps/{boat}-{config}" for boat in BOATS for config in CONFIGS}
     total = sum(spec["duration"] * len(spec["zip"]["task.wind_speed"]) * len(spec["seeds"])
                 for spec, folder in runs_.sweeps if folder in names)

@@ -1,6 +1,6 @@
 """Assumption validation, the sea's part of the report: where each difference comes from.
 
-Each difference a sea makes (:func:`.sea_analysis.attribution`) takes one of the sea's two
+Each difference a sea makes (:func:`.sea_attribution.attribution`) takes one of the sea's two
 paths into the boat, the hull or the keel and rudder (:data:`.sea.PATHS`), decided on the
 mechanism reruns' seeds: :func:`path_of` says which, :func:`path_counts` how many per series and
 metric, :func:`named` in words with the switches that show it, and :func:`mechanisms_section`
@@ -14,8 +14,10 @@ import math
 import pandas as pd
 
 from . import sea
-from .sea_analysis import DIFFERENCE, EXPLAINS, HEADING_LOST_DEG, SERIES, SeaAnalysis, lost_cases, metrics_of
-from .sea_analysis import removed_interval as _removed
+from .sea_analysis import SeaAnalysis
+from .sea_attribution import EXPLAINS
+from .sea_attribution import removed_interval as _removed
+from .sea_cases import DIFFERENCE, HEADING_LOST_DEG, SERIES, lost_cases, metrics_of
 
 
 def paths(s: SeaAnalysis) -> list[str]:
@@ -47,7 +49,7 @@ def path_of(row) -> str:
     Parameters
     ----------
     row : mapping
-        A row of :func:`.sea_analysis.attribution` (``path``: :func:`.sea_analysis.path_taken`).
+        A row of :func:`.sea_attribution.attribution` (``path``: :func:`.sea_attribution.path_taken`).
     """
     return row["path"].replace(" alone", "")
 
@@ -67,7 +69,7 @@ def path_counts(rows: pd.DataFrame) -> str:
     Parameters
     ----------
     rows : pandas.DataFrame
-        Rows of :func:`.sea_analysis.attribution`.
+        Rows of :func:`.sea_attribution.attribution`.
     """
     if rows.empty:
         return "—"
@@ -95,7 +97,7 @@ def share_text(row, name: str) -> str:
     Parameters
     ----------
     row : mapping
-        A row of :func:`.sea_analysis.attribution`.
+        A row of :func:`.sea_attribution.attribution`.
     name : str
         A mechanism of :data:`.sea.MECHANISMS`.
     """
@@ -114,12 +116,12 @@ def _switch(row, name: str) -> str:
 
 def named(row) -> str:
     """The path a difference takes and, where one explains it, the hull's refinement
-    (:func:`.sea_analysis.attribution`), in words with their switches.
+    (:func:`.sea_attribution.attribution`), in words with their switches.
 
     Parameters
     ----------
     row : mapping
-        A row of :func:`.sea_analysis.attribution`.
+        A row of :func:`.sea_attribution.attribution`.
     """
     path, refinement = row["mechanism"], row.get("refinement", "")
     taken = row["path"]

@@ -270,6 +270,21 @@ def _extreme(intervals: dict) -> tuple:
     return name, finite[name]
 
 
+def _heel_text(a: Analysis, geo_held: bool) -> str:
+    """How far the 6-DOF robot heels against the paper world: the largest segment-mean roll of
+    each (its interval), and, where it heels less and has not held heading 0 on every run
+    (``geo_held`` false), that it has rounded up."""
+    heel_geo = _extreme({k: a.interval(Case("mujoco", 0.1, law), f"heel_{angle:g}")
+                         for k, (law, angle) in enumerate((law, angle) for law in LAWS for angle in ANGLES_DEG)})[1]
+    heel_paper = _extreme({k: a.interval(Case("paper", 0.1, law), f"heel_{angle:g}")
+                           for k, (law, angle) in enumerate((law, angle) for law in LAWS for angle in ANGLES_DEG)})[1]
+    largest = (f"largest segment-mean roll {heel_geo.fixed(1)}°, paper world {heel_paper.fixed(1)}°")
+    if abs(heel_geo.mean) > abs(heel_paper.mean):
+        return f"so the 6-DOF robot heels further ({largest})"
+    return (f"but the 6-DOF robot heels less ({largest})"
+            + ("" if geo_held else ": it has rounded up, off the wind angle the trial asks for"))
+
+
 def findings(a: Analysis) -> str:
     """The paragraphs that read the checks table (numbers from this run, over its seeds).
 
@@ -312,17 +327,7 @@ def findings(a: Analysis) -> str:
                    f"; the 6-DOF robot loses it in {mujoco_lost} of {rigid_all}")
 
     r = _righting()
-    heel_geo = _extreme({k: a.interval(c(law, "mujoco"), f"heel_{angle:g}")
-                         for k, (law, angle) in enumerate((law, angle) for law in LAWS for angle in ANGLES_DEG)})[1]
-    heel_paper = _extreme({k: a.interval(c(law), f"heel_{angle:g}")
-                           for k, (law, angle) in enumerate((law, angle) for law in LAWS for angle in ANGLES_DEG)})[1]
-    geo_held = mujoco_lost == 0
-    largest = (f"largest segment-mean roll {heel_geo.fixed(1)}°, paper world {heel_paper.fixed(1)}°")
-    if abs(heel_geo.mean) > abs(heel_paper.mean):
-        heel_text = f"so the 6-DOF robot heels further ({largest})"
-    else:
-        heel_text = (f"but the 6-DOF robot heels less ({largest})"
-                     + ("" if geo_held else ": it has rounded up, off the wind angle the trial asks for"))
+    heel_text = _heel_text(a, geo_held=mujoco_lost == 0)
     return f"""\
 *Sensor.* With {TRUE_WIND:g} m/s at the sail the three readings of the apparent wind give the
 same speeds to within {100 * abs(s_worst.mean - 1.0):.0f} % (rows 5-8; the largest departure, {s_law} at

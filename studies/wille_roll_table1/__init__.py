@@ -1,7 +1,8 @@
 """Wille (2016b) §5 Table 1, Figs. 3 and 5-8: roll stabilisation by the sail.
 
-The study in five parts: :mod:`.scenario` (the runs, as data, and the paper's numbers),
-:mod:`.analysis` (each run's numbers, the seed means, the moment shares and the Fig. 8 optima),
+The study in six parts: :mod:`.scenario` (the runs, as data, and the paper's numbers),
+:mod:`.run_table` (each run's numbers by case, world, sim and seed), :mod:`.analysis` (the seed
+means, the reductions' verdicts, the moment shares and the Fig. 8 optima),
 :mod:`.figures` (the figures and the CSV data), :mod:`.report` (the comparison with the paper)
 and :mod:`.causes` (the cause of each difference, each checked by a switch). The beam reach
 itself is :mod:`studies.kit.wille`'s Table 1 scenario.

@@ -7,7 +7,8 @@ mechanism: no verdict is drawn from it."""
 from __future__ import annotations
 
 from ..kit import seeds as over
-from .analysis import STALLED, Analysis, RunTable, realisations_within, reduction
+from .analysis import STALLED, Analysis, realisations_within
+from .run_table import RunTable, reduction
 from .scenario import (
     FAST_CONTROL_S,
     FIG8_LABELS,

@@ -15,7 +15,8 @@ from sailmujoco.figures import legend_below, moment_unit
 from ..kit import save_figure, setup_matplotlib
 from ..kit import seeds as over
 from ..kit.wille import MOMENT_TERMS, TABLE1_DURATION, TABLE1_WIND, TABLE1_WINDOW
-from .analysis import BASES, LAW_SIMS, REDUCTION_BOUND, Analysis, RunTable
+from .analysis import BASES, LAW_SIMS, REDUCTION_BOUND, Analysis
+from .run_table import RunTable
 from .scenario import (
     FIG8_LABELS,
     FIG8_WINDS,

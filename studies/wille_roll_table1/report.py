@@ -14,14 +14,13 @@ from .analysis import (
     REDUCTION_BOUND,
     STALLED,
     Analysis,
-    RunTable,
     optimum,
-    reduction,
     roll_cut,
     table1_verdict,
 )
 from .causes import causes
 from .figures import FIGURES
+from .run_table import RunTable, reduction
 from .scenario import (
     CASES,
     FIG8_LABELS,
