@@ -10,6 +10,8 @@ both); :func:`method_line` says in the report how the numbers were made; :func:`
 
 from __future__ import annotations
 
+import warnings
+
 import numpy as np
 import pandas as pd
 
@@ -177,7 +179,8 @@ def band(ax, t, runs, **style):
     mean = runs.mean(axis=0)
     (line,) = ax.plot(t, mean, **style)
     if runs.shape[0] > 1:
-        with np.errstate(invalid="ignore", divide="ignore"):
+        with np.errstate(invalid="ignore", divide="ignore"), warnings.catch_warnings():
+            warnings.simplefilter("ignore", RuntimeWarning)  # times where the seeds agree to rounding
             ci = scipy_stats.ttest_1samp(runs, 0.0, axis=0).confidence_interval(stats.CONFIDENCE)
         low, high = np.where(np.isfinite(ci.low), ci.low, mean), np.where(np.isfinite(ci.high), ci.high, mean)
         ax.fill_between(t, low, high, color=line.get_color(), alpha=0.2, linewidth=0)
