@@ -12,8 +12,8 @@ import time
 import pandas as pd
 
 TOML = ('name = "ctrl_c"\nboat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\n'
-        'controller = "pid"\nduration = 10.0\nseeds = [0, 1, 2, 3]\n'
-        'metrics = ["mean_surge"]\n')
+        'controller = "pid"\nduration = 120.0\nseeds = [0, 1, 2, 3]\n'
+        'metrics = ["mean_surge"]\n')  # 120 s a run: the rest still running when Ctrl-C comes
 
 
 def test_ctrl_c_during_a_sweep_is_one_line_and_resume_finishes_it(tmp_path):
