@@ -1,0 +1,125 @@
+"""A servo's departures from an ideal one, each a small stateful map stepped every ``dt``.
+
+Applied in this order to a command (:class:`FittedServo`): quantisation (the command a PWM
+channel or a servo's potentiometer can resolve), deadband (a change smaller than it leaves the
+servo where it is), rate limit (the rated speed: an RC servo turns 60 degrees in 0.07-0.2 s), and
+backlash (the output shaft follows the motor only once the gear play is taken up). With every
+parameter zero the command passes unchanged, bit for bit.
+"""
+
+from __future__ import annotations
+
+import math
+
+
+def _non_negative(name: str, value) -> float:
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if not ok or value < 0:
+        raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
+    return float(value)
+
+
+def quantise(command: float, step: float) -> float:
+    """``command`` rounded to the nearest multiple of ``step`` (unchanged for step 0).
+
+    Parameters
+    ----------
+    command : float
+        The command (rad or m).
+    step : float
+        The resolution, >= 0.
+    """
+    return command if step == 0.0 else step * round(command / step)
+
+
+class Deadband:
+    """A servo that holds its target until the command moves more than ``width`` from it.
+
+    Parameters
+    ----------
+    width : float
+        The deadband, >= 0 (0: every command is followed).
+    """
+
+    def __init__(self, width: float):
+        self.width = _non_negative("deadband", width)
+        self.held = None
+
+    def step(self, command: float) -> float:
+        """The target the servo drives to after ``command``."""
+        if self.held is None or abs(command - self.held) > self.width:
+            self.held = command
+        return self.held
+
+
+class RateLimit:
+    """A position that moves towards the command no faster than ``rate``.
+
+    Parameters
+    ----------
+    rate : float
+        The rated speed, per second (rad/s or m/s); 0: no limit.
+    dt : float
+        The step, s.
+    """
+
+    def __init__(self, rate: float, dt: float):
+        self.max_step = _non_negative("rate_limit", rate) * _non_negative("dt", dt)
+        self.limited = self.max_step > 0.0
+        self.position = None
+
+    def step(self, command: float) -> float:
+        """The position after one step towards ``command``."""
+        if self.position is None or not self.limited:
+            self.position = command
+        else:
+            self.position += min(max(command - self.position, -self.max_step), self.max_step)
+        return self.position
+
+
+class Backlash:
+    """Gear play of total width ``width``: the output moves only when the input pushes it,
+    staying within ``width / 2`` of the input.
+
+    Parameters
+    ----------
+    width : float
+        The play, >= 0 (rad or m).
+    """
+
+    def __init__(self, width: float):
+        self.half = _non_negative("backlash", width) / 2.0
+        self.output = None
+
+    def step(self, position: float) -> float:
+        """The output after the input moves to ``position``."""
+        if self.output is None or self.half == 0.0:
+            self.output = position
+        else:
+            self.output = min(max(self.output, position - self.half), position + self.half)
+        return self.output
+
+
+class FittedServo:
+    """Quantisation, deadband, rate limit and backlash, in that order (see the module docstring).
+
+    Parameters
+    ----------
+    dt : float
+        The step, s.
+    rate_limit : float
+        Rated speed, per s (0: none).
+    deadband, backlash, resolution : float
+        Widths in the command's unit (0: none).
+    """
+
+    def __init__(self, dt: float, rate_limit: float = 0.0, deadband: float = 0.0, backlash: float = 0.0,
+                 resolution: float = 0.0):
+        self.resolution = _non_negative("resolution", resolution)
+        self.deadband = Deadband(deadband)
+        self.rate = RateLimit(rate_limit, dt)
+        self.backlash = Backlash(backlash)
+
+    def step(self, command: float) -> float:
+        """The position the servo sets after ``command``."""
+        return self.backlash.step(self.rate.step(self.deadband.step(quantise(command, self.resolution))))

@@ -1,0 +1,162 @@
+"""The random processes and filters a sensor model is made of, each stepped once per sample.
+
+* :class:`GaussMarkov` — a first-order Gauss-Markov error (an Ornstein-Uhlenbeck process sampled
+  exactly): stationary standard deviation ``sigma``, autocorrelation ``exp(-|lag| / tau)``. The
+  error of a GNSS fix and a compass's slowly wandering deviation are of this kind; white noise
+  would average away over a few samples, which a real receiver's error does not (the point
+  PX4 issue 24358 makes about its own GNSS simulation).
+* :class:`RandomWalk` — a gyro's bias: ``b(t + dt) = b(t) + sigma_rw sqrt(dt) w``.
+* :class:`LowPass` and :class:`AngleLowPass` — a first-order filter ``tau dy/dt = x - y``
+  sampled exactly (the step response reaches ``1 - exp(-t / tau)``); an angle is filtered as
+  the vector it points along, so that it never averages across the +-pi seam.
+
+Every process draws from the :class:`numpy.random.Generator` handed to it, and nothing else: a
+sensor's stream is its own, seeded from the run's seed (:mod:`sailmujoco.measurement.sensors`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def check_number(name: str, value: float, low: float = 0.0, strict: bool = False) -> float:
+    """``value`` as a float, or one ValueError naming ``name`` and the accepted range.
+
+    Parameters
+    ----------
+    name : str
+        The value's name in the message.
+    value : float
+        The value.
+    low : float
+        The least value accepted.
+    strict : bool
+        True: ``low`` itself is refused.
+    """
+    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
+    if not ok or value < low or (strict and value == low):
+        sign = ">" if strict else ">="
+        raise ValueError(f"{name} must be a finite number {sign} {low:g}, got {value!r}")
+    return float(value)
+
+
+class GaussMarkov:
+    """First-order Gauss-Markov process, sampled exactly every ``dt``.
+
+    ``x[k+1] = a x[k] + sigma sqrt(1 - a^2) w[k]`` with ``a = exp(-dt / tau)`` and ``w`` standard
+    normal: the Ornstein-Uhlenbeck process ``dx = -x / tau dt + sigma sqrt(2 / tau) dW`` updated
+    exactly for any dt (Gillespie, Phys. Rev. E 54, 2084, 1996). It starts stationary:
+    ``x[0]`` is drawn from N(0, sigma^2).
+
+    Parameters
+    ----------
+    sigma : float
+        Stationary standard deviation (the error's unit), >= 0.
+    tau : float
+        Correlation time, s, > 0.
+    dt : float
+        Sample period, s, > 0.
+    rng : numpy.random.Generator
+        The stream it draws from.
+    shape : tuple of int
+        Shape of one sample (``(2,)`` for a horizontal position error).
+    """
+
+    def __init__(self, sigma: float, tau: float, dt: float, rng: np.random.Generator, shape=()):
+        self.sigma = check_number("sigma", sigma)
+        self.tau = check_number("tau", tau, strict=True)
+        dt = check_number("dt", dt, strict=True)
+        self.a = math.exp(-dt / self.tau)
+        self.b = self.sigma * math.sqrt(1.0 - self.a * self.a)
+        self.rng = rng
+        self.value = self.sigma * rng.standard_normal(shape)
+
+    def step(self):
+        """Advance one sample; the new value."""
+        self.value = self.a * self.value + self.b * self.rng.standard_normal(np.shape(self.value))
+        return self.value
+
+
+class RandomWalk:
+    """A random walk sampled every ``dt``: ``b[k+1] = b[k] + sigma_rw sqrt(dt) w[k]``, from ``start``.
+
+    Parameters
+    ----------
+    sigma_rw : float
+        Random-walk intensity (the unit per square-root second), >= 0.
+    dt : float
+        Sample period, s, > 0.
+    rng : numpy.random.Generator
+        The stream it draws from.
+    start : float
+        The value at the first sample.
+    """
+
+    def __init__(self, sigma_rw: float, dt: float, rng: np.random.Generator, start: float = 0.0):
+        self.scale = check_number("sigma_rw", sigma_rw) * math.sqrt(check_number("dt", dt, strict=True))
+        self.rng = rng
+        self.value = float(start)
+
+    def step(self) -> float:
+        """Advance one sample; the new value."""
+        self.value += self.scale * float(self.rng.standard_normal())
+        return self.value
+
+
+def smoothing(tau: float, dt: float) -> float:
+    """The gain ``1 - exp(-dt / tau)`` of a first-order filter sampled every ``dt`` (1 for tau = 0).
+
+    Parameters
+    ----------
+    tau : float
+        Time constant, s, >= 0 (0: no filter).
+    dt : float
+        Sample period, s, > 0.
+    """
+    tau, dt = check_number("tau", tau), check_number("dt", dt, strict=True)
+    return 1.0 if tau == 0.0 else 1.0 - math.exp(-dt / tau)
+
+
+class LowPass:
+    """First-order low-pass filter ``tau dy/dt = x - y``, sampled every ``dt``; it starts at the
+    first input (no transient from zero).
+
+    Parameters
+    ----------
+    tau : float
+        Time constant, s (a cut-off of f Hz is ``tau = 1 / (2 pi f)``); 0 passes the input.
+    dt : float
+        Sample period, s.
+    """
+
+    def __init__(self, tau: float, dt: float):
+        self.gain = smoothing(tau, dt)
+        self.value = None
+
+    def step(self, x):
+        """Filter one input; the output."""
+        x = np.asarray(x, dtype=np.float64)
+        self.value = x.copy() if self.value is None else self.value + self.gain * (x - self.value)
+        return self.value
+
+
+class AngleLowPass:
+    """First-order low-pass filter of an angle, through the unit vector it points along.
+
+    Parameters
+    ----------
+    tau : float
+        Time constant, s; 0 passes the input.
+    dt : float
+        Sample period, s.
+    """
+
+    def __init__(self, tau: float, dt: float):
+        self.vector = LowPass(tau, dt)
+
+    def step(self, angle: float) -> float:
+        """Filter one angle (rad); the output, rad in [-pi, pi]."""
+        c, s = self.vector.step((math.cos(angle), math.sin(angle)))
+        return math.atan2(float(s), float(c))

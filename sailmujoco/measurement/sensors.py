@@ -1,0 +1,319 @@
+"""Sensor models: what a boat's instruments read, given the true state.
+
+Each model is a plain object stepped once per control step (period ``dt``) with the truth of
+that step, drawing from a :class:`numpy.random.Generator` of its own, and returning what the
+instrument reports:
+
+* :class:`Gnss` — position and velocity over ground: a fix every ``1 / rate`` s, held between
+  fixes, describing the boat ``latency`` s earlier, its position error a Gauss-Markov process
+  (:class:`~sailmujoco.measurement.noise.GaussMarkov`) and its velocity error white. A receiver's
+  horizontal accuracy is quoted as CEP (the radius holding half the fixes); for a circular
+  normal error of per-axis sigma, CEP = sigma sqrt(2 ln 2) = 1.1774 sigma.
+* :class:`Compass` — heading: the reading of a magnetometer fixed to the hull
+  (:func:`untilted_heading`, whose error grows with heel through the field's dip) or of a
+  tilt-compensated one (:func:`tilt_compensated_heading`, wrong by its inclinometer's error),
+  plus a fixed deviation and white noise.
+* :class:`Gyro` — body rates with white noise and a bias that random-walks.
+* :class:`MastheadVane` — apparent wind angle and speed: the air relative to the masthead in the
+  mast's own (heeled) plane, so the boat's motion is in the reading (:func:`masthead_flow`),
+  plus white noise on each flow component and a first-order filter.
+* :class:`SpeedLog` — speed through the water with a calibration (scale) error and noise.
+
+Frames are the package's (:mod:`sailmujoco.frames`): world ENU, body FLU, compass headings
+clockwise from north, heel positive starboard down, AWA positive from starboard.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+
+import numpy as np
+
+from ..frames import matrix_from_euler, wrap_angle
+from .noise import GaussMarkov, LowPass, RandomWalk, check_number
+
+CEP_PER_SIGMA = math.sqrt(2.0 * math.log(2.0))  # CEP / per-axis sigma of a circular normal error
+
+
+def earth_field(dip: float) -> np.ndarray:
+    """The unit magnetic field in the world (ENU), declination zero: north and ``dip`` below
+    the horizon (dip > 0 in the northern hemisphere, where the field points down).
+
+    Parameters
+    ----------
+    dip : float
+        Magnetic inclination, rad, in [-pi/2, pi/2].
+    """
+    return np.array([0.0, math.cos(dip), -math.sin(dip)])
+
+
+def untilted_heading(rot, dip: float) -> float:
+    """The compass heading a magnetometer fixed to the hull reports, taking its own x-y plane
+    for the horizontal: ``atan2(m_y, m_x)`` of the field in body axes (rad, clockwise from north).
+
+    Level, it reads the heading exactly; heeled, the vertical part of the field leaks into its
+    athwartships axis and it errs by an amount set by the dip, the heel and the heading.
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3)
+        Body (FLU) -> world (ENU) rotation.
+    dip : float
+        Magnetic inclination, rad.
+    """
+    m = np.asarray(rot, dtype=np.float64).reshape(3, 3).T @ earth_field(dip)
+    return math.atan2(float(m[1]), float(m[0]))
+
+
+def tilt_compensated_heading(rot, dip: float, heel: float, pitch: float) -> float:
+    """The heading a tilt-compensated compass reports: its magnetometer's field rotated back to
+    the horizontal with the heel and pitch its inclinometer gives (exact when they are true).
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3)
+        Body (FLU) -> world (ENU) rotation.
+    dip : float
+        Magnetic inclination, rad.
+    heel, pitch : float
+        The inclinometer's heel and pitch, rad.
+    """
+    m = np.asarray(rot, dtype=np.float64).reshape(3, 3).T @ earth_field(dip)
+    level = matrix_from_euler(heel, pitch, 0.0) @ m
+    return math.atan2(float(level[1]), float(level[0]))
+
+
+def masthead_flow(rot, velocity, omega_body, r_body, wind) -> np.ndarray:
+    """The air's velocity relative to a point of the boat, in body axes:
+    ``R^T (wind - v) - omega x r`` (the boat's translation and rotation both in it).
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3)
+        Body (FLU) -> world (ENU) rotation.
+    velocity : array_like, shape (3,)
+        World velocity of the body origin, m/s.
+    omega_body : array_like, shape (3,)
+        Angular velocity in body axes, rad/s.
+    r_body : array_like, shape (3,)
+        The point (the masthead) from the body origin, body axes, m.
+    wind : array_like, shape (3,)
+        The air's world velocity at the point, m/s.
+    """
+    rot = np.asarray(rot, dtype=np.float64).reshape(3, 3)
+    air = rot.T @ (np.asarray(wind, dtype=np.float64) - np.asarray(velocity, dtype=np.float64))
+    return air - np.cross(np.asarray(omega_body, dtype=np.float64), np.asarray(r_body, dtype=np.float64))
+
+
+def vane_reading(flow_body) -> tuple[float, float]:
+    """(AWA, AWS) a vane and anemometer turning about the mast read from the air's velocity in
+    body axes: the flow in the mast's own x-y plane (rad from the bow, positive from starboard;
+    m/s).
+
+    Parameters
+    ----------
+    flow_body : array_like, shape (2,) or (3,)
+        The air's velocity relative to the masthead, body axes, m/s.
+    """
+    fx, fy = float(flow_body[0]), float(flow_body[1])
+    return math.atan2(fy, -fx), math.hypot(fx, fy)
+
+
+class Gnss:
+    """A GNSS receiver: position and velocity over ground, held between fixes, ``latency`` late.
+
+    Parameters
+    ----------
+    dt : float
+        Control period (one :meth:`measure` per period), s.
+    rng : numpy.random.Generator
+        The receiver's stream.
+    rate : float
+        Fixes per second, > 0 (rounded to a whole number of control periods between fixes, at
+        least one).
+    latency : float
+        Age of a fix when it is reported, s, >= 0 (rounded to whole control periods).
+    position_sigma : float
+        Per-axis standard deviation of the position error, m (CEP / 1.1774).
+    position_tau : float
+        Correlation time of the position error, s.
+    velocity_sigma : float
+        Per-axis standard deviation of the (white) velocity error, m/s.
+    """
+
+    def __init__(self, dt: float, rng: np.random.Generator, rate: float = 5.0, latency: float = 0.0,
+                 position_sigma: float = 0.0, position_tau: float = 60.0, velocity_sigma: float = 0.0):
+        dt = check_number("dt", dt, strict=True)
+        self.every = max(1, int(round(1.0 / (check_number("rate", rate, strict=True) * dt))))
+        self.delay = int(round(check_number("latency", latency) / dt))
+        self.rng = rng
+        self.velocity_sigma = check_number("velocity_sigma", velocity_sigma)
+        self.error = GaussMarkov(position_sigma, position_tau, self.every * dt, rng, shape=(2,))
+        self.history: deque = deque(maxlen=self.delay + 1)
+        self.steps = 0
+        self.fix = None
+
+    def measure(self, position, velocity) -> tuple[np.ndarray, np.ndarray]:
+        """This control step's (position, velocity), world east and north (m, m/s).
+
+        Parameters
+        ----------
+        position, velocity : array_like, shape (2,)
+            The true position (m) and velocity over ground (m/s) now.
+        """
+        now = np.array(position[:2], dtype=np.float64), np.array(velocity[:2], dtype=np.float64)
+        self.history.append(now)
+        if self.steps % self.every == 0:
+            old_position, old_velocity = self.history[0]
+            noise = self.velocity_sigma * self.rng.standard_normal(2)
+            self.fix = (old_position + self.error.step(), old_velocity + noise)
+        self.steps += 1
+        return self.fix[0].copy(), self.fix[1].copy()
+
+
+class Compass:
+    """A magnetic compass: untilted or tilt-compensated, with a deviation and white noise.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The compass's stream.
+    dip : float
+        Magnetic inclination, rad (about 1.2 rad, 69 deg, in the English Channel).
+    tilt_compensated : bool
+        True: the field is rotated back to the horizontal with the inclinometer's heel and pitch.
+    noise : float
+        Standard deviation of the white noise, rad.
+    deviation : float
+        A fixed error (the installation's deviation), rad.
+    inclinometer_noise : float
+        Standard deviation of the inclinometer's heel and pitch errors, rad (tilt-compensated).
+    """
+
+    def __init__(self, rng: np.random.Generator, dip: float = 0.0, tilt_compensated: bool = True,
+                 noise: float = 0.0, deviation: float = 0.0, inclinometer_noise: float = 0.0):
+        ok = isinstance(dip, (int, float)) and math.isfinite(dip) and abs(dip) <= math.pi / 2
+        if not ok:
+            raise ValueError(f"dip must be a finite angle within [-pi/2, pi/2] rad, got {dip!r}")
+        self.rng, self.dip, self.tilt_compensated = rng, float(dip), bool(tilt_compensated)
+        self.noise = check_number("noise", noise)
+        self.deviation = float(deviation)
+        self.inclinometer_noise = check_number("inclinometer_noise", inclinometer_noise)
+
+    def measure(self, rot, heel: float, pitch: float) -> float:
+        """The heading reported now, rad clockwise from north, wrapped to [-pi, pi).
+
+        Parameters
+        ----------
+        rot : array_like, shape (3, 3)
+            The true body -> world rotation.
+        heel, pitch : float
+            The true heel and pitch, rad (read by a tilt-compensated compass's inclinometer).
+        """
+        if self.tilt_compensated:
+            tilt = heel + self.inclinometer_noise * self.rng.standard_normal(), \
+                pitch + self.inclinometer_noise * self.rng.standard_normal()
+            heading = tilt_compensated_heading(rot, self.dip, *tilt)
+        else:
+            heading = untilted_heading(rot, self.dip)
+        return float(wrap_angle(heading + self.deviation + self.noise * self.rng.standard_normal()))
+
+
+class Gyro:
+    """A rate gyro: the body rates plus white noise and a bias random walk (one per axis).
+
+    Parameters
+    ----------
+    dt : float
+        Control period, s.
+    rng : numpy.random.Generator
+        The gyro's stream.
+    noise : float
+        Standard deviation of the white noise per sample, rad/s.
+    bias_walk : float
+        Random-walk intensity of the bias, rad/s per square-root second.
+    bias : float
+        The bias at start, rad/s (each axis).
+    """
+
+    def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, bias_walk: float = 0.0,
+                 bias: float = 0.0):
+        self.rng, self.noise = rng, check_number("noise", noise)
+        self.bias = [RandomWalk(bias_walk, dt, rng, start=bias) for _ in range(3)]
+
+    def measure(self, rates) -> np.ndarray:
+        """The body rates reported now (roll, pitch, yaw), rad/s.
+
+        Parameters
+        ----------
+        rates : array_like, shape (3,)
+            The true body rates, rad/s.
+        """
+        bias = np.array([b.step() for b in self.bias])
+        return np.asarray(rates, dtype=np.float64)[:3] + bias + self.noise * self.rng.standard_normal(3)
+
+
+class MastheadVane:
+    """A masthead vane and cup anemometer: the flow in the mast's plane, noisy, filtered.
+
+    Parameters
+    ----------
+    dt : float
+        Control period, s.
+    rng : numpy.random.Generator
+        The vane's stream.
+    noise : float
+        Standard deviation of the white noise on each flow component before the filter, m/s.
+    tau : float
+        Time constant of the first-order filter on the flow vector, s (ArduPilot's vane filter
+        of 0.5 Hz is tau = 1 / (2 pi 0.5) = 0.32 s); 0: no filter.
+    """
+
+    def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, tau: float = 0.0):
+        self.rng, self.noise = rng, check_number("noise", noise)
+        self.filter = LowPass(tau, dt)
+
+    def measure(self, flow_body) -> tuple[float, float]:
+        """(AWA rad, AWS m/s) reported now.
+
+        Parameters
+        ----------
+        flow_body : array_like, shape (2,) or (3,)
+            The air's velocity relative to the masthead, body axes, m/s (:func:`masthead_flow`).
+        """
+        flow = np.asarray(flow_body, dtype=np.float64)[:2] + self.noise * self.rng.standard_normal(2)
+        return vane_reading(self.filter.step(flow))
+
+
+class SpeedLog:
+    """A paddle-wheel or ultrasonic log: speed through the water, scaled by its calibration error.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        The log's stream.
+    scale_error : float
+        Calibration error as a fraction (0.05 reads 5 % high), > -1.
+    noise : float
+        Standard deviation of the white noise, m/s.
+    """
+
+    def __init__(self, rng: np.random.Generator, scale_error: float = 0.0, noise: float = 0.0):
+        if not (isinstance(scale_error, (int, float)) and math.isfinite(scale_error) and scale_error > -1.0):
+            raise ValueError(f"scale_error must be a finite number > -1, got {scale_error!r}")
+        self.rng, self.scale, self.noise = rng, 1.0 + float(scale_error), check_number("noise", noise)
+
+    def measure(self, surge_through_water: float) -> float:
+        """The speed through the water reported now, m/s.
+
+        Parameters
+        ----------
+        surge_through_water : float
+            The true forward speed through the water, m/s.
+        """
+        return self.scale * float(surge_through_water) + self.noise * float(self.rng.standard_normal())
+
+
+__all__ = ["CEP_PER_SIGMA", "Compass", "Gnss", "Gyro", "MastheadVane", "SpeedLog",
+           "earth_field", "masthead_flow", "tilt_compensated_heading", "untilted_heading", "vane_reading"]
