@@ -154,3 +154,21 @@ def test_every_world_meets_the_protocol():
         assert "true_state" in observation
     assert worlds[0].diagnostic_record()["restoring"] == worlds[0].diagnostic_record()["restoring"]
     assert worlds[1].diagnostic_record() == worlds[2].diagnostic_record() == {}
+
+
+@pytest.mark.parametrize("task,world", [("heading_hold", "mujoco"), ("heading_hold", "paper"),
+                                        ("position_keeping", "paper")])
+def test_the_fast_observation_is_the_tables_observation(task, world):
+    """observe()'s written-out path for the built-in tables gives what reading every entry of
+    TRUE_STATE and OBSERVATION gives (the definition), key for key and bit for bit: a key added
+    to the tables and not to the fast path fails here."""
+    from sailmujoco.measurement import observation as module
+
+    env = suite.load("saoud_robot", task, world, seed=3)
+    env.reset()
+    for _ in range(5):
+        env.step(np.array([0.1, 0.4]))
+        truth = env.physics.truth()
+        fast = module._observe_builtin(truth)
+        assert fast is not None  # the world's truth takes the fast path
+        assert_identical(fast, module._observe_tables(truth))

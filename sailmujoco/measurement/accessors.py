@@ -24,7 +24,7 @@ import numpy as np
 
 from .. import frames
 from ..forces import boat as kernels
-from .observation import Truth, euler_of, observation_and_record, rotation_of, wrench_rows
+from .observation import Truth, euler_of, euler_of_entries, observation_and_record, rotation_of, wrench_rows
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
 _WRENCH_KEYS, _WRENCH_ROWS = wrench_rows(kernels.TERMS)
@@ -32,6 +32,8 @@ _N_TERMS = len(kernels.TERMS)
 _D_WIND = kernels.D_WIND_X
 _D_FLOW = kernels.D_SAIL_FLOW_X
 _TERM = {name: i for i, name in enumerate(kernels.TERMS)}
+_WRENCH_INDEX = _WRENCH_ROWS.tolist()
+_WRENCHES_ARE_TERMS = max(_WRENCH_INDEX) < _N_TERMS  # every wrench is a force term of the physics
 
 
 class BoatAccessors:
@@ -258,42 +260,60 @@ class BoatAccessors:
             The boat's true state.
         """
         d = self.data.ptr
-        qpos, qvel = self._free_state()
-        rot = rotation_of(qpos)
-        rot_t = rot.T
+        held = self.__dict__.get("_truth_held")
+        if held is None or held[0] is not d:
+            held = self._hold_truth_arrays(d)
+        _, qvel, m, site, joints, site_xpos, rudder_at, sail_at, flat, rot_t, vel = held
+        if self.dofs == 6:  # _free_state()
+            qpos = joints
+        else:
+            qpos, qvel = self._free_state()
+        mujoco.mju_quat2Mat(flat, qpos[3:7])  # rotation_of(qpos), into the held matrix
         body = rot_t @ qvel[0:3]  # body_velocity()
         rates = qvel[3:6]  # angular_velocity(), read before _ensure_fresh refills it (4 DOF): same values
         wind = self.wind
         current = wind.current
         current_body = rot_t @ current
         t = d.time
-        heel, pitch, yaw = euler_of(rot)
+        heel, pitch, yaw = euler_of_entries(flat.tolist())  # euler_of(rot)
         heading = frames.wrap_angle(math.pi / 2.0 - yaw)  # frames.heading_from_yaw
-        idx = self._idx
-        rudder, sail = float(d.qpos[idx[0]]), float(d.qpos[idx[2]])
+        rudder, sail = float(joints[rudder_at]), float(joints[sail_at])
 
         self._ensure_fresh()  # the force terms and diagnostics of this very state
         diag = self._diag
         # apparent_wind_masthead(): the air relative to the masthead, body axes
-        m = self.model.ptr
-        site = mujoco.mj_name2id(m, _SITE, "masthead")
-        vel = np.zeros(6)
-        mujoco.mj_objectVelocity(m, d, _SITE, site, vel, 0)
-        air = wind.velocity(t, float(d.site_xpos[site][2])) - vel[3:]
-        flow = rot_t @ air
-        awa = float(np.arctan2(float(flow[1]), -float(flow[0])))  # frames.apparent_wind_angle
-        aws = float(np.hypot(flow[0], flow[1]))
+        mujoco.mj_objectVelocity(m, d, _SITE, site, vel, 0)  # writes all six
+        air = wind.velocity(t, float(site_xpos[site, 2])) - vel[3:]
+        flow_x, flow_y, _ = (rot_t @ air).tolist()
+        awa = float(np.arctan2(flow_y, -flow_x))  # frames.apparent_wind_angle
+        aws = float(np.hypot(flow_x, flow_y))
+        return Truth._make((  # in the order of its fields
+            t, qpos[0:2].copy(), qvel[0:2].copy(), body, current_body, rates, yaw, heel, pitch, heading,
+            rudder, sail, awa, aws, diag[_D_WIND:_D_WIND + 2].copy(), diag[_D_FLOW:_D_FLOW + 2].copy(),
+            wind.config.speed, wind.direction_from(t), np.array(current[:2], dtype=np.float64),
+            self._wrenches()))
 
-        terms = np.zeros((_N_TERMS + 1, 6))  # with a row of zeros for a wrench the physics lacks
-        terms[:_N_TERMS] = self._terms
-        return Truth(
-            time=t, position=qpos[0:2].copy(), velocity=qvel[0:2].copy(), body_velocity=body,
-            current_body=current_body, rates=rates, yaw=yaw, heel=heel, pitch=pitch, heading=heading,
-            rudder=rudder, sail=sail, apparent_wind_angle=awa, apparent_wind_speed=aws,
-            true_wind=diag[_D_WIND:_D_WIND + 2].copy(), apparent_wind_ce=diag[_D_FLOW:_D_FLOW + 2].copy(),
-            wind_speed_10=wind.config.speed, wind_direction_from=wind.direction_from(t),
-            current=np.array(current[:2], dtype=np.float64),
-            wrenches=dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)))
+    def _hold_truth_arrays(self, d) -> tuple:
+        """What :meth:`truth` reads of MjData ``d`` and its model, looked up once per MjData
+        (MuJoCo's buffers are stable per MjData), and the arrays it writes and reads within one
+        call: (d, qvel, model, masthead site id, qpos, site_xpos, rudder and sail qpos addresses,
+        the rotation's 9 entries, the transpose of the rotation (a view of them), a 6-vector)."""
+        m = self.model.ptr
+        flat = np.empty(9)
+        rudder_at, _, sail_at, _ = self._idx.tolist()
+        self._truth_held = (d, d.qvel, m, mujoco.mj_name2id(m, _SITE, "masthead"), d.qpos, d.site_xpos,
+                            rudder_at, sail_at, flat, flat.reshape(3, 3).T, np.empty(6))
+        return self._truth_held
+
+    def _wrenches(self) -> dict:
+        """The observation's wrenches (``"<key>_wrench"`` -> (6,) array, in :data:`_WRENCH_KEYS`
+        order): rows of a copy of the force terms (a row of zeros for one the physics lacks)."""
+        if _WRENCHES_ARE_TERMS:
+            terms = self._terms.copy()
+        else:
+            terms = np.zeros((_N_TERMS + 1, 6))
+            terms[:_N_TERMS] = self._terms
+        return dict(zip(_WRENCH_KEYS, map(terms.__getitem__, _WRENCH_INDEX), strict=True))
 
     def measure(self) -> tuple[dict, dict]:
         """(observation, record) of the boat now:

@@ -202,7 +202,8 @@ def rotation_of(qpos) -> np.ndarray:
 def euler_of(rot) -> tuple[float, float, float]:
     """frames.euler_from_matrix as floats, without its array handling.
 
-    The same numpy functions on the same numbers (np.clip keeps a NaN, as this does).
+    The same numpy functions on the same numbers (np.clip keeps a NaN, as this does; the
+    matrix's entries are read as Python floats, which numpy takes as the same float64).
 
     Parameters
     ----------
@@ -214,13 +215,30 @@ def euler_of(rot) -> tuple[float, float, float]:
     tuple of float
         (heel, pitch, yaw), rad.
     """
-    heel = float(np.arctan2(rot[2, 1], rot[2, 2]))
-    sin_pitch = rot[2, 0]
+    return euler_of_entries(rot.ravel().tolist())
+
+
+def euler_of_entries(entries: list) -> tuple[float, float, float]:
+    """:func:`euler_of` of the rotation's 9 entries in row order, as Python floats (numpy takes
+    them as the same float64 numbers).
+
+    Parameters
+    ----------
+    entries : list of float
+        R00, R01, R02, R10, ..., R22.
+
+    Returns
+    -------
+    tuple of float
+        (heel, pitch, yaw), rad.
+    """
+    r00, _, _, r10, _, _, sin_pitch, r21, r22 = entries
+    heel = float(np.arctan2(r21, r22))
     if sin_pitch > 1.0:
         sin_pitch = 1.0
     elif sin_pitch < -1.0:
         sin_pitch = -1.0
-    return heel, float(np.arcsin(sin_pitch)), float(np.arctan2(rot[1, 0], rot[0, 0]))
+    return heel, float(np.arcsin(sin_pitch)), float(np.arctan2(r10, r00))
 
 
 # key -> its value from the truth: a number (handed out as a 0-d float64 array) or a float64 array
@@ -260,6 +278,14 @@ TRUE_STATE: dict[str, Reading] = {  # the privileged true_state, then the world'
 }
 
 
+# the built-in tables as this module defines them: observe() reads a truth by the fast path
+# while the tables hold just these (a measurement added at run time takes the general one)
+_BUILTIN_STATE, _BUILTIN_OBSERVATION = dict(TRUE_STATE), dict(OBSERVATION)
+_STATE_KEYS, _OBSERVATION_KEYS = tuple(TRUE_STATE), tuple(OBSERVATION)  # the literals of _observe_builtin
+_VIEWS = tuple((i, ...) for i in range(22))  # the 0-d views of the fast path's 22 numbers
+_NUMBERS = frozenset((float, np.float64))  # what the fast path takes for a Truth's number
+
+
 def observe(truth: Truth) -> dict:
     """The observation of a world's truth: each key of :data:`OBSERVATION`, then
     ``true_state`` (each key of :data:`TRUE_STATE`, then the world's wrenches).
@@ -276,6 +302,46 @@ def observe(truth: Truth) -> dict:
     dict
         The observation, ``true_state`` nested.
     """
+    if (TRUE_STATE == _BUILTIN_STATE and OBSERVATION == _BUILTIN_OBSERVATION
+            and tuple(TRUE_STATE) == _STATE_KEYS and tuple(OBSERVATION) == _OBSERVATION_KEYS):
+        observation = _observe_builtin(truth)
+        if observation is not None:
+            return observation
+    return _observe_tables(truth)
+
+
+def _observe_builtin(truth: Truth) -> dict | None:
+    """:func:`_observe_tables` of the built-in tables, their readers written out: the same
+    values, bit for bit, in the same order. None (the general path) for a truth of other types
+    than floats and float64 arrays."""
+    (t, position, velocity, body, current_body, rates, yaw, heel, pitch, heading, rudder, sail, awa,
+     aws, true_wind, apparent_wind_ce, speed_10, direction_from, current, wrenches) = truth
+    if not (_NUMBERS.issuperset(map(type, (t, yaw, heel, pitch, heading, rudder, sail, awa, aws, speed_10)))
+            and np.ndarray is type(position) is type(velocity) is type(body) is type(current_body)
+            is type(rates) is type(true_wind) is type(apparent_wind_ce) is type(current)):
+        return None
+    try:  # the entries as Python floats: the same float64 numbers, cheaper to pack
+        (u, v, w), current_u, current_v = body.tolist(), current_body[0], current_body[1]
+        roll_rate, pitch_rate, yaw_rate = rates.tolist()
+        packed = np.array((u, v, w, u - current_u, v - current_v, yaw, heel, pitch, roll_rate, pitch_rate,
+                           yaw_rate, rudder, sail, speed_10, wrap_angle(direction_from), t, heading, heel,
+                           roll_rate, yaw_rate, awa, aws), dtype=np.float64)
+    except (TypeError, ValueError):  # not a vector of 3 numbers: as the general path has it
+        return None
+    if packed.shape != (22,):
+        return None
+    n = [packed[index] for index in _VIEWS]
+    true_state = {"u": n[0], "v": n[1], "w": n[2], "u_r": n[3], "v_r": n[4], "yaw": n[5], "heel": n[6],
+                  "pitch": n[7], "roll_rate": n[8], "pitch_rate": n[9], "yaw_rate": n[10], "rudder": n[11],
+                  "sail": n[12], "true_wind": true_wind, "wind_speed_10": n[13], "wind_direction": n[14],
+                  "apparent_wind_ce": apparent_wind_ce, "current": current, "time": n[15], **wrenches}
+    return {"position": position, "velocity": velocity, "heading": n[16], "heel": n[17], "roll_rate": n[18],
+            "yaw_rate": n[19], "apparent_wind_angle": n[20], "apparent_wind_speed": n[21],
+            "true_state": true_state}
+
+
+def _observe_tables(truth: Truth) -> dict:
+    """:func:`observe` by the tables: every reader of :data:`TRUE_STATE` and :data:`OBSERVATION`."""
     values = [read(truth) for read in TRUE_STATE.values()]
     n_state = len(values)
     values += [read(truth) for read in OBSERVATION.values()]
@@ -304,7 +370,8 @@ def record(truth: Truth) -> dict:
         ``roll_rate`` (rad/s), ``surge`` (m/s), ``course`` (rad, ENU) and ``speed`` (m/s, over
         ground).
     """
-    east, north = truth.velocity
+    velocity = truth.velocity
+    east, north = velocity.tolist() if type(velocity) is np.ndarray else velocity  # the same float64s
     return {"t": truth.time, "position": truth.position.copy(), "heading": truth.heading,
             "heel": truth.heel, "roll_rate": float(truth.rates[0]), "surge": float(truth.body_velocity[0]),
             "course": float(math.atan2(north, east)), "speed": float(np.hypot(east, north))}

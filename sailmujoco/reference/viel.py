@@ -72,6 +72,8 @@ from .viel_model import (
     viel_from_action,
 )
 
+_G_S, _G_RV, _G_RU, _HULL_WIND = (FORCE_NAMES.index(name) for name in ("g_s", "g_rv", "g_ru", "hull_wind"))
+
 
 class VielWorld:
     """Viel's 3-DOF sailboat (eqs. 1-9) in a wind from :class:`~sailmujoco.forces.wind.WindField`.
@@ -217,11 +219,7 @@ class VielWorld:
         action = self._action if action is None else self._checked_action(action)
         delta_r, delta_s = viel_from_action(action)
         a_tw, psi_tw = self.true_wind(t) if true_wind is None else true_wind
-        out = np.empty(len(FORCE_NAMES))
-        if not forces_kernel(self._packed(), np.ascontiguousarray(state, dtype=float), delta_r, delta_s, a_tw,
-                             psi_tw, out):
-            raise ValueError(DOMAIN_ERROR)
-        return dict(zip(FORCE_NAMES, out.tolist(), strict=True))
+        return dict(zip(FORCE_NAMES, self._forces(state, delta_r, delta_s, a_tw, psi_tw), strict=True))
 
     def step(self, action, dt: float) -> np.ndarray:
         """Hold ``action`` (ours, [rad]) for ``dt`` [s]; integrate eqs. 1-9. Returns the state.
@@ -345,19 +343,28 @@ class VielWorld:
         Truth
             The world's true state.
         """
-        x, y, theta, v, u, omega = self._state
-        a_tw, psi_tw = wind = self.true_wind()  # once: apparent wind and wrenches take it
-        a_aw, psi_aw = self.apparent_wind(wind)
-        action = self._action
-        return Truth(
-            time=self._time, position=np.array([x, y]), velocity=self.velocity(),
-            body_velocity=np.array([v, u, 0.0]), current_body=np.zeros(3), rates=np.array([0.0, 0.0, omega]),
-            yaw=theta, heel=0.0, pitch=0.0, heading=self.heading(), rudder=action[0], sail=action[1],
-            apparent_wind_angle=awa_from_psi_aw(psi_aw), apparent_wind_speed=a_aw,
-            true_wind=np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)]),
-            apparent_wind_ce=np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)]),  # blows to
-            wind_speed_10=self.wind.config.speed, wind_direction_from=self.wind.direction_from(self._time),
-            current=np.zeros(2), wrenches=self.wrenches(wind))
+        state, t, wind = self._state, self._time, self.wind
+        x, y, theta, v, u, omega = state.tolist()
+        a_tw, psi_tw = self.true_wind()  # once: apparent wind and wrenches take it
+        a_aw, psi_aw = apparent_wind(a_tw, psi_tw, theta, v)  # apparent_wind()
+        rudder, sail = self._action.tolist()
+        f = self._forces(state, -rudder, -sail, a_tw, psi_tw)  # viel_from_action's deltas
+        c, s = math.cos(theta), math.sin(theta)  # velocity(), eqs. 1-2
+        return Truth._make((  # in the order of its fields
+            t, np.array([x, y]), np.array([v * c - u * s, v * s + u * c]), np.array([v, u, 0.0]), np.zeros(3),
+            np.array([0.0, 0.0, omega]), theta, 0.0, 0.0, float(heading_from_yaw(state[2])), rudder, sail,
+            awa_from_psi_aw(psi_aw), a_aw, np.array([a_tw * math.cos(psi_tw), a_tw * math.sin(psi_tw)]),
+            np.array([a_aw * math.cos(psi_aw), a_aw * math.sin(psi_aw)]),  # blows to
+            wind.config.speed, wind.direction_from(t), np.zeros(2),
+            self._wrench_arrays(f, theta, v, u, omega, -rudder, -sail, psi_tw)))
+
+    def _forces(self, state, delta_r: float, delta_s: float, a_tw: float, psi_tw: float) -> list:
+        """The values of :meth:`forces` (in the order of ``FORCE_NAMES``) at ``state`` now."""
+        out = np.empty(len(FORCE_NAMES))
+        if not forces_kernel(self._packed(), np.ascontiguousarray(state, dtype=float), delta_r, delta_s, a_tw,
+                             psi_tw, out):
+            raise ValueError(DOMAIN_ERROR)
+        return out.tolist()
 
     def wrenches(self, true_wind=None) -> dict:
         """Body (FLU) wrenches (Fx, Fy, Fz, Mx, My, Mz) [N, N m] of the eq. 4-6 terms, now.
@@ -372,17 +379,23 @@ class VielWorld:
         true_wind : tuple of float, optional
             (a_tw [m/s], psi_tw [rad]) as :meth:`true_wind` gives it, if the caller has it.
         """
-        a_tw, psi_tw = true_wind = self.true_wind() if true_wind is None else true_wind
-        f = self.forces(true_wind=true_wind)
-        p, (_, _, theta, v, u, omega) = self.params, self._state
+        a_tw, psi_tw = self.true_wind() if true_wind is None else true_wind
         delta_r, delta_s = viel_from_action(self._action)
+        _, _, theta, v, u, omega = self._state
+        f = self._forces(self._state, delta_r, delta_s, a_tw, psi_tw)
+        return self._wrench_arrays(f, theta, v, u, omega, delta_r, delta_s, psi_tw)
+
+    def _wrench_arrays(self, f: list, theta, v, u, omega, delta_r: float, delta_s: float,
+                       psi_tw: float) -> dict:
+        """:meth:`wrenches` from the forces ``f`` (:meth:`_forces`) of the state (theta, v, u, omega)."""
+        p = self.params
+        g_s, g_rv, g_ru, hull_wind = f[_G_S], f[_G_RV], f[_G_RU], f[_HULL_WIND]
         zero = np.zeros(6)
-        sail = np.array([f["g_s"] * math.sin(delta_s), 0, 0, 0, 0,
-                         f["g_s"] * (p.p6 - p.p7 * math.cos(delta_s))])
-        rudder = np.array([-f["g_rv"] * p.p11 * math.sin(delta_r), -f["g_ru"] * p.p11 * math.cos(delta_r),
-                           0, 0, 0, -f["g_rv"] * p.p8 * math.cos(delta_r)])
+        sail = np.array([g_s * math.sin(delta_s), 0, 0, 0, 0, g_s * (p.p6 - p.p7 * math.cos(delta_s))])
+        rudder = np.array([-g_rv * p.p11 * math.sin(delta_r), -g_ru * p.p11 * math.cos(delta_r),
+                           0, 0, 0, -g_rv * p.p8 * math.cos(delta_r)])
         damping = np.array([-p.p2 * v * abs(v), -p.p2 * u * abs(u), 0, 0, 0, -p.p3 * omega * v])
-        hull = f["hull_wind"] * np.array([math.cos(psi_tw - theta), math.sin(psi_tw - theta), 0, 0, 0, 0])
+        hull = hull_wind * np.array([math.cos(psi_tw - theta), math.sin(psi_tw - theta), 0, 0, 0, 0])
         return dict(sail_wrench=sail, keel_wrench=zero.copy(), rudder_wrench=rudder, damping_wrench=damping,
                     added_mass_wrench=zero.copy(), restoring_wrench=zero.copy(), hull_wind_wrench=hull)
 

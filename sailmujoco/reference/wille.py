@@ -63,6 +63,7 @@ from .wille_model import TERMS
 STATE = ("x", "y", "phi", "psi", "u", "v", "p", "r", "sigma", "lam")
 _WRENCH_KEYS, _WRENCH_ROWS = wrench_rows(TERMS)
 _N_TERMS = len(TERMS)
+_WRENCH_INDEX = _WRENCH_ROWS.tolist()  # rows of the terms array (a row of zeros after them)
 RK4_MAX_STEP = 0.05  # s, the longest RK4 step: a quarter of the fastest lag (the rudder's T_sigma 0.2 s)
 
 
@@ -465,14 +466,12 @@ class Wille4DOF:
         terms[:_N_TERMS, 3] = frd[:, 2]
         terms[:_N_TERMS, 4] = -frd[:, 4]
         terms[:_N_TERMS, 5] = -frd[:, 3]
-        return Truth(
-            time=t, position=np.array([state[1], state[0]]), velocity=self.ground_velocity(),
-            body_velocity=body, current_body=current_body, rates=rates, yaw=yaw, heel=heel, pitch=0.0,
-            heading=heading, rudder=state[8], sail=state[9], apparent_wind_angle=awa,
-            apparent_wind_speed=aws, true_wind=np.asarray(true_wind[:2], dtype=np.float64),
-            apparent_wind_ce=np.array([vws_u, -vws_v]), wind_speed_10=wind.config.speed,
-            wind_direction_from=wind.direction_from(t), current=np.array(wind.current[:2], dtype=np.float64),
-            wrenches=dict(zip(_WRENCH_KEYS, terms[_WRENCH_ROWS], strict=True)))
+        return Truth._make((  # in the order of its fields
+            t, np.array([state[1], state[0]]), self.ground_velocity(), body, current_body, rates, yaw, heel,
+            0.0, heading, state[8], state[9], awa, aws, np.asarray(true_wind[:2], dtype=np.float64),
+            np.array([vws_u, -vws_v]), wind.config.speed, wind.direction_from(t),
+            np.array(wind.current[:2], dtype=np.float64),
+            dict(zip(_WRENCH_KEYS, map(terms.__getitem__, _WRENCH_INDEX), strict=True))))
 
     def measure(self) -> tuple[dict, dict]:
         """(observation, record) of the world now
