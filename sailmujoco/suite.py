@@ -137,6 +137,7 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
         the_task = TASKS[task](seed=seed, **own_options)
     except TypeError as err:
         raise ValueError(f"bad option for task {task!r}: {err}") from None
+    the_task.control_period = float(control_timestep)  # the instruments sample once per control step
     wind = the_task.wind()
     switches = settings.forces
     if world == "mujoco":

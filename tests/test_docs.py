@@ -131,6 +131,13 @@ def test_extending_runs_as_written_and_does_what_it_says(ran_the_page):
     assert video[4:8] == b"ftyp" and len(video) > 10_000  # an mp4 with frames in it
     assert (folder / "polar_mine" / "polar_make.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
+    # through instruments: the GNSS fix is off the true position by a receiver's error (2.5 m
+    # CEP: within 15 m) but not zero, and the two instruments' keys are there
+    first = namespace["first"]
+    error = np.hypot(*(first["position"] - np.zeros(2)))  # the boat starts at the origin
+    assert 0.0 < error < 15.0
+    assert {"speed_through_water", "true_wind_estimate"} <= set(first)
+
     # your boat: the file holds the robot with a sail 1.2 times larger, and the sail's force is
     # 1.2 times the robot's (½ ρ A C |v|²: same state and wind, coefficients that do not depend
     # on the area)

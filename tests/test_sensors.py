@@ -16,7 +16,11 @@ from sailmujoco.measurement.sensors import (
     Gyro,
     MastheadVane,
     SpeedLog,
+    earth_field,
+    field_in_body,
+    level_heading,
     masthead_flow,
+    tilt_compensated_heading,
     untilted_heading,
     vane_reading,
 )
@@ -95,15 +99,28 @@ def test_untilted_compass_errs_16_74_degrees_heeled_10_at_dip_60_heading_north()
 def test_tilt_compensated_compass_with_a_perfect_inclinometer_reads_the_heading():
     compass = Compass(np.random.default_rng(0), dip=math.radians(66.0), tilt_compensated=True)
     for heel, pitch, heading in ((0.3, -0.1, 1.0), (-0.5, 0.2, -2.5), (0.0, 0.0, 0.1)):
-        rot = matrix_from_euler(heel, pitch, float(yaw_from_heading(heading)))
-        assert compass.measure(rot, heel, pitch) == pytest.approx(heading, abs=1e-12)
+        yaw = float(yaw_from_heading(heading))
+        rot = matrix_from_euler(heel, pitch, yaw)
+        reference = tilt_compensated_heading(rot, math.radians(66.0), heel, pitch)
+        assert reference == pytest.approx(heading, abs=1e-12)
+        assert compass.measure(heel, pitch, yaw) == pytest.approx(heading, abs=1e-12)
+
+
+def test_the_compass_per_step_form_is_the_matrix_form():
+    rng = np.random.default_rng(7)
+    untilted = Compass(rng, dip=1.1, tilt_compensated=False)
+    for heel, pitch, yaw, dip in rng.uniform((-1.0, -0.5, -3.1, -1.5), (1.0, 0.5, 3.1, 1.5), (200, 4)):
+        rot = matrix_from_euler(heel, pitch, yaw)
+        assert field_in_body(heel, pitch, yaw, dip) == pytest.approx(rot.T @ earth_field(dip), abs=1e-14)
+        assert level_heading(field_in_body(heel, pitch, yaw, 1.1), 0.0, 0.0) == pytest.approx(
+            untilted_heading(rot, 1.1), abs=1e-12)
+        assert untilted.measure(heel, pitch, yaw) == pytest.approx(untilted_heading(rot, 1.1), abs=1e-12)
 
 
 def test_compass_noise_and_deviation():
     compass = Compass(np.random.default_rng(4), dip=1.0, tilt_compensated=True, noise=math.radians(2.0),
                       deviation=math.radians(3.0))
-    rot = matrix_from_euler(0.0, 0.0, float(yaw_from_heading(0.5)))
-    readings = np.array([compass.measure(rot, 0.0, 0.0) for _ in range(20000)]) - 0.5
+    readings = np.array([compass.measure(0.0, 0.0, float(yaw_from_heading(0.5))) for _ in range(20000)]) - 0.5
     assert math.degrees(readings.mean()) == pytest.approx(3.0, abs=0.05)
     assert math.degrees(readings.std()) == pytest.approx(2.0, rel=0.03)
 

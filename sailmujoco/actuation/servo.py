@@ -46,7 +46,13 @@ class Deadband:
         self.held = None
 
     def step(self, command: float) -> float:
-        """The target the servo drives to after ``command``."""
+        """The target the servo drives to after ``command``.
+
+        Parameters
+        ----------
+        command : float
+            The command (rad or m).
+        """
         if self.held is None or abs(command - self.held) > self.width:
             self.held = command
         return self.held
@@ -69,7 +75,13 @@ class RateLimit:
         self.position = None
 
     def step(self, command: float) -> float:
-        """The position after one step towards ``command``."""
+        """The position after one step towards ``command``.
+
+        Parameters
+        ----------
+        command : float
+            The command (rad or m).
+        """
         if self.position is None or not self.limited:
             self.position = command
         else:
@@ -92,7 +104,13 @@ class Backlash:
         self.output = None
 
     def step(self, position: float) -> float:
-        """The output after the input moves to ``position``."""
+        """The output after the input moves to ``position``.
+
+        Parameters
+        ----------
+        position : float
+            The input side's position (rad or m).
+        """
         if self.output is None or self.half == 0.0:
             self.output = position
         else:
@@ -121,5 +139,11 @@ class FittedServo:
         self.backlash = Backlash(backlash)
 
     def step(self, command: float) -> float:
-        """The position the servo sets after ``command``."""
+        """The position the servo sets after ``command``.
+
+        Parameters
+        ----------
+        command : float
+            The controller's command (rad or m).
+        """
         return self.backlash.step(self.rate.step(self.deadband.step(quantise(command, self.resolution))))

@@ -41,11 +41,25 @@ class SheetWinch:
         self.length = None
 
     def haul_speed(self, load: float) -> float:
-        """The speed (m/s) at which it hauls in against a sheet load ``load`` (N >= 0)."""
+        """The speed (m/s) at which it hauls in against a sheet load.
+
+        Parameters
+        ----------
+        load : float
+            The sheet's tension, N (>= 0).
+        """
         return self.free_speed * max(0.0, 1.0 - max(load, 0.0) / self.stall_force)
 
     def step(self, command: float, load: float) -> float:
-        """The sheet length after one step towards ``command`` (m) under ``load`` (N)."""
+        """The sheet length after one step towards ``command``.
+
+        Parameters
+        ----------
+        command : float
+            The commanded sheet length, m.
+        load : float
+            The sheet's tension, N.
+        """
         if self.length is None:
             self.length = command
             return self.length

@@ -43,6 +43,8 @@ BOUNDS = {
     "desired_heading": (-PI, PI),
     "desired_course": (-PI, PI),
     "target_position": ("-area", "area"),
+    "speed_through_water": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED),  # instruments: a log's reading
+    "true_wind_estimate": (-MAX_AIR_SPEED, MAX_AIR_SPEED),  # instruments: speed m/s, direction rad
     **{f"true_state.{key}": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED) for key in ("u", "v", "w", "u_r", "v_r")},
     "true_state.yaw": (-PI, PI),
     "true_state.heel": (-PI, PI),

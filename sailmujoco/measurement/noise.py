@@ -80,7 +80,8 @@ class GaussMarkov:
 
 
 class RandomWalk:
-    """A random walk sampled every ``dt``: ``b[k+1] = b[k] + sigma_rw sqrt(dt) w[k]``, from ``start``.
+    """A random walk sampled every ``dt``: ``b[k+1] = b[k] + sigma_rw sqrt(dt) w[k]``, from ``start``
+    (a float, or an array of independent walks).
 
     Parameters
     ----------
@@ -90,18 +91,21 @@ class RandomWalk:
         Sample period, s, > 0.
     rng : numpy.random.Generator
         The stream it draws from.
-    start : float
-        The value at the first sample.
+    start : float or numpy.ndarray
+        The value at the first sample (an array: one walk per entry).
     """
 
-    def __init__(self, sigma_rw: float, dt: float, rng: np.random.Generator, start: float = 0.0):
+    def __init__(self, sigma_rw: float, dt: float, rng: np.random.Generator, start=0.0):
         self.scale = check_number("sigma_rw", sigma_rw) * math.sqrt(check_number("dt", dt, strict=True))
         self.rng = rng
-        self.value = float(start)
+        self.value = np.array(start, dtype=np.float64) if np.ndim(start) else float(start)
 
-    def step(self) -> float:
+    def step(self):
         """Advance one sample; the new value."""
-        self.value += self.scale * float(self.rng.standard_normal())
+        if isinstance(self.value, float):
+            self.value += self.scale * float(self.rng.standard_normal())
+        else:
+            self.value = self.value + self.scale * self.rng.standard_normal(self.value.shape)
         return self.value
 
 
@@ -121,7 +125,8 @@ def smoothing(tau: float, dt: float) -> float:
 
 class LowPass:
     """First-order low-pass filter ``tau dy/dt = x - y``, sampled every ``dt``; it starts at the
-    first input (no transient from zero).
+    first input (no transient from zero). It filters a number or a short vector (a tuple of
+    numbers, each entry on its own), on Python floats: one step costs about a microsecond.
 
     Parameters
     ----------
@@ -136,9 +141,19 @@ class LowPass:
         self.value = None
 
     def step(self, x):
-        """Filter one input; the output."""
-        x = np.asarray(x, dtype=np.float64)
-        self.value = x.copy() if self.value is None else self.value + self.gain * (x - self.value)
+        """Filter one input; the output, of the same kind (a tuple for a sequence).
+
+        Parameters
+        ----------
+        x : float or sequence of float
+            The input.
+        """
+        g, y = self.gain, self.value
+        if np.ndim(x) == 0:
+            self.value = float(x) if y is None else y + g * (float(x) - y)
+        else:
+            x = [float(v) for v in x]
+            self.value = tuple(x) if y is None else tuple(a + g * (b - a) for a, b in zip(y, x, strict=True))
         return self.value
 
 
@@ -157,6 +172,12 @@ class AngleLowPass:
         self.vector = LowPass(tau, dt)
 
     def step(self, angle: float) -> float:
-        """Filter one angle (rad); the output, rad in [-pi, pi]."""
+        """Filter one angle; the output, rad in [-pi, pi].
+
+        Parameters
+        ----------
+        angle : float
+            The input, rad.
+        """
         c, s = self.vector.step((math.cos(angle), math.sin(angle)))
-        return math.atan2(float(s), float(c))
+        return math.atan2(s, c)

@@ -31,7 +31,7 @@ from collections import deque
 import numpy as np
 
 from ..frames import matrix_from_euler, wrap_angle
-from .noise import GaussMarkov, LowPass, RandomWalk, check_number
+from .noise import GaussMarkov, LowPass, check_number
 
 CEP_PER_SIGMA = math.sqrt(2.0 * math.log(2.0))  # CEP / per-axis sigma of a circular normal error
 
@@ -82,6 +82,43 @@ def tilt_compensated_heading(rot, dip: float, heel: float, pitch: float) -> floa
     m = np.asarray(rot, dtype=np.float64).reshape(3, 3).T @ earth_field(dip)
     level = matrix_from_euler(heel, pitch, 0.0) @ m
     return math.atan2(float(level[1]), float(level[0]))
+
+
+def field_in_body(heel: float, pitch: float, yaw: float, dip: float) -> tuple[float, float, float]:
+    """The unit magnetic field of :func:`earth_field` in body axes, ``R^T B`` for
+    ``R = Rz(yaw) Ry(-pitch) Rx(heel)`` (:func:`sailmujoco.frames.matrix_from_euler`), written out
+    on floats: the per-step path of :class:`Compass` (``tests/test_sensors.py`` holds it to the
+    matrix form).
+
+    Parameters
+    ----------
+    heel, pitch, yaw : float
+        The attitude, rad (yaw ENU, counter-clockwise from east).
+    dip : float
+        Magnetic inclination, rad.
+    """
+    horizontal, down = math.cos(dip), math.sin(dip)
+    north_x, north_y = math.sin(yaw) * horizontal, math.cos(yaw) * horizontal  # Rz^T B
+    cp, sp = math.cos(pitch), math.sin(pitch)
+    a0, a2 = cp * north_x - sp * down, -sp * north_x - cp * down  # Ry(-pitch)^T, the vertical -down
+    ch, sh = math.cos(heel), math.sin(heel)
+    return a0, ch * north_y + sh * a2, -sh * north_y + ch * a2
+
+
+def level_heading(m: tuple[float, float, float], heel: float, pitch: float) -> float:
+    """The heading of a body-axes field ``m`` rotated back to the horizontal by ``heel`` and
+    ``pitch`` (``Ry(-pitch) Rx(heel) m``, then ``atan2`` of its y and x), rad.
+
+    Parameters
+    ----------
+    m : tuple of float
+        The field in body axes.
+    heel, pitch : float
+        The tilt taken out, rad (zero: the untilted compass's reading).
+    """
+    ch, sh = math.cos(heel), math.sin(heel)
+    b1, b2 = ch * m[1] - sh * m[2], sh * m[1] + ch * m[2]
+    return math.atan2(b1, math.cos(pitch) * m[0] - math.sin(pitch) * b2)
 
 
 def masthead_flow(rot, velocity, omega_body, r_body, wind) -> np.ndarray:
@@ -164,12 +201,12 @@ class Gnss:
         """
         now = np.array(position[:2], dtype=np.float64), np.array(velocity[:2], dtype=np.float64)
         self.history.append(now)
-        if self.steps % self.every == 0:
+        if self.steps % self.every == 0:  # a new fix: new arrays (a held fix is never written to)
             old_position, old_velocity = self.history[0]
             noise = self.velocity_sigma * self.rng.standard_normal(2)
             self.fix = (old_position + self.error.step(), old_velocity + noise)
         self.steps += 1
-        return self.fix[0].copy(), self.fix[1].copy()
+        return self.fix
 
 
 class Compass:
@@ -201,23 +238,23 @@ class Compass:
         self.deviation = float(deviation)
         self.inclinometer_noise = check_number("inclinometer_noise", inclinometer_noise)
 
-    def measure(self, rot, heel: float, pitch: float) -> float:
+    def measure(self, heel: float, pitch: float, yaw: float) -> float:
         """The heading reported now, rad clockwise from north, wrapped to [-pi, pi).
 
         Parameters
         ----------
-        rot : array_like, shape (3, 3)
-            The true body -> world rotation.
-        heel, pitch : float
-            The true heel and pitch, rad (read by a tilt-compensated compass's inclinometer).
+        heel, pitch, yaw : float
+            The true attitude, rad (a tilt-compensated compass's inclinometer reads heel and
+            pitch with its noise).
         """
+        noise = self.rng.standard_normal(3).tolist()
+        m = field_in_body(heel, pitch, yaw, self.dip)
         if self.tilt_compensated:
-            tilt = heel + self.inclinometer_noise * self.rng.standard_normal(), \
-                pitch + self.inclinometer_noise * self.rng.standard_normal()
-            heading = tilt_compensated_heading(rot, self.dip, *tilt)
+            heading = level_heading(m, heel + self.inclinometer_noise * noise[1],
+                                    pitch + self.inclinometer_noise * noise[2])
         else:
-            heading = untilted_heading(rot, self.dip)
-        return float(wrap_angle(heading + self.deviation + self.noise * self.rng.standard_normal()))
+            heading = level_heading(m, 0.0, 0.0)
+        return float(wrap_angle(heading + self.deviation + self.noise * noise[0]))
 
 
 class Gyro:
@@ -240,7 +277,8 @@ class Gyro:
     def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, bias_walk: float = 0.0,
                  bias: float = 0.0):
         self.rng, self.noise = rng, check_number("noise", noise)
-        self.bias = [RandomWalk(bias_walk, dt, rng, start=bias) for _ in range(3)]
+        self.walk = check_number("bias_walk", bias_walk) * math.sqrt(check_number("dt", dt, strict=True))
+        self.bias = np.full(3, float(bias))
 
     def measure(self, rates) -> np.ndarray:
         """The body rates reported now (roll, pitch, yaw), rad/s.
@@ -250,8 +288,9 @@ class Gyro:
         rates : array_like, shape (3,)
             The true body rates, rad/s.
         """
-        bias = np.array([b.step() for b in self.bias])
-        return np.asarray(rates, dtype=np.float64)[:3] + bias + self.noise * self.rng.standard_normal(3)
+        w = self.rng.standard_normal(6)  # the bias's steps (a random walk, as noise.RandomWalk), the noise
+        self.bias = self.bias + self.walk * w[:3]
+        return np.asarray(rates, dtype=np.float64)[:3] + self.bias + self.noise * w[3:]
 
 
 class MastheadVane:
@@ -282,8 +321,9 @@ class MastheadVane:
         flow_body : array_like, shape (2,) or (3,)
             The air's velocity relative to the masthead, body axes, m/s (:func:`masthead_flow`).
         """
-        flow = np.asarray(flow_body, dtype=np.float64)[:2] + self.noise * self.rng.standard_normal(2)
-        return vane_reading(self.filter.step(flow))
+        wx, wy = self.rng.standard_normal(2).tolist()
+        return vane_reading(self.filter.step((float(flow_body[0]) + self.noise * wx,
+                                              float(flow_body[1]) + self.noise * wy)))
 
 
 class SpeedLog:
@@ -316,4 +356,5 @@ class SpeedLog:
 
 
 __all__ = ["CEP_PER_SIGMA", "Compass", "Gnss", "Gyro", "MastheadVane", "SpeedLog",
-           "earth_field", "masthead_flow", "tilt_compensated_heading", "untilted_heading", "vane_reading"]
+           "earth_field", "field_in_body", "level_heading", "masthead_flow", "tilt_compensated_heading",
+           "untilted_heading", "vane_reading"]

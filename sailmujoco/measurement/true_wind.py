@@ -75,7 +75,7 @@ class TrueWindEstimate:
         velocity_en : array_like, shape (2,)
             The GNSS velocity over ground, m/s east and north.
         """
-        east, north = (float(v) for v in self.filter.step(_over_ground(awa, aws, heading, velocity_en)))
+        east, north = self.filter.step(_over_ground(awa, aws, heading, velocity_en))
         return math.hypot(east, north), math.atan2(-east, -north)
 
 

@@ -6,6 +6,8 @@ namespace) and ``control_timestep``; the ``task.``, ``boat.`` and ``controller.`
 the signatures of the task, the boat's parameter factory and the controller factory; the
 ``waves.`` options are the sea's (:data:`sailmujoco.options.WAVE_OPTIONS`), the MuJoCo world's
 ``waves`` physics option (a run without them is in calm water, its id as without the namespace).
+The ``sensors.`` and ``actuators.`` figures become the task's ``sensors`` and ``actuators``
+options, a dict each (a run without them has the id it had before they existed).
 """
 
 from __future__ import annotations
@@ -20,8 +22,10 @@ from pathlib import Path
 
 import numpy as np
 
+from ..actuation.options import ActuatorOptions
 from ..boat.schema import is_boat_file
 from ..errors import one_line
+from ..measurement.instruments import SensorOptions
 from ..names import check_known, nearest
 from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
 from ..tomlfile import read_toml
@@ -51,7 +55,10 @@ NAMESPACE_HELP = {  # where an option of [options], [grid] or [zip] goes
     "boat": "the boat's parameter factory",
     "controller": "the controller's factory",
     "waves": "the sea: hs (m), tp (s), spectrum, direction_from_deg, gamma, spreading, n_components, seed",
+    "sensors": "the instruments' figures (preset = 'perfect' or 'typical', then any figure over it)",
+    "actuators": "the actuators' figures (preset = 'perfect' or 'typical', then any figure over it)",
 }
+FIGURES = ("sensors", "actuators")  # namespaces that become one task option each (a dict of figures)
 NAMESPACES = tuple(NAMESPACE_HELP)
 TABLES = ("options", "grid", "zip")
 RUN_KEYS = {"time_limit": "duration", "seed": "seeds"}  # suite.load's keywords a run sets itself
@@ -118,7 +125,9 @@ def _allowed_options(spec: dict) -> dict:
     boat = spec["boat"]
     allowed = {"env": set(env_options()), "task": set(task_options(spec["task"])),
                "boat": set() if is_boat_file(boat) else _parameters(BOATS[boat]),
-               "waves": set(WAVE_OPTIONS)}
+               "waves": set(WAVE_OPTIONS),
+               "sensors": {f.name for f in dataclasses.fields(SensorOptions)} | {"preset"},
+               "actuators": {f.name for f in dataclasses.fields(ActuatorOptions)} | {"preset"}}
     accepted = factory_options(controller_factory(spec["controller"]))
     allowed["controller"] = set(accepted) if accepted is not None else None
     return allowed
@@ -221,6 +230,11 @@ def _check_tables(out: dict, source: str) -> None:
     lengths = {len(v) for v in out["zip"].values()}
     if len(lengths) > 1:
         raise SweepError(f"[zip] axes must have equal lengths, got {sorted(lengths)}")
+    keys = [key for table in TABLES for key in out[table]]
+    for ns in FIGURES:
+        if f"task.{ns}" in keys and any(key.startswith(f"{ns}.") for key in keys):
+            raise SweepError(f"give the {ns} once, as task.{ns} or as {ns}.<figure> keys, not both "
+                             f"({source})")
 
 
 def _distinct(runs: list[dict], key: str) -> list[dict]:
@@ -393,6 +407,10 @@ def expand(spec: dict) -> list[dict]:
                                             if k.startswith(ns + ".")}
                 if not run["waves_options"]:  # calm water: the run as without the namespace
                     del run["waves_options"]
+                for ns in FIGURES:  # the task's option, a dict of figures (none given: as without)
+                    figures = run.pop(f"{ns}_options")
+                    if figures:
+                        run["task_options"] = {**run["task_options"], ns: figures}
                 run["run_id"] = run_id(run)
                 runs.append(run)
     return runs

@@ -39,7 +39,9 @@ from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..measurement.observation import TrueState, observation_and_record
+from ..actuation.options import actuator_options, fitted_servos
+from ..measurement.instruments import Instruments, sensor_options
+from ..measurement.observation import TrueState, observation_and_record, observe, record
 from .world import World
 
 
@@ -89,13 +91,23 @@ class SailTask(control.Task):
         Hand out the privileged ``true_state`` (force wrenches, the true wind, ...) in the
         observation. The full-state controllers of the papers read it, so the suite keeps it
         by default; the Gymnasium adapter leaves it out by default.
+    sensors : str, dict or SensorOptions, optional
+        The boat's instruments (:mod:`sailmujoco.measurement.instruments`): ``"perfect"`` (the
+        default: every reading the true value), ``"typical"``, or a dict of figures over a
+        preset. With any but perfect, the observation's measured keys are the instruments'
+        readings, and ``speed_through_water`` and ``true_wind_estimate`` join them; the truth
+        stays in ``true_state``.
+    actuators : str, dict or ActuatorOptions, optional
+        The boat's actuators (:mod:`sailmujoco.actuation.options`): ``"perfect"`` (the default:
+        the command reaches the world's servo unchanged), ``"typical"`` (rate limit, deadband,
+        backlash and resolution in front of it), or a dict of figures over a preset.
     """
 
     name = "task"
     duration = 60.0  # s, default episode length
 
     def __init__(self, seed: int | None = None, heading_jitter_deg: float = 5.0,
-                 include_true_state: bool = True):
+                 include_true_state: bool = True, sensors=None, actuators=None):
         if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer))
                                  or seed < 0):
             raise ValueError(f"seed must be None or an integer >= 0, got {seed!r}")
@@ -109,8 +121,14 @@ class SailTask(control.Task):
         self.heading_jitter = math.radians(heading_jitter_deg)
         self.stopped = None
         self.last_observation = None
-        self._measured = None  # (time, observation, record) of the state, see measurement()
+        self._measured = None  # (time, observation, record, true observation) of the state: measurement()
         self._records: list[dict] = []
+        self.sensors = sensor_options(sensors)
+        self.control_period = 0.1  # s, set by the environment (suite.load): the instruments' sample period
+        self._episodes = 0
+        self._instruments = None
+        self.actuators = actuator_options(actuators)
+        self._servos = None
 
     # ---- hooks for subclasses
     def wind(self):
@@ -184,6 +202,11 @@ class SailTask(control.Task):
         self.last_reward_terms = {}
         self._measured = None
         self._floor = self.reward_floor(physics)
+        if not self.sensors.perfect:  # each episode its own noise, the task's other streams untouched
+            self._instruments = Instruments(self.sensors, self.control_period, self.seed, self._episodes)
+        if not self.actuators.perfect:
+            self._servos = fitted_servos(self.actuators, *action_bounds(physics), self.control_period)
+        self._episodes += 1
 
     def before_step(self, action, physics):
         """Check the action and set it on the world's actuators.
@@ -199,6 +222,9 @@ class SailTask(control.Task):
         action = np.asarray(action, dtype=float)
         if action.shape != (2,) or not (math.isfinite(action[0]) and math.isfinite(action[1])):
             raise ValueError(f"{self.name}: action must be 2 finite numbers [rudder, sail], got {action}")
+        if self._servos is not None:  # the fitted servos between the command and the world's
+            rudder, sail = self._servos
+            action = np.array([rudder.step(float(action[0])), sail.step(float(action[1]))])
         physics.set_control(action)
 
     def after_step(self, physics):
@@ -249,10 +275,20 @@ class SailTask(control.Task):
         measured = self._measured
         if measured is not None and measured[0] == physics.time():
             return measured[1], measured[2]  # nothing moved since
-        obs, row = observation_and_record(physics)
+        if self._instruments is None and not self.sensors.perfect:  # asked before any episode (a spec)
+            self._instruments = Instruments(self.sensors, self.control_period, self.seed, self._episodes)
+        if self._instruments is None:
+            obs, row = observation_and_record(physics)
+            true_obs = obs
+        else:  # the instruments read the truth; the reward and the record (metrics) stay the truth's
+            truth = physics.truth()
+            true_obs, row = observe(truth), record(truth)
+            obs = dict(true_obs)
+            for key, value in self._instruments.read(truth).items():
+                obs[key] = np.asarray(value, dtype=np.float64)
         for key, value in self.references(physics).items():
-            obs[key] = np.asarray(value, dtype=np.float64)
-        self._measured = (physics.time(), obs, row)
+            obs[key] = true_obs[key] = np.asarray(value, dtype=np.float64)
+        self._measured = (physics.time(), obs, row, true_obs)
         return obs, row
 
     def get_observation(self, physics):
@@ -306,7 +342,8 @@ class SailTask(control.Task):
         """
         observation = self.measurement(physics)[0]
         self.last_observation = observation
-        self.last_reward_terms = self.reward_terms(physics, observation)
+        # the reward is the true boat's (with instruments, the observation is what they read)
+        self.last_reward_terms = self.reward_terms(physics, self._measured[3])
         return float(sum(self.last_reward_terms.values()))
 
     def stop_reward(self, steps: int) -> float:
