@@ -41,11 +41,12 @@ a11 u q, the heave force of pitching at speed, is kept with it.
 q in these two forces is the rate of the hull's pitch angle
 (:func:`sailmujoco.forces.damping.pitch_angle_rate`, as the pitch damping takes it), not the
 body rate: upright they are the same, but in a steady heeled turn body q = r sin(phi) and body
-w = -v_h sin(phi) (the leeway seen in heeled axes) are steady, and -a33 w q would be a steady surge force a33 v_h r sin^2(phi) of the high-frequency
-heave added mass in a motion that is horizontal. On the 300 kg viel_boat, whose a33 is 3.2
-times its mass, that force slowed the position-keeping runs of Viel's controller, which turns
-all the time, from a mean 1.43 to 1.01 m/s; with the pitch angle's rate it is zero in any steady
-turn, and in head waves it is the upright form's.
+w = -v_h sin(phi) (the leeway seen in heeled axes) are steady, and -a33 w q would be a steady
+surge force a33 v_h r sin^2(phi) of the high-frequency heave added mass in a motion that is
+horizontal. On the 300 kg viel_boat, whose a33 is 3.2 times its mass, that force slowed the
+position-keeping runs of Viel's controller, which turns all the time, from a mean 1.43 to
+1.01 m/s; with the pitch angle's rate it is zero in any steady turn, and in head waves it is the
+upright form's.
 
 The moment left out is the pitch Munk moment (a33 - a11) u w. It multiplies the heave added
 mass a33 by the forward speed and acts as a *steady* moment: it turns a trim angle theta into a
