@@ -129,8 +129,9 @@ def test_the_example_sweep_file_runs_as_printed(tmp_path, capsys):
     example = tomllib.loads(text)
     assert set(example) == set(sweep.TOP_KEYS) - {"trajectory_rate"}  # every key but one shown
     assert {key.split(".")[0] for table in ("options", "grid", "zip") for key in example[table]} \
-        == set(sweep.NAMESPACES) - {"boat", "waves"}
+        == set(sweep.NAMESPACES) - {"boat", "waves", "sensors", "actuators"}
     assert '# "waves.hs" = ' in text  # shown, commented out: a sea makes the example slow
+    assert '# "sensors.preset" = ' in text and '# "actuators.preset" = ' in text  # shown, as options
     out = tmp_path / "out"
     assert main(["sweep", str(path), "--scheduler", "serial", "--out", str(out), "--no-progress"]) == 0
     table = pd.read_parquet(out / "results.parquet")

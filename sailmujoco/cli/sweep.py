@@ -29,6 +29,9 @@ metrics = ["mean_surge", "heading_error_rms"]  # default: every metric of the ta
 "task.wind_speed" = 5.0            # task.: the task's options (m/s)
 # "waves.hs" = 1.0                 # waves.: a sea state (sailmujoco.options.WaveConfig:
                                    # hs, tp, spectrum, direction_from_deg, ...); slower than calm
+# "sensors.preset" = "typical"     # sensors.: the instruments the controller reads through
+                                   # (perfect, typical, or any figure over them)
+# "actuators.preset" = "typical"   # actuators.: the servos its commands go through
 
 [grid]                        # every combination of these lists
 "controller.kp" = [0.5, 1.0]       # controller.: the controller factory's keywords
