@@ -1,7 +1,13 @@
 """The exceptions of a run: the simulation left the valid state space (:class:`SimulationStopped`),
-or the controller failed (:class:`ControllerFailed`, raised by :func:`act`)."""
+or the controller failed (:class:`ControllerFailed`, raised by :func:`act`); and the one check of
+a number the user gives (:func:`check_number`), its error one line naming the option and range,
+and of a set of figures given by a preset's name or a dict (:func:`preset_figures`,
+:func:`check_figures`)."""
 
 from __future__ import annotations
+
+import dataclasses
+import math
 
 import numpy as np
 
@@ -113,3 +119,98 @@ def act(policy, timestep, *, controller: str, time: float, shape: tuple = (2,)):
         raise ControllerFailed(controller, time, "gave a bad action",
                                f"{shown} ({expected} finite numbers expected)")
     return action
+
+
+def check_number(name: str, value, low: float | None = None, high: float | None = None, *,
+                 low_open: bool = False, unit: str = "") -> float:
+    """``value`` as a float if it is a finite number within [low, high] (or (low, high] with
+    ``low_open``); otherwise a ValueError naming the option and the accepted range.
+
+    Parameters
+    ----------
+    name : str
+        The option's name, for the error message.
+    value : object
+        The value given; a bool is refused.
+    low, high : float or None
+        Bounds, inclusive (``low`` exclusive with ``low_open``); None: unbounded on that side.
+    low_open : bool
+        Refuse ``value == low``.
+    unit : str
+        Unit named in the error message.
+    """
+    given = value
+    ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
+    if ok:
+        value = float(value)
+        ok = math.isfinite(value) and (low is None or (value > low if low_open else value >= low)) \
+            and (high is None or value <= high)
+    if not ok:
+        lo = "" if low is None else f"{'>' if low_open else '>='} {low:g}"
+        hi = "" if high is None else f"<= {high:g}"
+        allowed = " and ".join(p for p in (lo, hi) if p)
+        rng = f" {allowed}{' ' + unit if unit else ''}" if allowed else (f" (in {unit})" if unit else "")
+        raise ValueError(f"{name} must be a finite number{rng}, got {given!r}")
+    return value
+
+
+def preset_figures(value, presets: dict, kind: str, noun: str):
+    """A figures object (the instruments', the actuators') from a preset's name, a dict of its
+    fields over ``presets["perfect"]`` (or over the preset its ``"preset"`` key names), an object
+    of the presets' class, or None (``perfect``); a figure given makes it no longer perfect.
+
+    Parameters
+    ----------
+    value : str, dict, the presets' class or None
+        What the caller gave.
+    presets : dict
+        Preset name -> figures object; ``"perfect"`` among them.
+    kind : str
+        The option's name in a message ("sensors").
+    noun : str
+        One figure, with its article, in a message ("a sensor figure").
+    """
+    cls = type(presets["perfect"])
+    if value is None:
+        return presets["perfect"]
+    if isinstance(value, cls):
+        return value
+    if isinstance(value, str):
+        if value not in presets:
+            raise ValueError(f"{kind} must be one of {sorted(presets)} or a dict of figures, got {value!r}")
+        return presets[value]
+    if isinstance(value, dict):
+        figures = dict(value)
+        base = preset_figures(figures.pop("preset", "perfect"), presets, kind, noun)
+        known = {f.name for f in dataclasses.fields(cls)}
+        for key in figures:
+            if key not in known:
+                raise ValueError(f"{kind}.{key} is not {noun}; choose from {sorted(known)}")
+        if figures and "perfect" not in figures:
+            figures["perfect"] = False
+        return dataclasses.replace(base, **figures)
+    raise ValueError(f"{kind} must be a preset name, a dict of figures or {cls.__name__}, got {value!r}")
+
+
+def check_figures(figures, kind: str, limits: dict) -> None:
+    """Every field of a figures object checked: a bool field true or false, a number finite and
+    at least its lower bound (``limits``: name -> (low, strict); 0 where not named), one line
+    naming ``<kind>.<field>`` otherwise.
+
+    Parameters
+    ----------
+    figures : dataclass instance
+        The figures.
+    kind : str
+        The option's name in a message ("sensors").
+    limits : dict
+        Lower bounds other than ``>= 0``.
+    """
+    for f in dataclasses.fields(figures):
+        value = getattr(figures, f.name)
+        if f.type in (bool, "bool"):
+            if not isinstance(value, bool):
+                raise ValueError(f"{kind}.{f.name} must be true or false, got {value!r}")
+            continue
+        low, strict = limits.get(f.name, (0.0, False))
+        check_number(f"{kind}.{f.name}", value, low, low_open=strict)

@@ -16,8 +16,9 @@ servo of :mod:`.servo` in front of it, with a small boat's figures:
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass
 
+from ..errors import check_figures, preset_figures
 from .servo import FittedServo
 
 
@@ -50,13 +51,7 @@ class ActuatorOptions:
     sail_resolution: float = 0.0
 
     def __post_init__(self):
-        if not isinstance(self.perfect, bool):
-            raise ValueError(f"actuators.perfect must be true or false, got {self.perfect!r}")
-        for f in fields(self)[1:]:
-            value = getattr(self, f.name)
-            ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-            if not ok or value < 0:
-                raise ValueError(f"actuators.{f.name} must be a finite number >= 0, got {value!r}")
+        check_figures(self, "actuators", {})
 
 
 PRESETS = {
@@ -76,27 +71,7 @@ def actuator_options(value=None) -> ActuatorOptions:
     value : str, dict, ActuatorOptions or None
         What the caller gave.
     """
-    if value is None:
-        return PRESETS["perfect"]
-    if isinstance(value, ActuatorOptions):
-        return value
-    if isinstance(value, str):
-        if value not in PRESETS:
-            raise ValueError(f"actuators must be one of {sorted(PRESETS)} or a dict of figures, "
-                             f"got {value!r}")
-        return PRESETS[value]
-    if isinstance(value, dict):
-        figures = dict(value)
-        base = actuator_options(figures.pop("preset", "perfect"))
-        known = {f.name for f in fields(ActuatorOptions)}
-        for key in figures:
-            if key not in known:
-                raise ValueError(f"actuators.{key} is not an actuator figure; "
-                                 f"choose from {sorted(known)}")
-        if figures and "perfect" not in figures:
-            figures["perfect"] = False
-        return replace(base, **figures)
-    raise ValueError(f"actuators must be a preset name, a dict of figures or ActuatorOptions, got {value!r}")
+    return preset_figures(value, PRESETS, "actuators", "an actuator figure")
 
 
 def fitted_servos(options: ActuatorOptions, low, high, dt: float) -> tuple[FittedServo, FittedServo]:

@@ -9,14 +9,7 @@ parameter zero the command passes unchanged, bit for bit.
 
 from __future__ import annotations
 
-import math
-
-
-def _non_negative(name: str, value) -> float:
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-    if not ok or value < 0:
-        raise ValueError(f"{name} must be a finite number >= 0, got {value!r}")
-    return float(value)
+from ..errors import check_number
 
 
 def quantise(command: float, step: float) -> float:
@@ -42,7 +35,7 @@ class Deadband:
     """
 
     def __init__(self, width: float):
-        self.width = _non_negative("deadband", width)
+        self.width = check_number("deadband", width, 0.0)
         self.held = None
 
     def step(self, command: float) -> float:
@@ -70,7 +63,7 @@ class RateLimit:
     """
 
     def __init__(self, rate: float, dt: float):
-        self.max_step = _non_negative("rate_limit", rate) * _non_negative("dt", dt)
+        self.max_step = check_number("rate_limit", rate, 0.0) * check_number("dt", dt, 0.0)
         self.limited = self.max_step > 0.0
         self.position = None
 
@@ -100,7 +93,7 @@ class Backlash:
     """
 
     def __init__(self, width: float):
-        self.half = _non_negative("backlash", width) / 2.0
+        self.half = check_number("backlash", width, 0.0) / 2.0
         self.output = None
 
     def step(self, position: float) -> float:
@@ -133,7 +126,7 @@ class FittedServo:
 
     def __init__(self, dt: float, rate_limit: float = 0.0, deadband: float = 0.0, backlash: float = 0.0,
                  resolution: float = 0.0):
-        self.resolution = _non_negative("resolution", resolution)
+        self.resolution = check_number("resolution", resolution, 0.0)
         self.deadband = Deadband(deadband)
         self.rate = RateLimit(rate_limit, dt)
         self.backlash = Backlash(backlash)

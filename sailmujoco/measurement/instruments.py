@@ -25,10 +25,11 @@ and the sea's streams are untouched and one instrument's figures do not move ano
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass, fields, replace
+from dataclasses import asdict, dataclass
 
 import numpy as np
 
+from ..errors import check_figures, preset_figures
 from .sensors import CEP_PER_SIGMA, Compass, Gnss, Gyro, MastheadVane, SpeedLog
 from .true_wind import TrueWindEstimate
 
@@ -95,17 +96,7 @@ class SensorOptions:
     log_noise: float = 0.0
 
     def __post_init__(self):
-        for f in fields(self):
-            value = getattr(self, f.name)
-            if f.type in (bool, "bool"):
-                if not isinstance(value, bool):
-                    raise ValueError(f"sensors.{f.name} must be true or false, got {value!r}")
-                continue
-            low, strict = LIMITS.get(f.name, (0.0, False))
-            number = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-            if not number or value < low or (strict and value == low):
-                bound = f"> {low:g}" if strict else f">= {low:g}"
-                raise ValueError(f"sensors.{f.name} must be a finite number {bound}, got {value!r}")
+        check_figures(self, "sensors", LIMITS)
         if abs(self.dip_deg) > 90.0:
             raise ValueError(f"sensors.dip_deg must be within -90 to 90, got {self.dip_deg!r}")
 
@@ -133,25 +124,7 @@ def sensor_options(value=None) -> SensorOptions:
     value : str, dict, SensorOptions or None
         What the caller gave.
     """
-    if value is None:
-        return PRESETS["perfect"]
-    if isinstance(value, SensorOptions):
-        return value
-    if isinstance(value, str):
-        if value not in PRESETS:
-            raise ValueError(f"sensors must be one of {sorted(PRESETS)} or a dict of figures, got {value!r}")
-        return PRESETS[value]
-    if isinstance(value, dict):
-        figures = dict(value)
-        base = sensor_options(figures.pop("preset", "perfect"))
-        known = {f.name for f in fields(SensorOptions)}
-        for key in figures:
-            if key not in known:
-                raise ValueError(f"sensors.{key} is not a sensor figure; choose from {sorted(known)}")
-        if figures and "perfect" not in figures:
-            figures["perfect"] = False
-        return replace(base, **figures)
-    raise ValueError(f"sensors must be a preset name, a dict of figures or SensorOptions, got {value!r}")
+    return preset_figures(value, PRESETS, "sensors", "a sensor figure")
 
 
 class Instruments:

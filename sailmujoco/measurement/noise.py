@@ -3,8 +3,7 @@
 * :class:`GaussMarkov` — a first-order Gauss-Markov error (an Ornstein-Uhlenbeck process sampled
   exactly): stationary standard deviation ``sigma``, autocorrelation ``exp(-|lag| / tau)``. The
   error of a GNSS fix and a compass's slowly wandering deviation are of this kind; white noise
-  would average away over a few samples, which a real receiver's error does not (the point
-  PX4 issue 24358 makes about its own GNSS simulation).
+  would average away over a few samples, which a real receiver's error does not.
 * :class:`RandomWalk` — a gyro's bias: ``b(t + dt) = b(t) + sigma_rw sqrt(dt) w``.
 * :class:`LowPass` and :class:`AngleLowPass` — a first-order filter ``tau dy/dt = x - y``
   sampled exactly (the step response reaches ``1 - exp(-t / tau)``); an angle is filtered as
@@ -20,26 +19,7 @@ import math
 
 import numpy as np
 
-
-def check_number(name: str, value: float, low: float = 0.0, strict: bool = False) -> float:
-    """``value`` as a float, or one ValueError naming ``name`` and the accepted range.
-
-    Parameters
-    ----------
-    name : str
-        The value's name in the message.
-    value : float
-        The value.
-    low : float
-        The least value accepted.
-    strict : bool
-        True: ``low`` itself is refused.
-    """
-    ok = isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
-    if not ok or value < low or (strict and value == low):
-        sign = ">" if strict else ">="
-        raise ValueError(f"{name} must be a finite number {sign} {low:g}, got {value!r}")
-    return float(value)
+from ..errors import check_number
 
 
 class GaussMarkov:
@@ -65,9 +45,9 @@ class GaussMarkov:
     """
 
     def __init__(self, sigma: float, tau: float, dt: float, rng: np.random.Generator, shape=()):
-        self.sigma = check_number("sigma", sigma)
-        self.tau = check_number("tau", tau, strict=True)
-        dt = check_number("dt", dt, strict=True)
+        self.sigma = check_number("sigma", sigma, 0.0)
+        self.tau = check_number("tau", tau, 0.0, low_open=True)
+        dt = check_number("dt", dt, 0.0, low_open=True)
         self.a = math.exp(-dt / self.tau)
         self.b = self.sigma * math.sqrt(1.0 - self.a * self.a)
         self.rng = rng
@@ -96,7 +76,8 @@ class RandomWalk:
     """
 
     def __init__(self, sigma_rw: float, dt: float, rng: np.random.Generator, start=0.0):
-        self.scale = check_number("sigma_rw", sigma_rw) * math.sqrt(check_number("dt", dt, strict=True))
+        dt = check_number("dt", dt, 0.0, low_open=True)
+        self.scale = check_number("sigma_rw", sigma_rw, 0.0) * math.sqrt(dt)
         self.rng = rng
         self.value = np.array(start, dtype=np.float64) if np.ndim(start) else float(start)
 
@@ -119,7 +100,7 @@ def smoothing(tau: float, dt: float) -> float:
     dt : float
         Sample period, s, > 0.
     """
-    tau, dt = check_number("tau", tau), check_number("dt", dt, strict=True)
+    tau, dt = check_number("tau", tau, 0.0), check_number("dt", dt, 0.0, low_open=True)
     return 1.0 if tau == 0.0 else 1.0 - math.exp(-dt / tau)
 
 

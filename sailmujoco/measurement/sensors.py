@@ -30,8 +30,9 @@ from collections import deque
 
 import numpy as np
 
+from ..errors import check_number
 from ..frames import matrix_from_euler, wrap_angle
-from .noise import GaussMarkov, LowPass, check_number
+from .noise import GaussMarkov, LowPass
 
 CEP_PER_SIGMA = math.sqrt(2.0 * math.log(2.0))  # CEP / per-axis sigma of a circular normal error
 
@@ -62,8 +63,7 @@ def untilted_heading(rot, dip: float) -> float:
     dip : float
         Magnetic inclination, rad.
     """
-    m = np.asarray(rot, dtype=np.float64).reshape(3, 3).T @ earth_field(dip)
-    return math.atan2(float(m[1]), float(m[0]))
+    return tilt_compensated_heading(rot, dip, 0.0, 0.0)
 
 
 def tilt_compensated_heading(rot, dip: float, heel: float, pitch: float) -> float:
@@ -181,11 +181,11 @@ class Gnss:
 
     def __init__(self, dt: float, rng: np.random.Generator, rate: float = 5.0, latency: float = 0.0,
                  position_sigma: float = 0.0, position_tau: float = 60.0, velocity_sigma: float = 0.0):
-        dt = check_number("dt", dt, strict=True)
-        self.every = max(1, int(round(1.0 / (check_number("rate", rate, strict=True) * dt))))
-        self.delay = int(round(check_number("latency", latency) / dt))
+        dt = check_number("dt", dt, 0.0, low_open=True)
+        self.every = max(1, int(round(1.0 / (check_number("rate", rate, 0.0, low_open=True) * dt))))
+        self.delay = int(round(check_number("latency", latency, 0.0) / dt))
         self.rng = rng
-        self.velocity_sigma = check_number("velocity_sigma", velocity_sigma)
+        self.velocity_sigma = check_number("velocity_sigma", velocity_sigma, 0.0)
         self.error = GaussMarkov(position_sigma, position_tau, self.every * dt, rng, shape=(2,))
         self.history: deque = deque(maxlen=self.delay + 1)
         self.steps = 0
@@ -234,9 +234,9 @@ class Compass:
         if not ok:
             raise ValueError(f"dip must be a finite angle within [-pi/2, pi/2] rad, got {dip!r}")
         self.rng, self.dip, self.tilt_compensated = rng, float(dip), bool(tilt_compensated)
-        self.noise = check_number("noise", noise)
+        self.noise = check_number("noise", noise, 0.0)
         self.deviation = float(deviation)
-        self.inclinometer_noise = check_number("inclinometer_noise", inclinometer_noise)
+        self.inclinometer_noise = check_number("inclinometer_noise", inclinometer_noise, 0.0)
 
     def measure(self, heel: float, pitch: float, yaw: float) -> float:
         """The heading reported now, rad clockwise from north, wrapped to [-pi, pi).
@@ -276,8 +276,9 @@ class Gyro:
 
     def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, bias_walk: float = 0.0,
                  bias: float = 0.0):
-        self.rng, self.noise = rng, check_number("noise", noise)
-        self.walk = check_number("bias_walk", bias_walk) * math.sqrt(check_number("dt", dt, strict=True))
+        self.rng, self.noise = rng, check_number("noise", noise, 0.0)
+        dt = check_number("dt", dt, 0.0, low_open=True)
+        self.walk = check_number("bias_walk", bias_walk, 0.0) * math.sqrt(dt)
         self.bias = np.full(3, float(bias))
 
     def measure(self, rates) -> np.ndarray:
@@ -310,7 +311,7 @@ class MastheadVane:
     """
 
     def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, tau: float = 0.0):
-        self.rng, self.noise = rng, check_number("noise", noise)
+        self.rng, self.noise = rng, check_number("noise", noise, 0.0)
         self.filter = LowPass(tau, dt)
 
     def measure(self, flow_body) -> tuple[float, float]:
@@ -342,7 +343,7 @@ class SpeedLog:
     def __init__(self, rng: np.random.Generator, scale_error: float = 0.0, noise: float = 0.0):
         if not (isinstance(scale_error, (int, float)) and math.isfinite(scale_error) and scale_error > -1.0):
             raise ValueError(f"scale_error must be a finite number > -1, got {scale_error!r}")
-        self.rng, self.scale, self.noise = rng, 1.0 + float(scale_error), check_number("noise", noise)
+        self.rng, self.scale, self.noise = rng, 1.0 + float(scale_error), check_number("noise", noise, 0.0)
 
     def measure(self, surge_through_water: float) -> float:
         """The speed through the water reported now, m/s.

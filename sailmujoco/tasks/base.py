@@ -40,42 +40,10 @@ from dm_env import specs
 
 from .. import frames
 from ..actuation.options import actuator_options, fitted_servos
+from ..errors import check_number
 from ..measurement.instruments import Instruments, sensor_options
 from ..measurement.observation import TrueState, observation_and_record, observe, record
 from .world import World
-
-
-def check_number(name: str, value, low: float | None = None, high: float | None = None, *,
-                 low_open: bool = False, unit: str = "") -> float:
-    """``value`` as a float if it is a finite number within [low, high] (or (low, high] with
-    ``low_open``); otherwise a ValueError naming the option and the accepted range.
-
-    Parameters
-    ----------
-    name : str
-        The option's name, for the error message.
-    value : object
-        The value given; a bool is refused.
-    low, high : float or None
-        Bounds, inclusive (``low`` exclusive with ``low_open``); None: unbounded on that side.
-    low_open : bool
-        Refuse ``value == low``.
-    unit : str
-        Unit named in the error message.
-    """
-    given = value
-    ok = isinstance(value, (int, float, np.integer, np.floating)) and not isinstance(value, bool)
-    if ok:
-        value = float(value)
-        ok = math.isfinite(value) and (low is None or (value > low if low_open else value >= low)) \
-            and (high is None or value <= high)
-    if not ok:
-        lo = "" if low is None else f"{'>' if low_open else '>='} {low:g}"
-        hi = "" if high is None else f"<= {high:g}"
-        allowed = " and ".join(p for p in (lo, hi) if p)
-        rng = f" {allowed}{' ' + unit if unit else ''}" if allowed else (f" (in {unit})" if unit else "")
-        raise ValueError(f"{name} must be a finite number{rng}, got {given!r}")
-    return value
 
 
 class SailTask(control.Task):
@@ -202,11 +170,17 @@ class SailTask(control.Task):
         self.last_reward_terms = {}
         self._measured = None
         self._floor = self.reward_floor(physics)
-        if not self.sensors.perfect:  # each episode its own noise, the task's other streams untouched
-            self._instruments = Instruments(self.sensors, self.control_period, self.seed, self._episodes)
+        self._instruments = self._new_instruments()  # each episode its own noise
         if not self.actuators.perfect:
             self._servos = fitted_servos(self.actuators, *action_bounds(physics), self.control_period)
         self._episodes += 1
+
+    def _new_instruments(self) -> Instruments | None:
+        """The instruments of the episode about to start, on streams of their own (the task's
+        other streams untouched); None for perfect sensors."""
+        if self.sensors.perfect:
+            return None
+        return Instruments(self.sensors, self.control_period, self.seed, self._episodes)
 
     def before_step(self, action, physics):
         """Check the action and set it on the world's actuators.
@@ -275,8 +249,8 @@ class SailTask(control.Task):
         measured = self._measured
         if measured is not None and measured[0] == physics.time():
             return measured[1], measured[2]  # nothing moved since
-        if self._instruments is None and not self.sensors.perfect:  # asked before any episode (a spec)
-            self._instruments = Instruments(self.sensors, self.control_period, self.seed, self._episodes)
+        if self._instruments is None:  # asked before any episode (a spec): this episode's set
+            self._instruments = self._new_instruments()
         if self._instruments is None:
             obs, row = observation_and_record(physics)
             true_obs = obs
