@@ -154,10 +154,10 @@ def check_number(name: str, value, low: float | None = None, high: float | None 
     return value
 
 
-def preset_figures(value, presets: dict, kind: str, noun: str):
+def preset_figures(value, presets: dict, kind: str, noun: str, base=None):
     """A figures object (the instruments', the actuators') from a preset's name, a dict of its
-    fields over ``presets["perfect"]`` (or over the preset its ``"preset"`` key names), an object
-    of the presets' class, or None (``perfect``); a figure given makes it no longer perfect.
+    fields over ``base`` (or over the preset its ``"preset"`` key names), an object of the
+    presets' class, or None (``base``); a figure given makes it no longer perfect.
 
     Parameters
     ----------
@@ -169,10 +169,14 @@ def preset_figures(value, presets: dict, kind: str, noun: str):
         The option's name in a message ("sensors").
     noun : str
         One figure, with its article, in a message ("a sensor figure").
+    base : the presets' class, optional
+        What None gives and a dict without ``"preset"`` is over (default ``presets["perfect"]``;
+        a boat file's own figures, for a boat that has them).
     """
     cls = type(presets["perfect"])
+    base = presets["perfect"] if base is None else base
     if value is None:
-        return presets["perfect"]
+        return base
     if isinstance(value, cls):
         return value
     if isinstance(value, str):
@@ -181,7 +185,8 @@ def preset_figures(value, presets: dict, kind: str, noun: str):
         return presets[value]
     if isinstance(value, dict):
         figures = dict(value)
-        base = preset_figures(figures.pop("preset", "perfect"), presets, kind, noun)
+        if "preset" in figures:
+            base = preset_figures(figures.pop("preset"), presets, kind, noun)
         known = {f.name for f in dataclasses.fields(cls)}
         for key in figures:
             if key not in known:

@@ -30,6 +30,7 @@ import math
 import numpy as np
 
 from .boat.catalogue import BOATS, get_boat
+from .boat.fitted import actuator_options, sensor_options
 from .boat.params import BoatParams
 from .names import check_known
 from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
@@ -133,6 +134,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
         time_limit = check_number("time_limit", time_limit, 0.0, low_open=True, unit="s")
     settings, own_options, params = _split(task, physics, options)
     params = _boat_params(boat, params, settings.boat_options)
+    own_options["sensors"] = sensor_options(own_options.get("sensors"), base=params.sensors)
+    own_options["actuators"] = actuator_options(own_options.get("actuators"), base=params.actuators)
     try:
         the_task = TASKS[task](seed=seed, **own_options)
     except TypeError as err:

@@ -13,6 +13,7 @@ from sailmujoco import suite, sweep
 from sailmujoco.boat import file as boat_file
 from sailmujoco.boat import hull, mjcf
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.boat.fitted_file import FITTED
 from sailmujoco.boat.schema import KEYS, SECTION_TYPES
 from sailmujoco.cli.main import main
 from sailmujoco.constants import GRAVITY
@@ -39,7 +40,7 @@ def _qpos(boat, steps=200):
 
 
 def test_the_schema_covers_every_field_of_the_parameter_types():
-    nested = {"hull", "keel", "rudder", "sail", "sources"}
+    nested = {"hull", "keel", "rudder", "sail", "sources", "sensors", "actuators"}  # sections of their own
     for section, kind in SECTION_TYPES.items():
         names = {f.name for f in dataclasses.fields(kind)} - (nested if section == "boat" else set())
         assert names == {k.name for k in KEYS[section]}, section
@@ -50,7 +51,8 @@ def test_exported_and_read_back_equals_the_built_in(name, tmp_path):
     path = _export(name, tmp_path)
     text = path.read_text()
     data = tomllib.loads(text)
-    assert set(data) == {*KEYS, "sources"}
+    assert set(data) == {*KEYS, *FITTED, "sources"}
+    assert data["sensors"]["perfect"] is True and data["actuators"]["perfect"] is True  # as built
     for line in text.splitlines():  # every key carries its unit
         if line and not line.startswith(("#", "[")):
             assert "  # [" in line or line.split(" = ")[0] in data["sources"], line

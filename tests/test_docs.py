@@ -156,3 +156,23 @@ def test_extending_runs_as_written_and_does_what_it_says(ran_the_page):
     boats = boats.sort_values("task.wind_speed")
     assert set(boats["status"]) == {"ok"}
     assert boats["steady_speed"].iloc[1] > boats["steady_speed"].iloc[0]  # more wind, faster
+
+    # its instruments and actuators: the file holds the edited figures over the typical preset
+    fitted = suite.load(str(folder / "my_fitted_boat.toml"), "heading_hold")
+    assert fitted.task.sensors.compass_noise_deg == 4.0 and fitted.task.sensors.gnss_cep == 2.5
+    assert fitted.task.actuators.rudder_60deg_s == 0.25 and fitted.task.actuators.sail_full_range_s == 1.3
+    assert fitted.physics.params.sail.area == mine.physics.params.sail.area  # my_boat, fitted
+    video = (folder / "my_fitted_boat.mp4").read_bytes()
+    assert video[4:8] == b"ftyp" and len(video) > 10_000
+    # Gymnasium read the instruments: the speed log and the true-wind estimate are there
+    assert {"speed_through_water", "true_wind_estimate"} <= set(namespace["gym_observation"])
+    # each sweep run is the file's boat with the grid's figure over the file's figures: the same
+    # run from Python, with that figure given to the task, gives the same metric to the bit
+    runs = pd.read_parquet(folder / "sweeps" / "my_fitted_boat" / "results.parquet")
+    assert len(runs) == 4 and set(runs["status"]) == {"ok"}
+    row = runs[(runs["task.sensors"].astype(str) == str({"compass_noise_deg": 4.0})) & (runs["seed"] == 1)]
+    assert len(row) == 1
+    again = suite.load(str(folder / "my_fitted_boat.toml"), "heading_hold", seed=1, time_limit=20.0,
+                       sensors={"compass_noise_deg": 4.0})
+    suite.rollout(again, sweep.make_controller("my_ctrl.py:make", again))
+    assert again.task.metrics()["heading_error_rms"] == row["heading_error_rms"].iloc[0]

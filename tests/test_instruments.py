@@ -7,7 +7,9 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from sailmujoco.measurement.instruments import PRESETS, Instruments, SensorOptions, sensor_options
+from sailmujoco.boat.fitted import SENSOR_PRESETS as PRESETS
+from sailmujoco.boat.fitted import SensorOptions, sensor_options
+from sailmujoco.measurement.instruments import Instruments
 
 
 def _truth(t=0.0, heading_deg=30.0):

@@ -4,11 +4,15 @@ Applied in this order to a command (:class:`FittedServo`): quantisation (the com
 channel or a servo's potentiometer can resolve), deadband (a change smaller than it leaves the
 servo where it is), rate limit (the rated speed: an RC servo turns 60 degrees in 0.07-0.2 s), and
 backlash (the output shaft follows the motor only once the gear play is taken up). With every
-parameter zero the command passes unchanged, bit for bit.
+parameter zero the command passes unchanged, bit for bit. :func:`fitted_servos` makes a boat's
+rudder and sail servos from its figures (:class:`sailmujoco.boat.fitted.ActuatorOptions`).
 """
 
 from __future__ import annotations
 
+import math
+
+from ..boat.fitted import ActuatorOptions
 from ..errors import check_number
 
 
@@ -140,3 +144,28 @@ class FittedServo:
             The controller's command (rad or m).
         """
         return self.backlash.step(self.rate.step(self.deadband.step(quantise(command, self.resolution))))
+
+
+def fitted_servos(options: ActuatorOptions, low, high, dt: float) -> tuple[FittedServo, FittedServo]:
+    """The rudder's and the sail's fitted servos for commands within ``[low, high]`` (the world's
+    action bounds: rudder rad, sail rad or sheet m), stepped every ``dt``.
+
+    Parameters
+    ----------
+    options : ActuatorOptions
+        The figures.
+    low, high : sequence of float
+        The two commands' bounds.
+    dt : float
+        Control period, s.
+    """
+    o = options
+    rudder_rate = 0.0 if o.rudder_60deg_s == 0 else math.radians(60.0) / o.rudder_60deg_s
+    rudder = FittedServo(dt, rate_limit=rudder_rate, deadband=math.radians(o.rudder_deadband_deg),
+                         backlash=math.radians(o.rudder_backlash_deg),
+                         resolution=math.radians(o.rudder_resolution_deg))
+    span = float(high[1]) - float(low[1])
+    sail_rate = 0.0 if o.sail_full_range_s == 0 else span / o.sail_full_range_s
+    sail = FittedServo(dt, rate_limit=sail_rate, deadband=o.sail_deadband * span,
+                       backlash=o.sail_backlash * span, resolution=o.sail_resolution * span)
+    return rudder, sail

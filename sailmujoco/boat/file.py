@@ -16,6 +16,7 @@ from dataclasses import fields
 from pathlib import Path
 
 from .catalogue import BUILT_IN, get_boat
+from .fitted_file import FITTED, fitted_lines
 from .params import BoatParams
 from .schema import KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key
 from .sources import SOURCES as BUILT_IN_SOURCES
@@ -59,6 +60,8 @@ def boat_toml(params: BoatParams, name: str | None = None) -> str:
             value = name if key.name == "name" else getattr(holder, key.name)
             lines += _key_lines(section, key, value,
                                 _source(params, section, key.name, value, ref_holder))
+    for section in FITTED:
+        lines += fitted_lines(getattr(params, section), section, params.sources)
     notes = {k: str(v) for k, v in params.sources.items() if "." not in str(k)}
     if notes:
         lines += ["", f"[{SOURCES}]  # notes on the boat as a whole"]

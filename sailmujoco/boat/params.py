@@ -13,6 +13,7 @@ from dataclasses import dataclass, field, fields, replace
 import numpy as np
 
 from .. import constants as c
+from .fitted import ActuatorOptions, SensorOptions, actuator_options, sensor_options
 from .hull import HullShape
 
 
@@ -192,6 +193,13 @@ class BoatParams:
         Kinematic viscosities, m^2/s.
     paper_righting : {"sin_cos", "sin"}
         The reduced models' righting moment: eq. 20 (Wille) or Saoud eq. 4.
+    sensors : SensorOptions, str or dict
+        The instruments a controller reads through
+        (:func:`sailmujoco.boat.fitted.sensor_options`: a preset's name or a dict
+        of figures is made into one); default ``perfect``. A task's own ``sensors=`` overrides it.
+    actuators : ActuatorOptions, str or dict
+        The servos the commands go through (:func:`sailmujoco.boat.fitted.actuator_options`);
+        default ``perfect``. A task's own ``actuators=`` overrides it.
     sources : dict
         Field -> where its number comes from (not compared).
     """
@@ -220,9 +228,13 @@ class BoatParams:
     nu_water: float = c.NU_WATER
     nu_air: float = c.NU_AIR
     paper_righting: str = "sin_cos"
+    sensors: SensorOptions = SensorOptions()
+    actuators: ActuatorOptions = ActuatorOptions()
     sources: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
+        object.__setattr__(self, "sensors", sensor_options(self.sensors))  # a preset or a dict: made one
+        object.__setattr__(self, "actuators", actuator_options(self.actuators))
         _check_positive(self, ("mass", "gm_t", "wetted_surface", "roll_frequency"))
         if any((not math.isfinite(v)) or v <= 0 for v in self.inertia):
             raise ValueError(f"{self.name}: inertia must be positive, got {self.inertia}")

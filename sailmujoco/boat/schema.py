@@ -2,8 +2,9 @@
 
 A boat file is TOML with one section per parameter type: ``[boat]`` (:class:`BoatParams`'s own
 numbers), ``[hull]`` (:class:`~sailmujoco.boat.hull.HullShape`), ``[keel]`` and ``[rudder]``
-(:class:`~sailmujoco.boat.params.Foil`), ``[sail]`` (:class:`~sailmujoco.boat.params.Sail`) and
-an optional ``[sources]`` table of notes. Every number is SI, angles in radians; arrays are
+(:class:`~sailmujoco.boat.params.Foil`), ``[sail]`` (:class:`~sailmujoco.boat.params.Sail`), the
+optional ``[sensors]`` and ``[actuators]`` (the boat as fitted, :mod:`sailmujoco.boat.fitted_file`)
+and an optional ``[sources]`` table of notes. Every number is SI, angles in radians; arrays are
 TOML arrays. :func:`read_boat` refuses a bad file with one line per problem, each naming the
 file, the section and the key. Writing one: :mod:`sailmujoco.boat.file`.
 """
@@ -18,6 +19,7 @@ from pathlib import Path
 
 from ..names import nearest, unknown_message
 from ..tomlfile import read_toml
+from .fitted_file import FITTED, read_fitted
 from .hull import HullShape
 from .params import BoatParams, Foil, Sail
 
@@ -204,8 +206,9 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
     if not any(isinstance(data.get(section), dict) for section in KEYS):
         raise ValueError(f"{where} is not a boat file: it has none of the sections "
                          f"{', '.join(f'[{s}]' for s in KEYS)} (`sailmujoco boat export` writes one)")
-    problems = [unknown_message("section", name, [*KEYS, SOURCES], f"boat file {where}")
-                for name in data if name not in KEYS and name != SOURCES]
+    known = [*KEYS, *FITTED, SOURCES]
+    problems = [unknown_message("section", name, known, f"boat file {where}")
+                for name in data if name not in known]
     values = {}
     for section, keys in KEYS.items():
         table = data.get(section)
@@ -215,12 +218,14 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
             continue
         values[section], found = _section(table, keys, f"{where}: [{section}]")
         problems += found
+    fitted, found = read_fitted(data, where)
+    problems += found
     notes = data.get(SOURCES, {})
     if not isinstance(notes, dict) or not all(isinstance(v, str) for v in notes.values()):
         problems.append(f"{where}: [{SOURCES}] must be a table of strings")
     if problems:
         raise ValueError("\n".join(problems))
-    return _build(values, dict(notes), where)
+    return _build(values, dict(notes), where).with_(**fitted)
 
 
 def _section(table: dict, keys: tuple, where: str) -> tuple[dict, list]:
@@ -334,6 +339,6 @@ def comment_sources(text: str) -> dict:
             section = header.group(1)
             continue
         found = _SOURCE_COMMENT.match(line)
-        if found and section in KEYS:
+        if found and (section in KEYS or section in FITTED):
             sources[f"{section}.{found.group(1)}"] = found.group(2)
     return sources

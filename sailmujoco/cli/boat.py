@@ -3,6 +3,7 @@
 ::
 
     sailmujoco boat export wille_yacht --out my_boat.toml   # every key with its unit and source
+    sailmujoco boat export saoud_robot --sensors typical --actuators typical --out fitted.toml
     sailmujoco boat check my_boat.toml --out results/boat/my_boat --wind 6
 
 ``check`` prints the numbers of :func:`sailmujoco.design.check.check_boat` and writes ``gz.png``;
@@ -20,6 +21,7 @@ from .arguments import HelpFormatter, file_argument, number, out_folder
 
 EXAMPLES = """examples:
   sailmujoco boat export saoud_robot --out my_boat.toml   # every key with its unit and source
+  sailmujoco boat export saoud_robot --sensors typical --actuators typical --out my_boat.toml
   sailmujoco boat check my_boat.toml                      # numbers, gz.png, speeds in 6 m/s
   sailmujoco boat check my_boat.toml --wind 4 --out results/boat/mine
 """
@@ -50,6 +52,11 @@ def add_parser(sub) -> None:
     export.add_argument("name", help="a registered boat (wille_yacht, saoud_robot, viel_boat) "
                                      "or a boat file")
     export.add_argument("--out", metavar="FILE", help="the file to write (default: stdout)")
+    for section, what in (("sensors", "instruments the controller reads through"),
+                          ("actuators", "servos the commands go through")):
+        export.add_argument(f"--{section}", choices=("perfect", "typical"), default=None,
+                            help=f"the [{section}] section's preset: the {what} (default: the "
+                                 "boat's own, perfect for a built-in boat)")
     export.set_defaults(func=run_cli)
     check = actions.add_parser("check", help="validate a boat file; its displacement, draft, LCB, "
                                              "GM_t, GZ curve, periods and speeds",
@@ -70,7 +77,8 @@ def run_cli(args) -> int:
     Parameters
     ----------
     args : argparse.Namespace
-        ``boat_command`` ("export": ``name``, ``out``; "check": ``file``, ``out``, ``wind``).
+        ``boat_command`` ("export": ``name``, ``out``, ``sensors``, ``actuators``; "check":
+        ``file``, ``out``, ``wind``).
 
     Returns
     -------
@@ -82,7 +90,9 @@ def run_cli(args) -> int:
     from ..boat.schema import is_boat_file
 
     if args.boat_command == "export":
-        text = boat_toml(get_boat(args.name))
+        params = get_boat(args.name)
+        fitted = {k: getattr(args, k) for k in ("sensors", "actuators") if getattr(args, k, None)}
+        text = boat_toml(params.with_(**fitted) if fitted else params)
         if args.out is None:
             sys.stdout.write(text)
         else:

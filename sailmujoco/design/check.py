@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 import tempfile
+import textwrap
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -27,6 +28,7 @@ import numpy as np
 from ..boat import hull as hull_geometry
 from ..boat.catalogue import get_boat
 from ..boat.file import write_boat
+from ..boat.fitted_file import fitted_summary
 from ..boat.params import BoatParams
 from ..constants import GRAVITY
 from ..forces import stability
@@ -90,6 +92,9 @@ class BoatCheck:
         True wind angles of the speed runs, rad.
     speed, steady_heel : tuple of float
         Steady speed (m/s) and heel (rad) at each TWA; NaN where the run did not finish.
+    sensors, actuators : str
+        The boat's instruments and actuators as fitted, one line each
+        (:func:`sailmujoco.boat.fitted_file.fitted_summary`).
     figure : Path or None
         The GZ figure written.
     """
@@ -120,6 +125,8 @@ class BoatCheck:
     twa: tuple
     speed: tuple
     steady_heel: tuple
+    sensors: str = ""
+    actuators: str = ""
     figure: Path | None = None
 
     def text(self) -> str:
@@ -149,6 +156,8 @@ class BoatCheck:
             "CG, no sway added mass (T = 2 pi sqrt((I_G + A44) / C44))",
             f"              heave {self.heave_period:.2f} s, pitch {self.pitch_period:.2f} s "
             "(T = 2 pi sqrt((I + A) / C))",
+            _wrapped("sensors", self.sensors),
+            _wrapped("actuators", self.actuators),
             f"steady speed  in {self.wind:g} m/s true wind ({SPEED_CONTROLLER} sail law + heading "
             f"rudder; mean of the last {polar.STEADY_WINDOW_S:g} s of {self.duration:g} s runs):",
         ]
@@ -156,6 +165,11 @@ class BoatCheck:
             lines.append(f"  TWA {deg(twa):5.0f} deg: " + ("did not finish" if not np.isfinite(speed)
                          else f"{speed:.2f} m/s ({speed / KNOT:.2f} kn), heel {deg(abs(heel)):.1f} deg"))
         return "\n".join(lines)
+
+
+def _wrapped(label: str, text: str) -> str:
+    """``label`` in the report's first 14 columns and ``text`` wrapped at 100 beside it."""
+    return textwrap.fill(text, 100, initial_indent=f"{label:14s}", subsequent_indent=" " * 14)
 
 
 def _signed(x: float) -> str:
@@ -213,6 +227,7 @@ def check_boat(path_or_params, wind: float = 6.0, out=None, *, twa_deg=DEFAULT_T
         gz_max_heel=float(heel[i_max]), vanishing_heel=vanishing_angle(heel, gz),
         **natural_periods(p), wind=float(wind), duration=float(duration),
         twa=tuple(math.radians(a) for a in twa_deg), speed=speeds[0], steady_heel=speeds[1],
+        sensors=fitted_summary(p.sensors, "sensors"), actuators=fitted_summary(p.actuators, "actuators"),
         figure=None if folder is None else folder / "gz.png")
     if folder is not None:
         plot_gz(result, folder / "gz.png")

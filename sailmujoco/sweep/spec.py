@@ -22,10 +22,9 @@ from pathlib import Path
 
 import numpy as np
 
-from ..actuation.options import ActuatorOptions
+from ..boat.fitted import ActuatorOptions, SensorOptions
 from ..boat.schema import is_boat_file
 from ..errors import one_line
-from ..measurement.instruments import SensorOptions
 from ..names import check_known, nearest
 from ..options import WAVE_OPTIONS, PhysicsOptions, literal_fields
 from ..tomlfile import read_toml

@@ -39,9 +39,10 @@ from dm_control.rl import control
 from dm_env import specs
 
 from .. import frames
-from ..actuation.options import actuator_options, fitted_servos
+from ..actuation.servo import fitted_servos
+from ..boat.fitted import actuator_options, sensor_options
 from ..errors import check_number
-from ..measurement.instruments import Instruments, sensor_options
+from ..measurement.instruments import Instruments
 from ..measurement.observation import TrueState, observation_and_record, observe, record
 from .world import World
 
@@ -60,15 +61,16 @@ class SailTask(control.Task):
         observation. The full-state controllers of the papers read it, so the suite keeps it
         by default; the Gymnasium adapter leaves it out by default.
     sensors : str, dict or SensorOptions, optional
-        The boat's instruments (:mod:`sailmujoco.measurement.instruments`): ``"perfect"`` (the
-        default: every reading the true value), ``"typical"``, or a dict of figures over a
+        The boat's instruments (:mod:`sailmujoco.boat.fitted`): ``"perfect"`` (the default,
+        unless the boat has its own: every reading the true value), ``"typical"``, or a dict of figures over a
         preset. With any but perfect, the observation's measured keys are the instruments'
         readings, and ``speed_through_water`` and ``true_wind_estimate`` join them; the truth
         stays in ``true_state``.
     actuators : str, dict or ActuatorOptions, optional
-        The boat's actuators (:mod:`sailmujoco.actuation.options`): ``"perfect"`` (the default:
-        the command reaches the world's servo unchanged), ``"typical"`` (rate limit, deadband,
-        backlash and resolution in front of it), or a dict of figures over a preset.
+        The boat's actuators (:mod:`sailmujoco.boat.fitted`): ``"perfect"`` (the default, unless
+        the boat has its own: the command reaches the world's servo unchanged), ``"typical"``
+        (rate limit, deadband, backlash and resolution in front of it), or a dict of figures over
+        a preset.
     """
 
     name = "task"
