@@ -258,3 +258,22 @@ def test_gl_context_failure_names_the_fix(monkeypatch):
     for fix in FIXES:
         assert fix in str(info.value)
     assert "EGL device" in str(info.value)
+
+
+def test_a_video_with_instruments_draws_the_true_boat_and_the_fixes_beside_it(tmp_path):
+    """In a paper world the boat is drawn where it is, not where the GNSS says: under the same
+    commands the frames of a run with typical sensors show the same boat as the run with perfect
+    ones (instruments move no physics), while the panel differs by the fixes and the readings."""
+    def fixed(env):
+        return lambda timestep: np.array([0.02, 0.4])  # reads nothing: the same commands in both
+
+    frames = {}
+    for sensors in ("perfect", "typical"):
+        rec = video.record("wille_yacht", "heading_hold", fixed, tmp_path / f"{sensors}.mp4", seconds=2.0,
+                           world="paper", fps=10, width=W, height=H, camera="side", seed=0, sensors=sensors,
+                           overlay=True)
+        frames[sensors] = read_frames(rec.path).astype(float)
+    scene = W - video.panel.panel_width(W)
+    a, b = frames["perfect"][:, :, :scene - 16], frames["typical"][:, :, :scene - 16]  # clear of the
+    assert np.abs(a - b).mean() < 0.2  # codec's blocks that straddle the panel's edge: the same boat
+    assert np.abs(frames["perfect"][:, :, scene:] - frames["typical"][:, :, scene:]).mean() > 0.5

@@ -130,3 +130,42 @@ def test_scene_pictures_leave_the_physics_alone(boat):
     sea = model.geom("sea_surface").id
     assert model.geom_contype[sea] == 0 and model.geom_conaffinity[sea] == 0
     assert model.body_mass[model.geom_bodyid[sea]] == 0.0  # the world body
+
+
+def test_the_panel_sets_the_instruments_readings_beside_the_truth():
+    """A GNSS fix 3 m east and 4 m north of the boat is 5 m off; a compass reading 2.5 deg to
+    starboard of the true heading errs +2.5 deg; the vane's own numbers are printed; and the
+    fixes are drawn on the map in their own colour, where perfect sensors draw none."""
+    from sailmujoco.frames import heading_from_yaw
+    from sailmujoco.video.camera import yaw_of
+
+    _, snap = _beam_reach_snapshot()
+    heading = float(heading_from_yaw(yaw_of(snap.rotation)))
+    snap.measured = {"position": snap.position[:2] + [3.0, 4.0], "heading": heading + math.radians(2.5),
+                     "awa": math.radians(-41.0), "aws": 5.25}
+    lines = panel.text_lines(snap, snap.references)
+    assert "GNSS 5.0 m off, compass +2.5°" in lines and "vane 5.2 m/s, AWA -41°" in lines
+    track = np.array([snap.position[:2] - [0.0, 10.0], snap.position[:2]])
+    fixes = track + [3.0, 4.0]
+    pictures = {}
+    for name, drawn in (("measured", fixes), ("perfect", None)):
+        view = panel.MapView(track=track, position=snap.position[:2], heading=heading, wind=snap.wind[:2],
+                             hull_length=1.5, references={}, fixes=drawn)
+        frame = np.zeros((480, 640, 3), np.uint8)
+        pictures[name] = panel.draw_panel(frame, np.zeros((480, 640 - 206, 3), np.uint8), "", lines, [], view)
+    pink = [(p == panel.FIXES).all(axis=2).sum() for p in (pictures["measured"], pictures["perfect"])]
+    assert pink[0] > 20 and pink[1] == 0
+    # the map reaches the fixes as it reaches the track
+    centre, half = panel.map_frame(panel.MapView(track=track, position=track[-1], heading=0.0,
+                                                 wind=np.zeros(2), hull_length=0.1, references={},
+                                                 fixes=fixes + [30.0, 0.0]))
+    assert np.all(np.abs(fixes + [30.0, 0.0] - centre) <= half)
+
+
+def test_measured_of_reads_the_instruments_and_nothing_from_perfect_sensors():
+    perfect = suite.load("saoud_robot", "heading_hold", seed=0).reset().observation
+    assert panel.measured_of(perfect) is None
+    sensed = suite.load("saoud_robot", "heading_hold", seed=0, sensors="typical").reset().observation
+    got = panel.measured_of(sensed)
+    np.testing.assert_array_equal(got["position"], sensed["position"])
+    assert got["heading"] == sensed["heading"] and got["aws"] == sensed["apparent_wind_speed"]

@@ -90,7 +90,8 @@ class SailTask(control.Task):
         self.random = np.random.default_rng(seed)
         self.heading_jitter = math.radians(heading_jitter_deg)
         self.stopped = None
-        self.last_observation = None
+        self.last_observation = None  # the last observation handed out (the instruments' readings)
+        self.last_true_observation = None  # ... and the same state's true observation
         self._measured = None  # (time, observation, record, true observation) of the state: measurement()
         self._records: list[dict] = []
         self.sensors = sensor_options(sensors)
@@ -168,7 +169,7 @@ class SailTask(control.Task):
         physics.place((0.0, 0.0), float(frames.yaw_from_heading(heading)), self.initial_speed())
         self.stopped = None
         self._records = []
-        self.last_observation = None
+        self.last_observation = self.last_true_observation = None
         self.last_reward_terms = {}
         self._measured = None
         self._floor = self.reward_floor(physics)
@@ -276,6 +277,7 @@ class SailTask(control.Task):
             The world the task runs on (:class:`~sailmujoco.tasks.world.World`).
         """
         obs = self.measurement(physics)[0]
+        self.last_true_observation = self._measured[3]  # the same state, as the truth has it
         self._measured = None
         self.last_observation = obs
         return self.observation_of(obs)

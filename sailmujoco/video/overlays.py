@@ -15,6 +15,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from .panel import FIXES
+
 FORCES = ("sail", "keel", "rudder")
 COLOURS = {"sail": (0.95, 0.15, 0.1, 1.0), "keel": (0.45, 1.0, 0.1, 1.0),
            "rudder": (1.0, 0.55, 0.0, 1.0), "wind": (0.3, 0.95, 1.0, 1.0),
@@ -176,14 +178,17 @@ def decorate(scene, snap, *, masthead, sites: dict, h: float, force_scale: float
 
 
 # ----------------------------------------------------------------------------- key and note
-def legend(forces: bool) -> list[tuple[str, tuple, str]]:
+def legend(forces: bool, measured: bool = False) -> list[tuple[str, tuple, str]]:
     """The colour key of the panel: the arrows drawn (the sail, keel and rudder forces with
-    ``forces``, the true wind), and the map's track, heading and desired heading or course.
+    ``forces``, the true wind), and the map's track, heading and desired heading or course, and
+    with ``measured`` the GNSS fixes.
 
     Parameters
     ----------
     forces : bool
         Whether the force arrows are drawn.
+    measured : bool
+        Whether the instruments' readings are drawn beside the truth.
 
     Returns
     -------
@@ -198,6 +203,8 @@ def legend(forces: bool) -> list[tuple[str, tuple, str]]:
     entries.append(("wind", rgb(COLOURS["wind"]), "box"))
     entries += [("track", (255, 214, 90), "line"), ("heading", (255, 255, 255), "line"),
                 ("desired", (120, 255, 140), "dash")]
+    if measured:
+        entries.append(("GNSS fixes", FIXES, "dot"))
     return entries
 
 

@@ -10,6 +10,11 @@ and under the map a north arrow, a scale bar and the true wind (a cyan arrow whe
 to, its speed beside it, m/s). The map is centred on the boat and reaches the whole track,
 the start and the target, at least :data:`MAP_HULLS` hull lengths each way.
 
+With instruments that are not perfect the map also shows the GNSS fixes reported so far
+(pink dots) beside the true track, and the text what the instruments read beside the truth:
+the fix's distance from the true position, the compass against the true heading, the vane
+against the true apparent wind at the masthead.
+
 The text (:func:`text_lines`) under the map: the labels, time, heading with its reference,
 speed, heel, true and apparent wind, rudder and sail; then the colour key; then, for a run that
 stopped early, the reason in red. Compass angles are printed as three digits, clockwise from
@@ -33,6 +38,7 @@ TRACK = (255, 214, 90)
 DESIRED = (120, 255, 140)
 WIND = (77, 242, 255)
 RED = (255, 90, 70)
+FIXES = (255, 120, 220)  # the GNSS fixes (measured) beside the true track
 
 
 def panel_width(width: int) -> int:
@@ -67,6 +73,8 @@ class MapView:
         ``target_position`` (m).
     target : dict, optional
         ``{"position": (x, y), "radii": (d_T, d_M), "start": (x, y)}``, m.
+    fixes : numpy.ndarray, shape (k, 2), optional
+        The GNSS fixes reported so far, m (None: perfect sensors, nothing measured to draw).
     """
 
     track: np.ndarray
@@ -76,6 +84,7 @@ class MapView:
     hull_length: float
     references: dict
     target: dict | None = None
+    fixes: np.ndarray | None = None
 
 
 def compass(angle: float) -> str:
@@ -98,6 +107,23 @@ def wind_from(wind) -> float:
         (east, north) velocity, where it blows to, m/s.
     """
     return math.atan2(-float(wind[0]), -float(wind[1])) % (2.0 * math.pi)
+
+
+def measured_of(observation) -> dict | None:
+    """What the instruments reported in a task's ``observation``: the GNSS fix ``position``
+    (m, world x-y), the compass ``heading`` (rad) and the vane's ``awa`` (rad) and ``aws``
+    (m/s); None where the observation holds the truth (perfect sensors: no speed log in it).
+
+    Parameters
+    ----------
+    observation : dict or None
+        A task's observation (the last one handed to the controller).
+    """
+    if observation is None or "speed_through_water" not in observation:
+        return None
+    return {"position": np.asarray(observation["position"], float)[:2].copy(),
+            "heading": float(observation["heading"]), "awa": float(observation["apparent_wind_angle"]),
+            "aws": float(observation["apparent_wind_speed"])}
 
 
 def text_lines(snap, references: dict, target: dict | None = None) -> list[str]:
@@ -133,6 +159,12 @@ def text_lines(snap, references: dict, target: dict | None = None) -> list[str]:
               f"true wind {speed:.1f} m/s from {compass(wind_from(snap.wind))}",
               f"apparent {snap.aws:.1f} m/s, AWA {math.degrees(snap.awa):+.0f}°",
               f"rudder {math.degrees(snap.rudder):+.1f}°  sail {math.degrees(snap.sail):+.1f}°"]
+    measured = getattr(snap, "measured", None)
+    if measured is not None:
+        off = float(np.hypot(*(np.asarray(measured["position"], float) - snap.position[:2])))
+        error = math.degrees(math.remainder(measured["heading"] - heading, 2.0 * math.pi))
+        lines += [f"GNSS {off:.1f} m off, compass {error:+.1f}°",
+                  f"vane {measured['aws']:.1f} m/s, AWA {math.degrees(measured['awa']):+.0f}°"]
     return lines
 
 
@@ -212,7 +244,7 @@ def nice_length(length: float) -> float:
 
 def map_frame(view: MapView) -> tuple[np.ndarray, float]:
     """(centre (2,), half-width) of the map, m: centred on the boat (its heading line always
-    shows), wide enough for the track, the start and the target's outer circle.
+    shows), wide enough for the track, the GNSS fixes, the start and the target's outer circle.
 
     Parameters
     ----------
@@ -221,6 +253,8 @@ def map_frame(view: MapView) -> tuple[np.ndarray, float]:
     """
     centre = np.asarray(view.position, float)[:2]
     points = [np.asarray(view.track, float).reshape(-1, 2)]
+    if view.fixes is not None and len(view.fixes):
+        points.append(np.asarray(view.fixes, float).reshape(-1, 2))
     reach = 0.0
     if view.target is not None:
         goal = np.asarray(view.target["position"], float)
@@ -304,6 +338,10 @@ def draw_map(draw, box: tuple[int, int, int], view: MapView, typeface) -> int:
         _map_target(draw, view.target, to_px, scale, view.position, line)
     if len(view.track) > 1:
         draw.line([to_px(p) for p in view.track], fill=TRACK, width=line, joint="curve")
+    if view.fixes is not None:
+        dot = max(1.5, 1.2 * line)
+        for x, y in (to_px(p) for p in view.fixes):
+            draw.ellipse((x - dot, y - dot, x + dot, y + dot), fill=FIXES)
     _map_boat(draw, view, to_px, size, line)
     unit = typeface.size
     mid = top + size + 1.5 * unit  # the strip's middle
@@ -351,6 +389,10 @@ def _key(draw, x: int, y: int, rows, typeface) -> int:
                 draw.rectangle((at, mid - 0.3 * size, at + 0.6 * size, mid + 0.3 * size), fill=colour)
             elif kind == "dash":
                 _dashed(draw, (at, mid), (at + 1.2 * size, mid), colour, 2, 0.25 * size)
+            elif kind == "dot":
+                for dx in (0.2, 0.6, 1.0):
+                    r = 0.12 * size
+                    draw.ellipse((at + dx * size - r, mid - r, at + dx * size + r, mid + r), fill=colour)
             else:
                 draw.line((at, mid, at + 1.2 * size, mid), fill=colour, width=2)
             draw.text((at + 1.6 * size, y), name, font=typeface, fill=(225, 225, 225))

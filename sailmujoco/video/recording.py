@@ -27,6 +27,7 @@ from ..errors import ControllerFailed, act
 from ..progress import Progress
 from .camera import ELEVATION_DEG
 from .gl import import_gl
+from .panel import measured_of
 from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snapshot_physics
 
 
@@ -307,10 +308,17 @@ def _sail(env, policy, name: str, frames: _Frames,
     timestep = env.reset()
     start_loop = time.perf_counter()
 
-    def now() -> Snapshot:
-        return snapshot_physics(physics, env.task.references(physics))
+    def now() -> Snapshot:  # the true boat now; the instruments' readings held since the control step
+        snap = snapshot_physics(physics, env.task.references(physics))
+        snap.measured = measured_of(env.task.last_observation)
+        return snap
 
-    frames.emit(now() if mujoco_world else snapshot_observation(timestep.observation))
+    def at_control_step() -> Snapshot:  # a paper world: the true state at the control step
+        snap = snapshot_observation(env.task.last_true_observation)
+        snap.measured = measured_of(timestep.observation)
+        return snap
+
+    frames.emit(now() if mujoco_world else at_control_step())
     hook = (frames_between_substeps(physics, lambda: frames.emit(now()), frames.due)
             if mujoco_world else nullcontext())
     with hook:
@@ -321,7 +329,7 @@ def _sail(env, policy, name: str, frames: _Frames,
                 return start_loop, failure
             timestep = env.step(action)
             if not mujoco_world:  # sample and hold at the control steps
-                snap = snapshot_observation(timestep.observation)
+                snap = at_control_step()
                 while (t := frames.due()) is not None and snap.time >= t - 1e-9:
                     frames.emit(snap)
     return start_loop, None

@@ -58,6 +58,9 @@ class Snapshot:
     references : dict
         The task's references (``desired_heading``, ``desired_course`` in rad, compass;
         ``target_position`` in m), as its observation gives them.
+    measured : dict or None
+        What the boat's instruments last reported (:func:`sailmujoco.video.panel.measured_of`),
+        drawn beside the truth; None for perfect sensors.
     """
 
     time: float
@@ -72,6 +75,8 @@ class Snapshot:
     wind: np.ndarray
     forces: dict = field(default_factory=dict)
     references: dict = field(default_factory=dict)
+    measured: dict | None = None
+
 
 
 def snapshot_physics(physics, references: dict | None = None) -> Snapshot:
@@ -281,6 +286,7 @@ class SceneRenderer:
         self._fovy = float(m.vis.global_.fovy)
         self.top_pose = self._top_pose(top_center, top_extent)
         self.track: list[tuple[float, float]] = []
+        self.fixes: list[tuple[float, float]] = []  # the GNSS fixes reported so far (measured)
         self._track_time = -np.inf
         self._camera = mujoco.MjvCamera()
         if camera == "side":
@@ -380,9 +386,14 @@ class SceneRenderer:
         mujoco.mj_camlight(m, d)
         if snap.time < self._track_time:  # a new run
             self.track.clear()
+            self.fixes.clear()
         if snap.time > self._track_time:
             self.track.append((float(snap.position[0]), float(snap.position[1])))
             self._track_time = snap.time
+        if snap.measured is not None:
+            fix = tuple(float(v) for v in snap.measured["position"])
+            if not self.fixes or self.fixes[-1] != fix:  # a new fix (a held one is drawn once)
+                self.fixes.append(fix)
 
     def decorate(self, scene, snap: Snapshot) -> None:
         """Add the wind arrow, force arrows, target and circles to MuJoCo's scene.
@@ -429,7 +440,8 @@ class SceneRenderer:
                              position=np.asarray(snap.position[:2], float),
                              heading=float(heading_from_yaw(yaw_of(snap.rotation))),
                              wind=np.asarray(snap.wind[:2], float), hull_length=self.params.hull.length,
-                             references=snap.references, target=self.target)
+                             references=snap.references, target=self.target,
+                             fixes=np.array(self.fixes) if snap.measured is not None else None)
 
     def text_lines(self, snap: Snapshot) -> list[str]:
         """The panel's numbers for ``snap`` (:func:`sailmujoco.video.panel.text_lines`).
@@ -473,4 +485,5 @@ class SceneRenderer:
             return np.ascontiguousarray(overlays.draw_note(scene, note) if note else scene)
         frame = np.empty((self.height, self.width, 3), np.uint8)
         return panel.draw_panel(frame, scene, self.labels, self.text_lines(snap),
-                                overlays.legend(self.show_forces), self.map_view(snap), note)
+                                overlays.legend(self.show_forces, snap.measured is not None),
+                                self.map_view(snap), note)
