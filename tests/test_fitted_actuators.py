@@ -1,6 +1,7 @@
 """Fitted actuators in the loop: ``perfect`` passes the command to the world bit for bit;
 ``typical`` lets the sail winch go from one end of its range to the other in 1.3 s, in equal
-steps, whatever the command."""
+steps, whatever the command; a sheeted sail's winch hauls in as fast as its torque allows
+against the sheet's load."""
 
 import math
 
@@ -47,3 +48,40 @@ def test_a_bad_actuator_option_is_one_line():
         suite.load("saoud_robot", "heading_hold", actuators="fast")
     with pytest.raises(ValueError, match="actuators.rudder_60deg_s must be a finite number >= 0"):
         suite.load("saoud_robot", "heading_hold", actuators={"rudder_60deg_s": -0.1})
+
+
+def _winch_run(stall_pull):
+    """The robot's sheeted sail in 8 m/s on a beam reach: the sheet let out for 3 s, then
+    ordered full in; (the length sent each step, the sheet's tension before it, free speed)."""
+    figures = {"sail_full_range_s": 1.3, "winch_stall_pull": stall_pull}
+    env = suite.load("saoud_robot", "heading_hold", seed=0, sail_mode="sheeted", gusts=False, wander=False,
+                     wind_speed=8.0, wind_from_deg=90.0, actuators=figures)
+    env.reset()
+    low, high = env.physics.action_bounds()
+    sent, tension = [], []
+    for k in range(60):
+        tension.append(env.physics.sheet_tension())
+        env.step(np.array([0.0, high[1] if k < 30 else low[1]]))
+        sent.append(float(env.physics.data.ctrl[1]))
+    return np.array(sent), np.array(tension), (high[1] - low[1]) / 1.3
+
+
+@pytest.mark.parametrize("stall_pull", [1e6, 15.0])
+def test_a_winch_hauls_in_as_fast_as_its_torque_allows_against_the_sheets_load(stall_pull):
+    """Hauling in, each 0.1 s step shortens the sheet by v_free (1 - T / F_stall) dt, T the
+    sheet's tension felt (the load on the drum), to zero once T reaches the stall pull; easing
+    out, the load helps and it pays out at v_free."""
+    sent, tension, free = _winch_run(stall_pull)
+    haul = -np.diff(sent[29:])  # the steps ordered full in (the first from the eased sheet)
+    expected = free * np.clip(1.0 - tension[30:] / stall_pull, 0.0, 1.0) * 0.1
+    np.testing.assert_allclose(haul, np.minimum(expected, sent[29:-1] - sent.min()), rtol=1e-12, atol=1e-12)
+    assert tension[30:].max() > 0.0  # the sheet took the sail's load
+
+
+def test_the_weaker_the_winch_the_further_out_its_sheet_stays():
+    strong, loads, _ = _winch_run(1e6)
+    middle, _, _ = _winch_run(15.0)
+    weak, _, _ = _winch_run(5.0)
+    assert strong[-1] == pytest.approx(strong.min())  # the strong one hauls all the way in,
+    assert loads[-10:].mean() > 15.0  # N: against a load the weaker two cannot hold
+    assert weak[-1] > middle[-1] + 0.05 > strong[-1] + 0.1  # m: each weaker winch stops further out

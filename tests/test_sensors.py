@@ -184,3 +184,18 @@ def test_true_wind_triangle_and_its_filter():
 def test_bad_sensor_values_are_refused_in_one_line_naming_them(bad):
     with pytest.raises(ValueError, match="sigma must be a finite number >= 0"):
         GaussMarkov(bad, 1.0, 0.1, np.random.default_rng(0))
+
+
+@pytest.mark.parametrize("awa_deg, expected_deg", [(30.0, 30.0 + 4.0 * math.cos(math.radians(30.0))),
+                                                   (-30.0, -30.0 - 4.0 * math.cos(math.radians(30.0))),
+                                                   (5.0, 5.0 + 4.0 * math.cos(math.radians(5.0))),
+                                                   (90.0, 90.0), (135.0, 135.0), (-170.0, -170.0)])
+def test_the_sails_upwash_turns_the_masthead_flow_away_from_the_bow(awa_deg, expected_deg):
+    """4 deg of upwash close-hauled: the vane reads the flow turned away from the bow by
+    4 cos(AWA) forward of the beam, on either tack, and unchanged abaft it; the speed unchanged."""
+    vane = MastheadVane(0.1, np.random.default_rng(0), upwash=math.radians(4.0))
+    awa = math.radians(awa_deg)
+    flow = (-6.0 * math.cos(awa), 6.0 * math.sin(awa))  # the air's velocity at the masthead, body
+    got_awa, got_aws = vane.measure(flow)
+    assert math.degrees(got_awa) == pytest.approx(expected_deg, abs=1e-9)
+    assert got_aws == pytest.approx(6.0, rel=1e-12)

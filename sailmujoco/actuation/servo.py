@@ -146,9 +146,14 @@ class FittedServo:
         return self.backlash.step(self.rate.step(self.deadband.step(quantise(command, self.resolution))))
 
 
-def fitted_servos(options: ActuatorOptions, low, high, dt: float) -> tuple[FittedServo, FittedServo]:
+def fitted_servos(options: ActuatorOptions, low, high, dt: float, sheeted: bool = False) -> tuple:
     """The rudder's and the sail's fitted servos for commands within ``[low, high]`` (the world's
-    action bounds: rudder rad, sail rad or sheet m), stepped every ``dt``.
+    action bounds: rudder rad, sail rad or sheet m), stepped every ``dt``, and a sheeted sail's
+    winch.
+
+    With ``sheeted`` and a ``winch_stall_pull``, the sail's rate is the winch's: it eases out at
+    its free speed (the range in ``sail_full_range_s``) and hauls in the slower the nearer the
+    sheet's load comes to its stall pull (:class:`~sailmujoco.actuation.winch.SheetWinch`).
 
     Parameters
     ----------
@@ -158,7 +163,17 @@ def fitted_servos(options: ActuatorOptions, low, high, dt: float) -> tuple[Fitte
         The two commands' bounds.
     dt : float
         Control period, s.
+    sheeted : bool
+        The sail's command is a sheet's length (the sheeted sail).
+
+    Returns
+    -------
+    tuple
+        (rudder servo, sail servo, the winch or None); the winch steps the sail servo's output
+        against the sheet's load.
     """
+    from .winch import SheetWinch
+
     o = options
     rudder_rate = 0.0 if o.rudder_60deg_s == 0 else math.radians(60.0) / o.rudder_60deg_s
     rudder = FittedServo(dt, rate_limit=rudder_rate, deadband=math.radians(o.rudder_deadband_deg),
@@ -166,6 +181,11 @@ def fitted_servos(options: ActuatorOptions, low, high, dt: float) -> tuple[Fitte
                          resolution=math.radians(o.rudder_resolution_deg))
     span = float(high[1]) - float(low[1])
     sail_rate = 0.0 if o.sail_full_range_s == 0 else span / o.sail_full_range_s
+    winch = None
+    if sheeted and o.winch_stall_pull > 0:  # the winch sets the rate, against the sheet's load
+        free_speed = sail_rate if sail_rate > 0 else span / dt  # no rated speed: the range in a step
+        winch = SheetWinch(free_speed, stall_torque=o.winch_stall_pull, drum_radius=1.0, dt=dt)
+        sail_rate = 0.0
     sail = FittedServo(dt, rate_limit=sail_rate, deadband=o.sail_deadband * span,
                        backlash=o.sail_backlash * span, resolution=o.sail_resolution * span)
-    return rudder, sail
+    return rudder, sail, winch

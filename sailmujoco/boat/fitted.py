@@ -75,6 +75,10 @@ class SensorOptions:
         Noise on each component of the masthead flow, m/s.
     vane_filter_hz : float
         Cut-off of the vane's first-order filter, Hz (0: none).
+    vane_upwash_deg : float
+        The sail's upwash at the masthead close-hauled, deg: the vane reads the apparent wind
+        this much wider, fading as cos(AWA) to none on the beam
+        (:func:`sailmujoco.measurement.sensors.upwash_shift`); 0: none.
     log_scale_error : float
         Speed log calibration error, a fraction.
     log_noise : float
@@ -96,6 +100,7 @@ class SensorOptions:
     gyro_bias_walk: float = 0.0
     vane_noise: float = 0.0
     vane_filter_hz: float = 0.0
+    vane_upwash_deg: float = 0.0
     log_scale_error: float = 0.0
     log_noise: float = 0.0
 
@@ -132,6 +137,8 @@ SENSOR_FIGURES = {
     "vane_noise": ("m/s", "noise on each component of the masthead flow", "ours, a guess"),
     "vane_filter_hz": ("Hz", "cut-off of the vane's first-order filter (0: none)",
                        "ArduPilot's vane filter, WNDVN_DIR_FILT"),
+    "vane_upwash_deg": ("deg", "the sail's upwash at the masthead close-hauled, fading as cos(AWA) "
+                               "to none on the beam (0: none)", "none in the preset: no sourced size"),
     "log_scale_error": ("-", "speed log calibration error, a fraction", "ours, a guess"),
     "log_noise": ("m/s", "speed log noise", "ours, a guess"),
 }
@@ -177,6 +184,10 @@ class ActuatorOptions:
         Time the sail actuator takes from one end of its range to the other, s.
     sail_deadband, sail_backlash, sail_resolution : float
         The sail actuator's deadband, play and step, as fractions of its range.
+    winch_stall_pull : float
+        With a sheeted sail: the pull on the sheet at which the winch stalls, N (its stall torque
+        over its drum's radius); it hauls in the slower the nearer the sheet's load comes to it
+        (:class:`sailmujoco.actuation.winch.SheetWinch`). 0: no torque limit.
     """
 
     perfect: bool = True
@@ -188,6 +199,7 @@ class ActuatorOptions:
     sail_deadband: float = 0.0
     sail_backlash: float = 0.0
     sail_resolution: float = 0.0
+    winch_stall_pull: float = 0.0
 
     def __post_init__(self):
         check_figures(self, "actuators", {})
@@ -207,6 +219,8 @@ ACTUATOR_FIGURES = {
     "sail_backlash": ("-", "the sail actuator's play, a fraction of its range", "ours, a guess"),
     "sail_resolution": ("-", "the sail actuator's step, a fraction of its range",
                         "1 us of a 1000 us pulse"),
+    "winch_stall_pull": ("N", "a sheeted sail's winch: the sheet's pull at stall, stall torque / drum "
+                              "radius (0: no torque limit)", "none sourced: no limit (a datasheet's figure)"),
 }
 
 ACTUATOR_PRESETS = {

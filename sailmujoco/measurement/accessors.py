@@ -160,6 +160,13 @@ class BoatAccessors:
         """Sail (boom) angle, rad, positive trailing edge to port."""
         return float(self.data.ptr.qpos[self._idx[2]])
 
+    def sheet_tension(self) -> float:
+        """The sheet's tension, N (>= 0: a sheet only pulls), from its actuator's force at the
+        last step; 0 for an actuated sail (no sheet)."""
+        if self.sail_mode != "sheeted":
+            return 0.0
+        return max(0.0, -float(self.data.ptr.actuator_force[1]))
+
     def true_wind(self, height: float | None = None) -> np.ndarray:
         """World wind velocity (m/s) at the current time.
 

@@ -54,7 +54,8 @@ class Instruments:
         self.inclinometer_rng = rngs["inclinometer"]
         self.inclinometer_noise = math.radians(o.inclinometer_noise_deg)
         tau = 0.0 if o.vane_filter_hz == 0 else 1.0 / (2.0 * math.pi * o.vane_filter_hz)
-        self.vane = MastheadVane(dt, rngs["vane"], noise=o.vane_noise, tau=tau)
+        self.vane = MastheadVane(dt, rngs["vane"], noise=o.vane_noise, tau=tau,
+                                 upwash=math.radians(o.vane_upwash_deg))
         self.log = SpeedLog(rngs["log"], scale_error=o.log_scale_error, noise=o.log_noise)
         self.true_wind = TrueWindEstimate(dt)
 

@@ -308,10 +308,16 @@ class MastheadVane:
     tau : float
         Time constant of the first-order filter on the flow vector, s (ArduPilot's vane filter
         of 0.5 Hz is tau = 1 / (2 pi 0.5) = 0.32 s); 0: no filter.
+    upwash : float
+        The sail's upwash at the masthead close-hauled, rad: the flow reaches the vane turned
+        away from the bow by ``upwash cos(AWA)`` forward of the beam, and not at all abaft it
+        (:func:`upwash_shift`); 0: none.
     """
 
-    def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, tau: float = 0.0):
+    def __init__(self, dt: float, rng: np.random.Generator, noise: float = 0.0, tau: float = 0.0,
+                 upwash: float = 0.0):
         self.rng, self.noise = rng, check_number("noise", noise, 0.0)
+        self.upwash = check_number("upwash", upwash, 0.0)
         self.filter = LowPass(tau, dt)
 
     def measure(self, flow_body) -> tuple[float, float]:
@@ -322,9 +328,32 @@ class MastheadVane:
         flow_body : array_like, shape (2,) or (3,)
             The air's velocity relative to the masthead, body axes, m/s (:func:`masthead_flow`).
         """
+        fx, fy = float(flow_body[0]), float(flow_body[1])
+        if self.upwash:
+            awa, aws = vane_reading((fx, fy))
+            awa += upwash_shift(awa, self.upwash)
+            fx, fy = -aws * math.cos(awa), aws * math.sin(awa)
         wx, wy = self.rng.standard_normal(2).tolist()
-        return vane_reading(self.filter.step((float(flow_body[0]) + self.noise * wx,
-                                              float(flow_body[1]) + self.noise * wy)))
+        return vane_reading(self.filter.step((fx + self.noise * wx, fy + self.noise * wy)))
+
+
+def upwash_shift(awa: float, upwash: float) -> float:
+    """How far the sail's upwash turns the flow at the masthead away from the bow, rad:
+    ``upwash cos(AWA)`` forward of the beam (the sail drawing, its bound circulation turning the
+    flow ahead of it), none abaft the beam (the sail stalled). The form is ours: B&G's masthead
+    unit manuals (H2000 pilot, "Upwash") describe the reading deflected by the sails and
+    corrected from a table per wind speed, of the size that makes the true wind "tack" by
+    2-3 degrees, without a formula.
+
+    Parameters
+    ----------
+    awa : float
+        The apparent wind angle at the masthead, rad, positive from starboard.
+    upwash : float
+        The shift close-hauled (at AWA -> 0), rad.
+    """
+    c = math.cos(awa)
+    return math.copysign(upwash * c, awa) if c > 0.0 else 0.0
 
 
 class SpeedLog:
@@ -358,4 +387,4 @@ class SpeedLog:
 
 __all__ = ["CEP_PER_SIGMA", "Compass", "Gnss", "Gyro", "MastheadVane", "SpeedLog",
            "earth_field", "field_in_body", "level_heading", "masthead_flow", "tilt_compensated_heading",
-           "untilted_heading", "vane_reading"]
+           "untilted_heading", "upwash_shift", "vane_reading"]

@@ -175,7 +175,8 @@ class SailTask(control.Task):
         self._floor = self.reward_floor(physics)
         self._instruments = self._new_instruments()  # each episode its own noise
         if not self.actuators.perfect:
-            self._servos = fitted_servos(self.actuators, *action_bounds(physics), self.control_period)
+            self._servos = fitted_servos(self.actuators, *action_bounds(physics), self.control_period,
+                                         sheeted=getattr(physics, "sail_mode", "actuated") == "sheeted")
         self._episodes += 1
 
     def _new_instruments(self) -> Instruments | None:
@@ -200,8 +201,11 @@ class SailTask(control.Task):
         if action.shape != (2,) or not (math.isfinite(action[0]) and math.isfinite(action[1])):
             raise ValueError(f"{self.name}: action must be 2 finite numbers [rudder, sail], got {action}")
         if self._servos is not None:  # the fitted servos between the command and the world's
-            rudder, sail = self._servos
-            action = np.array([rudder.step(float(action[0])), sail.step(float(action[1]))])
+            rudder, sail, winch = self._servos
+            command = sail.step(float(action[1]))
+            if winch is not None:  # the sheet hauled in only as fast as the winch's torque allows
+                command = winch.step(command, physics.sheet_tension())
+            action = np.array([rudder.step(float(action[0])), command])
         physics.set_control(action)
 
     def after_step(self, physics):
