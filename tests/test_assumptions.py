@@ -145,12 +145,12 @@ def test_study_smoke(tmp_path):
 
     with sweep.Engine() as engine:
         headline = study.run_study(assumptions.STUDY, tmp_path, engine, smoke=True, progress=False)
-    assert headline["rows"] == 14
+    assert headline["rows"] == 16
     for config in ("paper_hydrostatics", "friction_only", "paper_foils", "no_downwash", "no_windage"):
         assert np.isfinite(headline[f"{config}_speed_effect_max"]), config
     # every row's verdict is one of the three words, decided on intervals over the smoke's 2 seeds
     verdicts = [v for k, v in headline.items() if k.startswith("verdict_")]
-    assert len(verdicts) == 14 and all(v in ("holds", "breaks", "undecided at 2 seeds") for v in verdicts)
+    assert len(verdicts) == 16 and all(v in ("holds", "breaks", "undecided at 2 seeds") for v in verdicts)
     # the wind plane keeps every seed's row, and each switch is compared on both seeds at every point
     plane_rows = pd.read_csv(tmp_path / "wind_plane.csv")
     assert (plane_rows.groupby(["boat", "config", "tws", "twa"])["seed"].apply(tuple) == (0, 1)).all()
@@ -230,6 +230,26 @@ def test_study_smoke(tmp_path):
     mechanisms = pd.read_csv(tmp_path / "sea_mechanisms.csv")
     assert len(mechanisms) == 1 and abs(mechanisms["rel"].iloc[0]) > 0.1
     assert headline["sea_mechanism_rows"] == 1
+    # sensors and actuators as fitted: every scenario in each arm on both seeds, the perfect arm
+    # being the same runs as the loop without instruments; each change beyond 10 % rerun with
+    # each of its arm's switches on both seeds; the section, its table and its figure
+    from sailmujoco.studies.assumptions.fitted import ARMS, SCENARIOS, SWITCHES, relative
+
+    fitted = pd.read_csv(tmp_path / "fitted_runs.csv", keep_default_na=False)
+    arms = fitted[fitted["switch"] == ""]
+    assert len(arms) == len(SCENARIOS) * len(ARMS) * 2 and np.isfinite(arms["value"].astype(float)).all()
+    changes = pd.read_csv(tmp_path / "fitted_changes.csv", keep_default_na=False)
+    for row in changes[changes["switch"] == ""].itertuples():
+        values = arms[(arms["scenario"] == row.scenario)].pivot(index="seed", columns="arm", values="value")
+        floor = SCENARIOS[row.scenario]["floor"]
+        per_seed = [relative(values.loc[s, row.arm], values.loc[s, "perfect"], floor) for s in (0, 1)]
+        assert row.change == pytest.approx(np.mean(per_seed), rel=1e-9, abs=1e-12)
+        reruns = fitted[(fitted["scenario"] == row.scenario) & (fitted["arm"] == row.arm)
+                        & (fitted["switch"] != "")]
+        assert len(reruns) == (2 * len(SWITCHES[row.arm]) if abs(row.change) > 0.1 else 0)
+    section = report[report.index("\n## Sensors and actuators as fitted\n"):]
+    assert section.count("\n| ") == 1 + len(SCENARIOS) * 2 and "fitted_changes.png" in section
+    assert (tmp_path / "fitted_changes.png").stat().st_size > 20_000
 
 
 def test_wind_plane_seas_are_the_fetch_limited_seas_of_each_points_wind():

@@ -130,11 +130,14 @@ class LowPass:
             The input.
         """
         g, y = self.gain, self.value
-        if np.ndim(x) == 0:
+        if isinstance(x, (int, float, np.number)) or np.ndim(x) == 0:  # the first test: no numpy call
             self.value = float(x) if y is None else y + g * (float(x) - y)
+        elif y is None:
+            self.value = tuple(float(v) for v in x)
+        elif len(y) == 2:  # a flow or a wind in the plane: the same arithmetic, written out
+            self.value = (y[0] + g * (float(x[0]) - y[0]), y[1] + g * (float(x[1]) - y[1]))
         else:
-            x = [float(v) for v in x]
-            self.value = tuple(x) if y is None else tuple(a + g * (b - a) for a, b in zip(y, x, strict=True))
+            self.value = tuple(a + g * (float(b) - a) for a, b in zip(y, x, strict=True))
         return self.value
 
 

@@ -11,19 +11,22 @@ boats: :mod:`.sea` (its runs; :func:`.sea.runs` is the study's first pass, the c
 :func:`.scenario.runs` with the sea's, every part on the study's seeds), :mod:`.sea_cases`
 (against calm water, case by case), :mod:`.sea_attribution` (the mechanism behind each
 difference), :mod:`.sea_analysis` (the mechanism reruns and the whole), :mod:`.sea_figures`
-(its files and figures), :mod:`.sea_mechanisms` and :mod:`.sea_report` (its sections).
+(its files and figures), :mod:`.sea_mechanisms` and :mod:`.sea_report` (its sections). What
+sensors and actuators as fitted do to each paper's controller: :mod:`.fitted` (its runs) and
+:mod:`.fitted_analysis` (its numbers, rows and section). :mod:`.passes` puts the runs together:
+the first pass, and the second that the first chooses.
 """
 
 from sailmujoco.study import Study
 
 from . import sea
 from .analysis import analyse
+from .fitted_figures import write
+from .passes import first_runs, second_runs
 from .report import report
 from .scenario import NAME, SEEDS, TITLE, VIDEO
-from .sea_analysis import mechanism_runs
-from .sea_figures import write
 from .sea_report import headline
 
-STUDY = Study(name=NAME, title=TITLE, runs=sea.runs, analyse=analyse, write=write, report=report,
-              headline=headline, more_runs=mechanism_runs, video=VIDEO,
+STUDY = Study(name=NAME, title=TITLE, runs=first_runs, analyse=analyse, write=write, report=report,
+              headline=headline, more_runs=second_runs, video=VIDEO,
               seeds=max(SEEDS, getattr(sea, "SEA_SEEDS", SEEDS)))

@@ -23,6 +23,8 @@ from sailmujoco.study import Results
 
 from ..kit import seeds as over
 from .episodes import time_constants
+from .fitted import FITTED_JOB
+from .fitted_analysis import FittedAnalysis, analyse_fitted
 from .scenario import (
     BOATS,
     CONFIGS,
@@ -80,6 +82,8 @@ class Analysis:
         The seeds the wind plane, the single scenarios and Table 1 ran on.
     sea : studies.assumptions.sea_analysis.SeaAnalysis or None
         What a sea does to the boats (None: not analysed).
+    fitted : studies.assumptions.fitted_analysis.FittedAnalysis or None
+        What sensors and actuators as fitted do to each paper's controller (None: not run).
     """
 
     data: pd.DataFrame
@@ -97,6 +101,7 @@ class Analysis:
     single_seeds: tuple = (0,)
     table1_seeds: tuple = (0,)
     sea: SeaAnalysis | None = None
+    fitted: FittedAnalysis | None = None
 
 
 def plane_table(specs: dict, tables: list) -> pd.DataFrame:
@@ -291,8 +296,9 @@ def analyse(results: Results, smoke: bool) -> Analysis:
     effects = {(b, c): paired_effects(data, b, c) for b in BOATS for c in switches(b)}
     points = {key: effect_points(table, key[1]) for key, table in effects.items()}
     plane = {b: baseline_points(data, b) for b in BOATS}
+    fitted = analyse_fitted(results, smoke) if FITTED_JOB in results.jobs else None
     return Analysis(data, effects, points, plane, tc, course, steady, drift, table1, restoring_errors(data),
-                    seeds, plane_seeds, single_seeds, table1_seeds, analyse_sea(results, smoke))
+                    seeds, plane_seeds, single_seeds, table1_seeds, analyse_sea(results, smoke), fitted)
 
 
 def tally(verdicts, n_seeds: int, unit: str = "points") -> tuple[str, str]:

@@ -1,5 +1,6 @@
 """Assumption validation, the report: the table of assumptions, the figures, the time constants,
-the cross-check's finding on Wille's eq. 4 and what a sea does to the boats, as report.md.
+the cross-check's finding on Wille's eq. 4, what a sea does to the boats and what sensors and
+actuators as fitted do to each controller, as report.md.
 """
 
 from __future__ import annotations
@@ -8,6 +9,8 @@ from ..kit import Report
 from ..kit import seeds as over
 from .analysis import Analysis
 from .figures import FIGURES
+from .fitted_analysis import SECTION_COLUMNS, section_rows, section_text
+from .fitted_figures import FITTED_FIGURE
 from .scenario import (
     ABOUT,
     JITTER_DEG,
@@ -53,6 +56,11 @@ def report(analysis: Analysis, smoke: bool) -> str:
         "fixed rudder the printed model's heading drifts 33° from the rigid boat's in 60 s of 6 m/s "
         "wind, while the rigid form agrees within 1°.")
     sections(r, analysis.sea)
+    if analysis.fitted is not None:
+        r.section("Sensors and actuators as fitted", section_text(analysis.fitted))
+        r.table(section_rows(analysis.fitted), SECTION_COLUMNS)
+        r.figure(FITTED_FIGURE, "Each controller's figure of merit with typical sensors and with typical "
+                                "actuators, against perfect ones: the change seed by seed, with its 95 % interval")
     return r.text()
 
 

@@ -26,6 +26,7 @@ from .analysis import (
     judge_points,
     tally,
 )
+from .fitted_analysis import table_row
 from .headline_numbers import (
     course_numbers,
     lateral_numbers,
@@ -50,7 +51,8 @@ COLUMNS = ["assumption", "scenarios", "metric", "range", "threshold", "verdict",
 
 def rows(analysis: Analysis) -> list[dict]:
     """The table's rows: nine of the papers' assumptions, then each difference of the boat as
-    built from the papers' boat (``BUILT``).
+    built from the papers' boat (``BUILT``), then perfect sensors and ideal actuators
+    (:func:`.fitted_analysis.table_row`, where they ran).
 
     Parameters
     ----------
@@ -60,11 +62,15 @@ def rows(analysis: Analysis) -> list[dict]:
     out = _sail_and_motion_rows(analysis) + _roll_rows(analysis) + _drift_and_balance_rows(analysis)
     out += [built_row(analysis, config, title, paper_form) for config, _, title, paper_form in BUILT]
     _add_resistance_notes(analysis, next(r for r in out if r["assumption"].startswith("Friction-only")))
+    if analysis.fitted is not None:
+        out += [table_row(analysis.fitted, arm) for arm in FITTED_ROWS]
     return out
 
 
+FITTED_ROWS = ("sensors", "actuators")  # the fitted arms' rows, last
 VERDICT_KEYS = ("ct", "four_dof", "roll_speed", "roll_moments", "sheeted", "small_drift", "restoring",
-                "phi_star", "lateral", *(config for config, _, _, _ in BUILT))  # the rows' headline names
+                "phi_star", "lateral", *(config for config, _, _, _ in BUILT),
+                "perfect_sensors", "ideal_actuators")  # the rows' headline names
 
 
 def headline(analysis: Analysis) -> dict:
@@ -78,7 +84,7 @@ def headline(analysis: Analysis) -> dict:
     """
     table = rows(analysis)
     verdicts = {f"verdict_{key}": row["verdict"].split(" (")[0]
-                for key, row in zip(VERDICT_KEYS, table, strict=True)}
+                for key, row in zip(VERDICT_KEYS, table, strict=False)}  # the fitted rows: where they ran
     return {**numbers(analysis), **verdicts, "rows": len(table)}
 
 
