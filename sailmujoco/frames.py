@@ -313,7 +313,23 @@ def quat_from_euler(heel, pitch, yaw):
     numpy.ndarray, shape (4,)
         Unit quaternion (w, x, y, z) of the body->world rotation of :func:`matrix_from_euler`.
     """
-    rot = matrix_from_euler(heel, pitch, yaw)
+    return quat_from_matrix(matrix_from_euler(heel, pitch, yaw))
+
+
+def quat_from_matrix(rot):
+    """Unit quaternion (w, x, y, z) of a rotation matrix, w >= 0 where it can be.
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3) or (9,)
+        A rotation matrix, row-major.
+
+    Returns
+    -------
+    numpy.ndarray, shape (4,)
+        (w, x, y, z), unit norm.
+    """
+    rot = np.asarray(rot, dtype=float).reshape(3, 3)
     w = np.sqrt(max(0.0, 1.0 + rot[0, 0] + rot[1, 1] + rot[2, 2])) / 2.0
     if w > 1e-6:
         x = (rot[2, 1] - rot[1, 2]) / (4.0 * w)
@@ -330,6 +346,40 @@ def quat_from_euler(heel, pitch, yaw):
         q[1 + j] = (rot[j, i] + rot[i, j]) / s
         q[1 + k] = (rot[k, i] + rot[i, k]) / s
     return q / np.linalg.norm(q)
+
+
+def ned_frd_quaternion(rot):
+    """ArduPilot's attitude: the quaternion (w, x, y, z) of the rotation from body FRD to world
+    NED, from our body FLU -> world ENU rotation: ``R_ned_frd = T_ned_enu R T_flu_frd``.
+
+    Parameters
+    ----------
+    rot : array_like, shape (3, 3) or (9,)
+        Rotation from the body frame (FLU) to the world frame (ENU).
+
+    Returns
+    -------
+    numpy.ndarray, shape (4,)
+        (w, x, y, z) of body FRD -> world NED; its Euler angles (3-2-1) are the heel (roll,
+        starboard down positive), the pitch (bow up positive) and the compass heading (yaw).
+    """
+    return quat_from_matrix(_ENU_TO_NED @ np.asarray(rot, dtype=float).reshape(3, 3) @ _FLU_TO_FRD)
+
+
+def euler_from_ned_quaternion(q):
+    """(roll, pitch, yaw) of a body FRD -> world NED quaternion, 3-2-1 (aerospace) order, rad;
+    yaw is the compass heading.
+
+    Parameters
+    ----------
+    q : array_like, shape (4,)
+        (w, x, y, z).
+    """
+    w, x, y, z = (float(v) for v in q)
+    roll = math.atan2(2.0 * (w * x + y * z), 1.0 - 2.0 * (x * x + y * y))
+    pitch = math.asin(max(-1.0, min(1.0, 2.0 * (w * y - z * x))))
+    yaw = math.atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z))
+    return roll, pitch, yaw
 
 
 def apparent_wind_angle(flow_body):

@@ -13,7 +13,7 @@ LIBRARY = Path(sailmujoco.__file__).parent
 # what is built on the simulation (which the model never imports)
 MODEL_ROOMS = ("sailmujoco.jit", "sailmujoco.boat", "sailmujoco.forces", "sailmujoco.step")
 CLIENT_ROOMS = ("sailmujoco.gym", "sailmujoco.cli", "sailmujoco.video", "sailmujoco.viewer",
-                "sailmujoco.sweep")
+                "sailmujoco.sweep", "sailmujoco.sitl")
 COMMAND_LINE = ("sailmujoco.cli",)
 MAX_TOP_LEVEL_MODULES = 15  # sailmujoco/*.py, __init__.py and __main__.py included
 

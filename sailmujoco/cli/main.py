@@ -22,7 +22,7 @@ import sys
 from importlib import metadata
 
 from . import boat as boat_cli
-from . import health, listing, polar, video, view
+from . import health, listing, polar, sitl, video, view
 from . import study as study_runner
 from . import sweep as sweep_cli
 from .arguments import (
@@ -93,6 +93,7 @@ def build_parser() -> argparse.ArgumentParser:
     video.add_parser(sub)
     view.add_parser(sub)
     boat_cli.add_parser(sub)
+    sitl.add_parser(sub)
     return parser
 
 

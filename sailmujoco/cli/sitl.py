@@ -1,0 +1,125 @@
+"""``sailmujoco sitl BOAT``: the 6-DOF boat as ArduPilot SITL's JSON physics backend.
+
+::
+
+    sailmujoco sitl saoud_robot --wind-speed 5 --wind-from 0 --out results/sitl/robot
+    ardurover --model JSON -w --defaults rover.parm,sailboat.parm,json_windvane.parm ...
+
+It listens on UDP 9002 (``--port``), answers every servo packet with one physics step and the
+boat's state, and ends when SITL stops sending for ``--timeout`` seconds (or after
+``--seconds`` of simulated time); then it prints what it did (frames, resends, refusals, the
+speed against real time) and writes the trajectory table, ``trajectory.csv`` (one row per
+0.1 s, a file per run when SITL restarted), under ``--out``. docs/ardupilot.md is the recipe.
+"""
+
+from __future__ import annotations
+
+import math
+import signal
+import sys
+from pathlib import Path
+
+from .arguments import SEED, HelpFormatter, number, out_folder
+from .waves import add_waves_argument
+
+EXAMPLES = """examples:
+  sailmujoco sitl saoud_robot                                   # 5 m/s from the north, calm
+  sailmujoco sitl wille_yacht --wind-speed 7 --wind-from 30 --waves hs=1 --sensors typical
+  sailmujoco sitl my_boat.toml --port 9012 --out results/sitl/mine   # ardurover -I 1"""
+
+
+def add_parser(sub) -> None:
+    """Add ``sitl`` to the ``sailmujoco`` sub-commands.
+
+    Parameters
+    ----------
+    sub : argparse._SubParsersAction
+        The ``sailmujoco`` parser's sub-commands.
+    """
+    parser = sub.add_parser("sitl", help="the boat as ArduPilot SITL's JSON physics backend (lock-step)",
+                            description="Sail BOAT as ArduPilot's physics: answer each servo packet of "
+                                        "'ardurover --model JSON' with one physics step and the boat's "
+                                        "state (docs/ardupilot.md).",
+                            formatter_class=HelpFormatter, epilog=EXAMPLES)
+    parser.add_argument("boat", help="a registered boat (sailmujoco list) or a boat file (.toml)")
+    parser.add_argument("--wind-speed", type=number(0.0, low_open=False, unit="m/s", high=30.0), default=5.0,
+                        metavar="M/S", help="true wind at 10 m (default 5)")
+    parser.add_argument("--wind-from", type=float, default=0.0, metavar="DEG",
+                        help="compass bearing the wind comes from (default 0: from the north)")
+    parser.add_argument("--gusts", action="store_true", help="gusts and the wind's wander (default steady)")
+    add_waves_argument(parser)
+    parser.add_argument("--sensors", default=None, metavar="PRESET",
+                        help="the wind vane's figures: perfect or typical (default: the boat's own)")
+    parser.add_argument("--heading", type=float, default=0.0, metavar="DEG",
+                        help="compass heading the boat starts on (default 0)")
+    parser.add_argument("--seed", type=SEED, default=0, help="seeds the wind, the sea and the vane's noise")
+    parser.add_argument("--port", type=number(1024, low_open=False, unit="", integer=True, high=65535),
+                        default=9002,
+                        help="UDP port SITL sends to (default 9002; ardurover -I N: 9002 + 10 N)")
+    parser.add_argument("--timeout", type=number(0.0, low_open=True, unit="s"), default=30.0,
+                        help="seconds without a packet that end the run (default 30)")
+    parser.add_argument("--seconds", type=number(0.0, low_open=True, unit="s"), default=None,
+                        help="simulated seconds after which the run ends (default: until SITL stops)")
+    parser.add_argument("--out", help="folder for trajectory.csv (default results/sitl/<boat>)")
+    parser.set_defaults(func=run_cli)
+
+
+class Terminated(Exception):
+    """SIGTERM arrived: the run ends, its trajectory written."""
+
+
+def _terminated(signum, frame):
+    raise Terminated
+
+
+def run_cli(args) -> int:
+    """Run ``sailmujoco sitl``.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``boat``, ``wind_speed``, ``wind_from``, ``gusts``, ``waves``, ``sensors``, ``heading``,
+        ``seed``, ``port``, ``timeout``, ``seconds``, ``out``.
+
+    Returns
+    -------
+    int
+        0; 2 where the port is taken or SITL never sent a packet (one line on stderr).
+    """
+    from ..boat.catalogue import boat_label
+    from ..options import wave_config
+    from ..sitl.backend import JsonBackend, SitlError
+
+    waves = None
+    if args.waves:
+        values = dict(args.waves)
+        if "direction_from_deg" not in values:  # the waves come with the wind unless told
+            values["direction_from"] = math.radians(args.wind_from)
+        waves = wave_config(values, "--waves")
+    out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
+    backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
+                          gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
+                          seed=args.seed, log=lambda line: print(line, flush=True))
+    print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
+          f"UDP 127.0.0.1:{args.port}", flush=True)
+    previous = signal.signal(signal.SIGTERM, _terminated)  # a SIGTERM ends the run as a timeout does
+    try:
+        counters = backend.serve(port=args.port, timeout=args.timeout, seconds=args.seconds)
+    except SitlError as err:
+        print(f"sailmujoco sitl: {err}", file=sys.stderr)
+        return 2
+    except Terminated:
+        counters = backend.counters
+        print(f"sitl: terminated at t = {backend.physics.data.time:.2f} s", flush=True)
+    finally:
+        signal.signal(signal.SIGTERM, previous)
+        for i, rows in enumerate(backend.runs):
+            if rows:
+                name = "trajectory.csv" if len(backend.runs) == 1 else f"trajectory_{i}.csv"
+                backend.trajectory(i).to_csv(out / name, index=False)
+    simulated = counters.answered * backend.dt
+    speed = simulated / counters.wall if counters.wall > 0 else math.nan
+    print(f"sitl: {counters.answered} frames ({simulated:.1f} s simulated) in {counters.wall:.1f} s, "
+          f"{speed:.1f} times real time; {counters.resent} sent again, {counters.refused} refused, "
+          f"{counters.resets} restarts; the trajectory in {out}")
+    return 0

@@ -1,0 +1,250 @@
+"""The boat as ArduPilot SITL's JSON backend, against a stand-in for SITL: the servo packet and
+the JSON line (ArduPilot's libraries/SITL/examples/JSON/readme.md), the frames from first
+principles, the servo mapping at its ends, and the lock-step over real UDP (one answer per
+packet, no step without one, resends, a restart, a malformed packet, a port in use, a SITL that
+stops)."""
+
+import json
+import math
+import socket
+import threading
+
+import numpy as np
+import pytest
+
+from sailmujoco import frames
+from sailmujoco.constants import GRAVITY
+from sailmujoco.sitl.backend import JsonBackend, SitlError
+from sailmujoco.sitl.protocol import (
+    MAGIC_16,
+    MAGIC_32,
+    ProtocolError,
+    parse_servo_packet,
+    servo_packet,
+    state_line,
+)
+from sailmujoco.sitl.servos import ServoMap
+from sailmujoco.sitl.state import boat_state
+
+NEUTRAL = [1500] * 16
+
+
+# ---- the packet and the line
+def test_a_servo_packet_reads_back_with_16_or_32_channels():
+    pwm = list(range(1000, 1016))
+    packet = servo_packet(pwm, 1200, 77)
+    assert len(packet) == 40 and int.from_bytes(packet[:2], "little") == MAGIC_16
+    got = parse_servo_packet(packet)
+    assert (got.frame_rate, got.frame_count, got.pwm) == (1200, 77, tuple(pwm))
+    assert got.channel(1) == 1000 and got.channel(4) == 1003
+    wide = servo_packet(list(range(1100, 1132)), 400, 3)
+    assert len(wide) == 72 and int.from_bytes(wide[:2], "little") == MAGIC_32
+    assert parse_servo_packet(wide).channel(32) == 1131
+
+
+@pytest.mark.parametrize("data", [b"", b"\x1a\x48", servo_packet(NEUTRAL)[:-2],
+                                  b"\x00\x00" + servo_packet(NEUTRAL)[2:], servo_packet(NEUTRAL) + b"\x00"])
+def test_a_malformed_packet_is_refused_in_one_line(data):
+    with pytest.raises(ProtocolError) as err:
+        parse_servo_packet(data)
+    assert "\n" not in str(err.value) and "40 bytes with magic 18458" in str(err.value)
+
+
+def test_the_state_line_is_one_json_object_between_newlines_in_the_compact_form_sitl_parses():
+    line = state_line({"timestamp": 1.5, "imu": {"gyro": np.array([0.0, 1.0, 2.0])},
+                       "position": (1, 2, 3)}).decode()
+    assert line.startswith("\n") and line.endswith("\n") and line.count("\n") == 2
+    assert '"gyro":[0.0,1.0,2.0]' in line  # SITL reads the value right after the colon, "[%f, %f, %f]"
+    assert ": " not in line
+    expected = {"timestamp": 1.5, "imu": {"gyro": [0.0, 1.0, 2.0]}, "position": [1.0, 2.0, 3.0]}
+    assert json.loads(line) == expected
+    with pytest.raises(ValueError, match="non-finite"):
+        state_line({"timestamp": math.nan})
+
+
+# ---- the frames
+@pytest.fixture(scope="module")
+def robot():
+    return JsonBackend("saoud_robot", wind_speed=0.0)
+
+
+def test_a_boat_heading_east_at_2_m_s_moves_north_east_down_0_2_0(robot):
+    physics = robot.physics
+    physics.reset()
+    physics.place((3.0, 4.0), float(frames.yaw_from_heading(math.pi / 2)), 2.0)
+    state = boat_state(physics, None, robot.dt, (0.0, 0.0))
+    np.testing.assert_allclose(state["velocity"], [0.0, 2.0, 0.0], atol=1e-12)
+    np.testing.assert_allclose(state["position"][:2], [4.0, 3.0], atol=1e-12)  # north 4, east 3
+    roll, pitch, yaw = frames.euler_from_ned_quaternion(state["quaternion"])
+    assert yaw == pytest.approx(math.pi / 2, abs=1e-12)  # NED yaw is the compass heading
+
+
+def test_a_level_boat_at_rest_feels_the_water_push_up_minus_g_in_frd(robot):
+    physics = robot.physics
+    physics.reset()
+    physics.place((0.0, 0.0), float(frames.yaw_from_heading(0.3)), 0.0)
+    state = boat_state(physics, None, robot.dt, (0.0, 0.0))
+    np.testing.assert_allclose(state["imu"]["accel_body"], [0.0, 0.0, -GRAVITY], atol=1e-9)
+    np.testing.assert_allclose(state["imu"]["gyro"], [0.0, 0.0, 0.0], atol=1e-12)
+    # an acceleration of 1 m/s^2 north over the step, heading north: +1 on FRD x
+    state = boat_state(physics, np.array([0.0, -robot.dt, 0.0]), robot.dt, (0.0, 0.0))
+    physics.place((0.0, 0.0), 0.0 + float(frames.yaw_from_heading(0.0)), 0.0)
+    state = boat_state(physics, np.array([0.0, -robot.dt, 0.0]), robot.dt, (0.0, 0.0))
+    np.testing.assert_allclose(state["imu"]["accel_body"], [1.0, 0.0, -GRAVITY], atol=1e-9)
+
+
+@pytest.mark.parametrize("heel, pitch, heading", [(0.3, 0.0, 0.0), (-0.2, 0.05, 2.5), (0.6, -0.1, -1.2),
+                                                  (0.0, 0.0, math.pi - 1e-3)])
+def test_the_quaternion_round_trips_to_heel_pitch_and_heading(heel, pitch, heading):
+    """ArduPilot's roll is our heel (starboard down positive, as FRD's roll), its pitch bow up,
+    its yaw the compass heading."""
+    q = frames.ned_frd_quaternion(frames.matrix_from_euler(heel, pitch, frames.yaw_from_heading(heading)))
+    assert np.linalg.norm(q) == pytest.approx(1.0, abs=1e-12)
+    roll, p, yaw = frames.euler_from_ned_quaternion(q)
+    assert (roll, p) == (pytest.approx(heel, abs=1e-12), pytest.approx(pitch, abs=1e-12))
+    assert math.remainder(yaw - heading, 2 * math.pi) == pytest.approx(0.0, abs=1e-12)
+    # body FRD x (the bow) in NED from the quaternion's matrix: north and east of the heading
+    w, x, y, z = q
+    bow = [1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)]
+    np.testing.assert_allclose(bow[:2], np.array([math.cos(heading), math.sin(heading)]) * math.cos(pitch),
+                               atol=1e-12)
+    assert bow[2] == pytest.approx(-math.sin(pitch), abs=1e-12)  # bow up: negative down
+
+
+def test_a_boat_turning_to_starboard_has_a_positive_frd_yaw_rate(robot):
+    physics = robot.physics
+    physics.reset()
+    physics.place((0.0, 0.0), 0.0, 0.0)
+    physics.data.qvel[5] = -0.2  # ENU/FLU z up: negative is clockwise seen from above, to starboard
+    physics.data.qvel[3] = 0.1  # rolling to starboard (starboard down)
+    state = boat_state(physics, None, robot.dt, (0.0, 0.0))
+    assert state["imu"]["gyro"][2] == pytest.approx(0.2, abs=1e-12)
+    assert state["imu"]["gyro"][0] == pytest.approx(0.1, abs=1e-12)
+
+
+# ---- the servos
+def test_steering_and_mainsail_at_their_ends_and_middle():
+    servos = ServoMap()
+    r = math.radians(30.0)
+    assert servos.rudder(1500, r) == 0.0
+    assert servos.rudder(2000, r) == pytest.approx(-r)  # steer to starboard: trailing edge to starboard
+    assert servos.rudder(1000, r) == pytest.approx(r)
+    assert servos.rudder(2500, r) == pytest.approx(-r)  # clipped to the range
+    assert servos.sail_angle(1000) == 0.0  # sheeted in
+    assert servos.sail_angle(2000) == pytest.approx(math.pi / 2)  # SAIL_ANGLE_MAX 90 deg
+    assert servos.sail_angle(1500) == pytest.approx(math.pi / 4)
+    flipped = ServoMap(steering_reversed=True, mainsail_reversed=True, sail_angle_max_deg=60.0)
+    assert flipped.rudder(2000, r) == pytest.approx(r)
+    assert flipped.sail_angle(1000) == pytest.approx(math.pi / 3)
+    with pytest.raises(ValueError, match="servos.steering_channel must be a channel from 1 to 32"):
+        ServoMap(steering_channel=0)
+
+
+# ---- the lock-step over UDP, against a stand-in for SITL
+def _free_port() -> int:
+    with socket.socket(socket.AF_INET, socket.SOCK_DGRAM) as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+class StandIn:
+    """SITL's side: sends servo packets, reads one line each."""
+
+    def __init__(self, backend, timeout=1.0, seconds=None):
+        self.port = _free_port()
+        self.log = []
+        backend.log = self.log.append
+        self.result = {}
+
+        def run():
+            try:
+                self.result["counters"] = backend.serve(port=self.port, timeout=timeout, seconds=seconds)
+            except SitlError as err:
+                self.result["error"] = err
+
+        self.thread = threading.Thread(target=run, daemon=True)
+        self.thread.start()
+        assert backend.listening.wait(10.0)
+        self.sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+        self.sock.settimeout(0.3)
+
+    def send(self, pwm, count, raw=None):
+        self.sock.sendto(raw if raw is not None else servo_packet(pwm, 400, count), ("127.0.0.1", self.port))
+        try:
+            return self.sock.recv(65536)
+        except TimeoutError:
+            return None
+
+    def close(self):
+        self.thread.join(5.0)
+        self.sock.close()
+
+
+def test_lock_step_one_answer_per_packet_resends_and_a_restart():
+    backend = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)
+    sitl = StandIn(backend, timeout=0.5)
+    lines = [sitl.send(NEUTRAL, k) for k in range(50)]
+    assert all(line is not None for line in lines)
+    stamps = [json.loads(line)["timestamp"] for line in lines]
+    np.testing.assert_allclose(stamps, backend.dt * np.arange(1, 51), rtol=0, atol=1e-12)  # a step each
+    again = sitl.send(NEUTRAL, 49)  # the last frame sent again: the same answer, the boat still
+    assert again == lines[-1] and backend.physics.data.time == pytest.approx(50 * backend.dt)
+    other = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)
+    fresh = other.handle(servo_packet(NEUTRAL, 400, 0))
+    restart = sitl.send(NEUTRAL, 0)  # SITL restarted: the boat starts again, nothing stale
+    assert json.loads(restart)["timestamp"] == pytest.approx(backend.dt)  # backwards: SITL's reset
+    assert restart == fresh
+    for k in range(1, 5):
+        assert sitl.send(NEUTRAL, k) is not None
+    sitl.close()  # no packet for 0.5 s: the run ends, in one line
+    counters = sitl.result["counters"]
+    assert (counters.answered, counters.resent, counters.resets) == (55, 1, 1)
+    assert len(backend.runs) == 2 and sitl.log[-1].startswith("sitl: SITL stopped sending")
+    assert any("SITL restarted" in line for line in sitl.log)
+
+
+def test_a_malformed_packet_gets_no_answer_and_moves_nothing():
+    backend = JsonBackend("saoud_robot", wind_speed=0.0)
+    sitl = StandIn(backend, timeout=2.0)  # longer than the stand-in's wait for each unanswered packet
+    assert sitl.send(NEUTRAL, 0) is not None
+    assert sitl.send(None, 0, raw=b"\x00" * 10) is None  # no answer
+    assert sitl.send(None, 0, raw=b"\x00" * 10) is None
+    assert backend.physics.data.time == pytest.approx(backend.dt)
+    assert json.loads(sitl.send(NEUTRAL, 1))["timestamp"] == pytest.approx(2 * backend.dt)
+    sitl.close()
+    refusals = [line for line in sitl.log if "refused" in line]
+    assert len(refusals) == 1 and "a packet of 10 bytes" in refusals[0]  # once per kind
+    assert sitl.result["counters"].refused == 2
+
+
+def test_a_port_in_use_and_a_sitl_that_never_comes_are_one_line():
+    taken = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    taken.bind(("127.0.0.1", 0))
+    port = taken.getsockname()[1]
+    backend = JsonBackend("saoud_robot", wind_speed=0.0)
+    with pytest.raises(SitlError, match=f"cannot listen on UDP 127.0.0.1:{port}") as err:
+        backend.serve(port=port, timeout=0.2)
+    assert "\n" not in str(err.value) and "--port" in str(err.value)
+    taken.close()
+    with pytest.raises(SitlError, match="no servo packet on UDP .* in 0.2 s: start ArduPilot with"):
+        backend.serve(port=_free_port(), timeout=0.2)
+
+
+def test_steering_to_starboard_turns_the_boat_to_starboard():
+    """A full starboard steering pulse sets a negative rudder (trailing edge to starboard): the
+    boat, sailing on a beam reach, turns clockwise; SITL's gyro reads a positive yaw rate and
+    its heading grows."""
+    backend = JsonBackend("saoud_robot", wind_speed=6.0, wind_from_deg=90.0, heading_deg=0.0)
+    eased = list(NEUTRAL)
+    eased[3] = 1500
+    for k in range(400):  # 2 s straight, the sail drawing
+        backend.handle(servo_packet(eased, 200, k))
+    first = json.loads(backend.handle(servo_packet(eased, 200, 400)))
+    start = frames.euler_from_ned_quaternion(first["quaternion"])[2]
+    turn = list(eased)
+    turn[0] = 2000
+    for k in range(401, 801):
+        line = json.loads(backend.handle(servo_packet(turn, 200, k)))
+    end = frames.euler_from_ned_quaternion(line["quaternion"])[2]
+    assert backend.physics.rudder_angle() < -0.3
+    assert line["imu"]["gyro"][2] > 0.05 and math.remainder(end - start, 2 * math.pi) > 0.2
