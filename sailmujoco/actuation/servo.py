@@ -14,6 +14,7 @@ import math
 
 from ..boat.fitted import ActuatorOptions
 from ..errors import check_number
+from .winch import SheetWinch
 
 
 def quantise(command: float, step: float) -> float:
@@ -172,8 +173,6 @@ def fitted_servos(options: ActuatorOptions, low, high, dt: float, sheeted: bool 
         (rudder servo, sail servo, the winch or None); the winch steps the sail servo's output
         against the sheet's load.
     """
-    from .winch import SheetWinch
-
     o = options
     rudder_rate = 0.0 if o.rudder_60deg_s == 0 else math.radians(60.0) / o.rudder_60deg_s
     rudder = FittedServo(dt, rate_limit=rudder_rate, deadband=math.radians(o.rudder_deadband_deg),

@@ -225,7 +225,7 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
         problems.append(f"{where}: [{SOURCES}] must be a table of strings")
     if problems:
         raise ValueError("\n".join(problems))
-    return _build(values, dict(notes), where).with_(**fitted)
+    return _build(values, fitted, dict(notes), where)
 
 
 def _section(table: dict, keys: tuple, where: str) -> tuple[dict, list]:
@@ -306,8 +306,9 @@ def _degrees_hint(key: Key, numbers) -> str:
     return ""
 
 
-def _build(values: dict, notes: dict, where: str) -> BoatParams:
-    """The dataclasses from checked values; their own checks' errors name the file and section."""
+def _build(values: dict, fitted: dict, notes: dict, where: str) -> BoatParams:
+    """The dataclasses from checked values and the fitted sections' figures; their own checks'
+    errors name the file and section."""
     parts = {}
     for section in ("hull", "keel", "rudder", "sail"):
         try:
@@ -315,7 +316,7 @@ def _build(values: dict, notes: dict, where: str) -> BoatParams:
         except ValueError as err:
             raise ValueError(f"{where}: [{section}] {err}") from None
     try:
-        return BoatParams(**values["boat"], **parts, sources=notes)
+        return BoatParams(**values["boat"], **parts, **fitted, sources=notes)
     except ValueError as err:
         raise ValueError(f"{where}: [boat] {err}") from None
 

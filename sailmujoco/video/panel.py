@@ -159,7 +159,7 @@ def text_lines(snap, references: dict, target: dict | None = None) -> list[str]:
               f"true wind {speed:.1f} m/s from {compass(wind_from(snap.wind))}",
               f"apparent {snap.aws:.1f} m/s, AWA {math.degrees(snap.awa):+.0f}°",
               f"rudder {math.degrees(snap.rudder):+.1f}°  sail {math.degrees(snap.sail):+.1f}°"]
-    measured = getattr(snap, "measured", None)
+    measured = snap.measured
     if measured is not None:
         off = float(np.hypot(*(np.asarray(measured["position"], float) - snap.position[:2])))
         error = math.degrees(math.remainder(measured["heading"] - heading, 2.0 * math.pi))
