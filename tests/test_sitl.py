@@ -247,3 +247,40 @@ def test_steering_to_starboard_turns_the_boat_to_starboard():
     end = frames.euler_from_ned_quaternion(line["quaternion"])[2]
     assert backend.physics.rudder_angle() < -0.3
     assert line["imu"]["gyro"][2] > 0.05 and math.remainder(end - start, 2 * math.pi) > 0.2
+
+
+def test_a_held_boat_lies_still_with_sitls_clock_running_until_ardupilot_steers():
+    """Moored: SITL's clock advances a frame per packet while the boat stays upright at rest at
+    home (the accelerometer reads -g, nothing else moves), whatever the disarmed sail does; the
+    first steering pulse off the middle lets it go, the clock running on, and a SITL restart moors
+    it again."""
+    log = []
+    backend = JsonBackend("saoud_robot", wind_speed=6.0, wind_from_deg=90.0, hold=True, log=log.append)
+    pwm = list(NEUTRAL)
+    for k in range(200):
+        pwm[3] = 1000 + 5 * k  # the mainsail moves (start-up, disarmed): not a release
+        line = json.loads(backend.handle(servo_packet(pwm, 400, k)))
+        assert line["timestamp"] == pytest.approx((k + 1) * backend.dt, abs=1e-12)
+        np.testing.assert_allclose(line["position"], [0.0, 0.0, 0.0], atol=1e-4)  # afloat at home
+        np.testing.assert_allclose(line["velocity"], [0.0, 0.0, 0.0], atol=1e-12)
+        np.testing.assert_allclose(line["imu"]["accel_body"], [0.0, 0.0, -GRAVITY], atol=1e-9)
+        np.testing.assert_allclose(line["imu"]["gyro"], [0.0, 0.0, 0.0], atol=1e-12)
+    assert backend.physics.data.time == 0.0 and log == []
+    pwm[0] = 1500 + 10  # within the deadband: still held
+    backend.handle(servo_packet(pwm, 400, 200))
+    pwm[0] = 1000  # one frame off the middle (ArduPilot setting up its outputs): still held
+    backend.handle(servo_packet(pwm, 400, 201))
+    pwm[0] = 1500
+    backend.handle(servo_packet(pwm, 400, 202))
+    assert backend.physics.data.time == 0.0
+    pwm[0] = 1600  # steering: let go after 0.1 s of it (20 frames), the 20th frame the first step
+    moving = [json.loads(backend.handle(servo_packet(pwm, 400, k))) for k in range(203, 603)]
+    assert moving[18]["timestamp"] == pytest.approx(222 * backend.dt, abs=1e-12)
+    assert moving[19]["timestamp"] == pytest.approx(223 * backend.dt, abs=1e-12)
+    assert backend.physics.data.time == pytest.approx(381 * backend.dt)
+    assert np.hypot(*moving[-1]["velocity"][:2]) > 0.05  # the wind on the beam has moved it
+    assert len(log) == 1 and "ArduPilot steered at t = 1.11 s; the boat leaves its mooring" in log[0]
+    assert backend.runs[-1][0]["t"] == pytest.approx(223 * backend.dt)  # the table keeps SITL's clock
+    again = json.loads(backend.handle(servo_packet(NEUTRAL, 400, 0)))  # SITL restarted: moored again
+    assert again["timestamp"] == pytest.approx(backend.dt)
+    np.testing.assert_allclose(again["velocity"], [0.0, 0.0, 0.0], atol=1e-12)

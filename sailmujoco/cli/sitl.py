@@ -52,6 +52,10 @@ def add_parser(sub) -> None:
                         help="the wind vane's figures: perfect or typical (default: the boat's own)")
     parser.add_argument("--heading", type=float, default=0.0, metavar="DEG",
                         help="compass heading the boat starts on (default 0)")
+    parser.add_argument("--hold", action="store_true",
+                        help="moor the boat at its start (upright, at rest) until ArduPilot first steers: "
+                             "it is launched on --heading when the mission starts, not left to drift "
+                             "through ArduPilot's start-up")
     parser.add_argument("--seed", type=SEED, default=0, help="seeds the wind, the sea and the vane's noise")
     parser.add_argument("--port", type=number(1024, low_open=False, unit="", integer=True, high=65535),
                         default=9002,
@@ -79,7 +83,7 @@ def run_cli(args) -> int:
     ----------
     args : argparse.Namespace
         ``boat``, ``wind_speed``, ``wind_from``, ``gusts``, ``waves``, ``sensors``, ``heading``,
-        ``seed``, ``port``, ``timeout``, ``seconds``, ``out``.
+        ``hold``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``.
 
     Returns
     -------
@@ -99,7 +103,7 @@ def run_cli(args) -> int:
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
-                          seed=args.seed, log=lambda line: print(line, flush=True))
+                          hold=args.hold, seed=args.seed, log=lambda line: print(line, flush=True))
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)
     previous = signal.signal(signal.SIGTERM, _terminated)  # a SIGTERM ends the run as a timeout does
@@ -110,7 +114,7 @@ def run_cli(args) -> int:
         return 2
     except Terminated:
         counters = backend.counters
-        print(f"sitl: terminated at t = {backend.physics.data.time:.2f} s", flush=True)
+        print(f"sitl: terminated at t = {backend.time():.2f} s", flush=True)
     finally:
         signal.signal(signal.SIGTERM, previous)
         for i, rows in enumerate(backend.runs):

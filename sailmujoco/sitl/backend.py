@@ -11,6 +11,15 @@ and the state goes back as one JSON line; nothing moves between packets.
   and the timestamps begin again at 0 (a timestamp that goes backwards is SITL's sign of a
   physics reset); nothing of the last run stays.
 * A datagram that is not a servo packet is refused, unanswered, with one line (once per kind).
+* With ``hold``, the boat lies moored at its start (upright, at rest, nothing stepped; the
+  timestamps go on) until ArduPilot steers, its steering pulse more than ``HOLD_DEADBAND_US``
+  off the middle for ``HOLD_STEER_S`` of SITL's time: a disarmed ArduPilot holds the middle, one
+  in AUTO steers at once (a single frame off the middle is ArduPilot 90700977 setting up its
+  outputs, 1.9 s after its start, and lets nothing go). A boat that cannot bear away from rest
+  (the robot: let go beam-on at rest, it luffs from 90 to 23 deg off the wind in 15 s, rudder hard
+  over to bear away, never faster than 0.5 m/s) is then
+  launched from a heading of the user's choice rather than left to drift beam-on through
+  ArduPilot's start-up.
 
 :meth:`JsonBackend.handle` is the protocol without a socket (the tests drive it);
 :meth:`JsonBackend.serve` listens on UDP and answers the address each packet came from.
@@ -39,6 +48,8 @@ from .state import boat_state
 
 DEFAULT_PORT = 9002  # ArduPilot's JSON backend; SITL instance -I N uses 9002 + 10 N
 RECORD_RATE_HZ = 10.0  # rows of the trajectory table per simulated second
+HOLD_DEADBAND_US = 10  # a held boat is let go when the steering pulse is further than this off its middle
+HOLD_STEER_S = 0.1  # ... for this long (s of SITL's time)
 
 
 class SitlError(RuntimeError):
@@ -92,13 +103,15 @@ class JsonBackend:
         Compass heading the boat starts on, deg.
     seed : int
         Seeds the wind, the sea's phases and the vane's noise.
+    hold : bool
+        The boat lies moored at its start until ArduPilot first steers (see the module's notes).
     log : callable, optional
         Called with each one-line report (``print`` on the command line).
     """
 
     def __init__(self, boat="saoud_robot", *, wind_speed: float = 5.0, wind_from_deg: float = 0.0,
                  gusts: bool = False, waves=None, sensors=None, servos: ServoMap | None = None,
-                 heading_deg: float = 0.0, seed: int = 0, log=None):
+                 heading_deg: float = 0.0, seed: int = 0, hold: bool = False, log=None):
         wind = WindConfig(speed=float(wind_speed), direction_from=math.radians(wind_from_deg),
                           gusts=bool(gusts), wander=bool(gusts), seed=int(seed))
         self.physics = BoatPhysics.load(boat, sail_mode="sheeted", wind=wind, waves=waves)
@@ -107,6 +120,7 @@ class JsonBackend:
         self.servos = servos or ServoMap()
         self.heading = math.radians(heading_deg)
         self.seed = int(seed)
+        self.hold = bool(hold)
         self.dt = float(self.physics.timestep())
         low, high = self.physics.action_bounds()
         self._max_rudder, self._sheet_range = float(high[0]), (float(low[1]), float(high[1]))
@@ -127,7 +141,14 @@ class JsonBackend:
         self._last_line = b""
         self._velocity = None
         self._next_row = 0.0
+        self._held = self.hold
+        self._steered = 0.0  # s the steering has been off its middle while held
+        self._moored = 0.0  # s spent moored: SITL's clock is this plus the boat's
         self.runs.append([])
+
+    def time(self) -> float:
+        """SITL's clock: the time the boat has sailed plus the time it lay moored, s."""
+        return self._moored + float(self.physics.data.time)
 
     def handle(self, data: bytes) -> bytes:
         """The answer to one datagram from SITL.
@@ -160,6 +181,13 @@ class JsonBackend:
             return self._last_line
         steering = packet.channel(self.servos.steering_channel)
         mainsail = packet.channel(self.servos.mainsail_channel)
+        if self._held:
+            off = abs(steering - 0.5 * (self.servos.pwm_min + self.servos.pwm_max)) > HOLD_DEADBAND_US
+            self._steered = self._steered + self.dt if off else 0.0
+            if self._steered < HOLD_STEER_S - 1e-9:
+                return self._answer_moored(packet.frame_count)
+            self._held = False
+            self.log(f"sitl: ArduPilot steered at t = {self.time():.2f} s; the boat leaves its mooring")
         rudder = self.servos.rudder(steering, self._max_rudder)
         boom = self.servos.sail_angle(mainsail)
         sheet = float(np.clip(sheet_length(self.params, boom), *self._sheet_range))
@@ -168,10 +196,20 @@ class JsonBackend:
         self.physics.step(1)
         vane = self._vane()
         state = boat_state(self.physics, before if self._velocity is not None else None, self.dt, vane)
+        state["timestamp"] = self.time()
         self._velocity = before
         self._last_count, self._last_line = packet.frame_count, state_line(state)
         self.counters.answered += 1
         self._record(steering, mainsail, sheet, vane)
+        return self._last_line
+
+    def _answer_moored(self, frame_count: int) -> bytes:
+        """The answer while the boat lies moored: SITL's clock advances one frame, nothing moves."""
+        self._moored += self.dt
+        state = boat_state(self.physics, None, self.dt, self._vane())
+        state["timestamp"] = self.time()
+        self._last_count, self._last_line = frame_count, state_line(state)
+        self.counters.answered += 1
         return self._last_line
 
     def _vane(self) -> tuple[float, float]:
@@ -185,7 +223,7 @@ class JsonBackend:
     def _record(self, steering: int, mainsail: int, sheet: float, vane) -> None:
         """A row of the trajectory table, ``RECORD_RATE_HZ`` times a simulated second."""
         p = self.physics
-        t = float(p.data.time)
+        t = self.time()
         if t + 1e-9 < self._next_row:
             return
         self._next_row = t + 1.0 / RECORD_RATE_HZ
@@ -245,7 +283,7 @@ class JsonBackend:
         return self.counters
 
     def _loop(self, sock, port: int, timeout: float, seconds: float | None) -> None:
-        while seconds is None or self.physics.data.time < seconds - 1e-9:
+        while seconds is None or self.time() < seconds - 1e-9:
             try:
                 data, address = sock.recvfrom(4096)
             except TimeoutError:
@@ -253,7 +291,7 @@ class JsonBackend:
                     raise SitlError(f"no servo packet on UDP {port} in {timeout:g} s: start ArduPilot with "
                                     "--model JSON (docs/ardupilot.md), or give its port") from None
                 self.log(f"sitl: SITL stopped sending: no packet for {timeout:g} s, the run ends at "
-                         f"t = {self.physics.data.time:.2f} s")
+                         f"t = {self.time():.2f} s")
                 return
             try:
                 answer = self.handle(data)
@@ -261,7 +299,7 @@ class JsonBackend:
                 self._refuse(str(err), address)
                 continue
             except SimulationStopped as err:
-                self.log(f"sitl: the boat stopped at t = {self.physics.data.time:.2f} s: {err}; the run ends")
+                self.log(f"sitl: the boat stopped at t = {self.time():.2f} s: {err}; the run ends")
                 return
             sock.sendto(answer, address)
 

@@ -1,0 +1,79 @@
+"""The flights the comparison makes: each simulator, calm and in the sea, on its seeds.
+
+ArduPilot's parameters are its rover and sailboat defaults, except on our boats
+``SAIL_ANGLE_IDEAL`` (the angle of attack ArduPilot sheets the sail to, 25 deg by default), set to
+the angle at which the boat's sail stalls (its ``sail.suction_stall``, 15 deg on both: Saoud (2015)
+§VII-A's flat sail). At 25 deg both sails are stalled; the robot, sheeted so, cannot bear away from
+close-hauled and never leaves its start. One case keeps the default on the robot to show it.
+SIM_Sailboat keeps every default: it is what ArduPilot's sailboat defaults are tuned against.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+SIMULATORS = (("sailboat", "ArduPilot's SIM_Sailboat"), ("wille_yacht", "wille_yacht, 6-DOF"),
+              ("saoud_robot", "saoud_robot, 6-DOF"))
+
+
+@dataclass(frozen=True)
+class Case:
+    """One flight to make.
+
+    Parameters
+    ----------
+    simulator : str
+        ``"sailboat"`` or one of our boats.
+    sea : bool
+        The 1 m sea.
+    seed : int
+        Its seed.
+    tuned : bool
+        ``SAIL_ANGLE_IDEAL`` set to the sail's stall angle (our boats).
+    parameters : dict
+        Further ArduPilot parameters.
+    """
+
+    simulator: str
+    sea: bool
+    seed: int
+    tuned: bool = True
+    parameters: dict = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        """The simulator's name in the report."""
+        name = dict(SIMULATORS)[self.simulator]
+        return name if self.tuned or self.simulator == "sailboat" else f"{name}, SAIL_ANGLE_IDEAL 25"
+
+    @property
+    def label(self) -> str:
+        """The case (without the seed)."""
+        return f"{self.name}, {'1 m sea' if self.sea else 'calm'}"
+
+    @property
+    def folder(self) -> str:
+        """The flight's folder under ``flights/``."""
+        tag = "" if self.tuned or self.simulator == "sailboat" else "_default_ideal"
+        return f"{self.simulator}{tag}_{'sea' if self.sea else 'calm'}_seed{self.seed}"
+
+
+def cases(seeds: int) -> list[Case]:
+    """Every flight: calm twice (nothing is drawn in a steady wind: the two show it), the sea on
+    seeds ``0 .. seeds-1`` for our boats (their sea's phases) and twice for SIM_Sailboat (one sine,
+    nothing drawn), and the robot once with ArduPilot's own ``SAIL_ANGLE_IDEAL``."""
+    out = []
+    for simulator, _ in SIMULATORS:
+        out += [Case(simulator, False, seed) for seed in range(2)]
+        n = 2 if simulator == "sailboat" else seeds
+        out += [Case(simulator, True, seed) for seed in range(n)]
+    out.append(Case("saoud_robot", False, 0, tuned=False))
+    return out
+
+
+def ours_parameters(boat: str) -> dict:
+    """ArduPilot's parameters for one of our boats: ``SAIL_ANGLE_IDEAL`` at its sail's stall."""
+    from sailmujoco.boat.catalogue import get_boat
+
+    return {"SAIL_ANGLE_IDEAL": round(math.degrees(get_boat(boat).sail.suction_stall), 1)}
