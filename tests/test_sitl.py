@@ -284,3 +284,27 @@ def test_a_held_boat_lies_still_with_sitls_clock_running_until_ardupilot_steers(
     again = json.loads(backend.handle(servo_packet(NEUTRAL, 400, 0)))  # SITL restarted: moored again
     assert again["timestamp"] == pytest.approx(backend.dt)
     np.testing.assert_allclose(again["velocity"], [0.0, 0.0, 0.0], atol=1e-12)
+
+
+def test_a_filmed_run_keeps_five_states_a_second_and_films_them_without_changing_the_run(tmp_path):
+    """Filming keeps a snapshot every 0.2 s of the boat's time and leaves every answer to SITL as
+    it was; the film has one frame per snapshot."""
+    imageio = pytest.importorskip("imageio.v3")
+    pytest.importorskip("imageio_ffmpeg")
+    from sailmujoco.sitl.film import FILM_RATE_HZ, film
+
+    filmed = JsonBackend("wille_yacht", wind_speed=6.0, wind_from_deg=90.0, film=True)
+    plain = JsonBackend("wille_yacht", wind_speed=6.0, wind_from_deg=90.0)
+    pwm = list(NEUTRAL)
+    pwm[0] = 1700
+    for k in range(400):  # 2 s
+        assert filmed.handle(servo_packet(pwm, 200, k)) == plain.handle(servo_packet(pwm, 200, k))
+    snaps = filmed.films[-1]
+    # the first step, then every 0.2 s
+    assert FILM_RATE_HZ == 5.0 and len(snaps) == 11 and plain.films == [[]]
+    np.testing.assert_allclose([s.time for s in snaps], [0.005, *(0.2 * np.arange(1, 11))], atol=1e-9)
+    assert np.hypot(*(snaps[-1].position - snaps[0].position)[:2]) > 0.1  # the wind on the beam moves it
+    out = tmp_path / "run.mp4"
+    assert film(snaps, filmed.params, out, width=160, height=120, progress=False) == 11
+    frames = imageio.imread(out, plugin="FFMPEG", index=None)
+    assert frames.shape == (11, 120, 160, 3) and frames[0].std() > 10

@@ -65,6 +65,9 @@ def add_parser(sub) -> None:
     parser.add_argument("--seconds", type=number(0.0, low_open=True, unit="s"), default=None,
                         help="simulated seconds after which the run ends (default: until SITL stops)")
     parser.add_argument("--out", help="folder for trajectory.csv (default results/sitl/<boat>)")
+    parser.add_argument("--video", metavar="FILE.mp4",
+                        help="film the run: the boat drawn 5 times a simulated second once the run is over, "
+                             "played at 25 frames a second (five times real time)")
     parser.set_defaults(func=run_cli)
 
 
@@ -83,7 +86,7 @@ def run_cli(args) -> int:
     ----------
     args : argparse.Namespace
         ``boat``, ``wind_speed``, ``wind_from``, ``gusts``, ``waves``, ``sensors``, ``heading``,
-        ``hold``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``.
+        ``hold``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``, ``video``.
 
     Returns
     -------
@@ -103,7 +106,8 @@ def run_cli(args) -> int:
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
-                          hold=args.hold, seed=args.seed, log=lambda line: print(line, flush=True))
+                          hold=args.hold, film=bool(args.video), seed=args.seed,
+                          log=lambda line: print(line, flush=True))
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)
     previous = signal.signal(signal.SIGTERM, _terminated)  # a SIGTERM ends the run as a timeout does
@@ -121,9 +125,27 @@ def run_cli(args) -> int:
             if rows:
                 name = "trajectory.csv" if len(backend.runs) == 1 else f"trajectory_{i}.csv"
                 backend.trajectory(i).to_csv(out / name, index=False)
+    if args.video:
+        _film(backend, args, waves)
     simulated = counters.answered * backend.dt
     speed = simulated / counters.wall if counters.wall > 0 else math.nan
     print(f"sitl: {counters.answered} frames ({simulated:.1f} s simulated) in {counters.wall:.1f} s, "
           f"{speed:.1f} times real time; {counters.resent} sent again, {counters.refused} refused, "
           f"{counters.resets} restarts; the trajectory in {out}")
     return 0
+
+
+def _film(backend, args, waves) -> None:
+    """Film the last run that moved (``--video``)."""
+    from ..boat.catalogue import boat_label
+    from ..sitl.film import film
+
+    snapshots = next((snaps for snaps in reversed(backend.films) if snaps), [])
+    if not snapshots:
+        print("sitl: nothing to film: the boat never moved", flush=True)
+        return
+    labels = (f"{boat_label(args.boat)} · ArduPilot SITL · {args.wind_speed:g} m/s "
+              f"from {args.wind_from:g} deg" + (" · sea" if waves is not None else ""))
+    print(f"sitl: filming {len(snapshots)} frames ({snapshots[-1].time - snapshots[0].time:.0f} s sailed) "
+          f"to {args.video}", flush=True)
+    film(snapshots, backend.params, args.video, waves=waves, labels=labels, progress=sys.stdout.isatty())

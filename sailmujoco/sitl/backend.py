@@ -42,6 +42,7 @@ from ..forces.wind import WindConfig
 from ..frames import wrap_angle, yaw_from_heading
 from ..measurement.instruments import Instruments
 from ..physics import BoatPhysics
+from .film import FILM_RATE_HZ
 from .protocol import ProtocolError, parse_servo_packet, state_line
 from .servos import ServoMap
 from .state import boat_state
@@ -105,13 +106,16 @@ class JsonBackend:
         Seeds the wind, the sea's phases and the vane's noise.
     hold : bool
         The boat lies moored at its start until ArduPilot first steers (see the module's notes).
+    film : bool
+        Keep the boat's state ``FILM_RATE_HZ`` times a simulated second (``self.films``, one list
+        per run) for :func:`sailmujoco.sitl.film.film`.
     log : callable, optional
         Called with each one-line report (``print`` on the command line).
     """
 
     def __init__(self, boat="saoud_robot", *, wind_speed: float = 5.0, wind_from_deg: float = 0.0,
                  gusts: bool = False, waves=None, sensors=None, servos: ServoMap | None = None,
-                 heading_deg: float = 0.0, seed: int = 0, hold: bool = False, log=None):
+                 heading_deg: float = 0.0, seed: int = 0, hold: bool = False, film: bool = False, log=None):
         wind = WindConfig(speed=float(wind_speed), direction_from=math.radians(wind_from_deg),
                           gusts=bool(gusts), wander=bool(gusts), seed=int(seed))
         self.physics = BoatPhysics.load(boat, sail_mode="sheeted", wind=wind, waves=waves)
@@ -121,6 +125,8 @@ class JsonBackend:
         self.heading = math.radians(heading_deg)
         self.seed = int(seed)
         self.hold = bool(hold)
+        self.film = bool(film)
+        self.films: list[list] = []  # the snapshots of each run, when filmed
         self.dt = float(self.physics.timestep())
         low, high = self.physics.action_bounds()
         self._max_rudder, self._sheet_range = float(high[0]), (float(low[1]), float(high[1]))
@@ -144,7 +150,9 @@ class JsonBackend:
         self._held = self.hold
         self._steered = 0.0  # s the steering has been off its middle while held
         self._moored = 0.0  # s spent moored: SITL's clock is this plus the boat's
+        self._next_snapshot = 0.0
         self.runs.append([])
+        self.films.append([])
 
     def time(self) -> float:
         """SITL's clock: the time the boat has sailed plus the time it lay moored, s."""
@@ -201,6 +209,11 @@ class JsonBackend:
         self._last_count, self._last_line = packet.frame_count, state_line(state)
         self.counters.answered += 1
         self._record(steering, mainsail, sheet, vane)
+        if self.film and self.physics.data.time + 1e-9 >= self._next_snapshot:
+            self._next_snapshot += 1.0 / FILM_RATE_HZ
+            from ..video.scene import snapshot_physics
+
+            self.films[-1].append(snapshot_physics(self.physics))
         return self._last_line
 
     def _answer_moored(self, frame_count: int) -> bytes:
