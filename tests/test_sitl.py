@@ -308,3 +308,71 @@ def test_a_filmed_run_keeps_five_states_a_second_and_films_them_without_changing
     assert film(snaps, filmed.params, out, width=160, height=120, progress=False) == 11
     frames = imageio.imread(out, plugin="FFMPEG", index=None)
     assert frames.shape == (11, 120, 160, 3) and frames[0].std() > 10
+
+
+@pytest.mark.parametrize("stop", ["SIGINT", "SIGTERM"])
+def test_the_command_line_run_ends_on_ctrl_c_or_sigterm_with_its_table_and_film(tmp_path, stop):
+    """``sailmujoco sitl`` as a user runs it: it answers a stand-in SITL, and Ctrl-C (SIGINT) or
+    SIGTERM ends it with exit 0, its summary, the trajectory table and the film written."""
+    import signal
+    import subprocess
+    import sys
+
+    pytest.importorskip("imageio_ffmpeg")
+    port = _free_port()
+    out = tmp_path / "run"
+    command = [sys.executable, "-m", "sailmujoco", "sitl", "saoud_robot", "--port", str(port), "--hold",
+               "--heading", "135", "--out", str(out), "--video", str(out / "film.mp4")]
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
+    sock.settimeout(0.5)
+    try:
+        answer, tries = None, 0
+        while answer is None and tries < 60:  # the command starting: ask until it answers
+            sock.sendto(servo_packet(NEUTRAL, 400, 0), ("127.0.0.1", port))
+            try:
+                answer = sock.recv(65536)
+            except TimeoutError:
+                tries += 1
+        assert answer is not None, "sailmujoco sitl never answered"
+        steer = list(NEUTRAL)
+        steer[0] = 1600
+        for k in range(1, 601):  # 3 s: 0.1 s held (steering), then sailing
+            sock.sendto(servo_packet(steer, 400, k), ("127.0.0.1", port))
+            assert sock.recv(65536)
+        process.send_signal(getattr(signal, stop))
+        text, _ = process.communicate(timeout=120)
+    finally:
+        sock.close()
+        if process.poll() is None:
+            process.kill()
+    assert process.returncode == 0, text
+    how = "interrupted" if stop == "SIGINT" else "terminated"
+    assert f"sitl: {how} at t = 3.00 s" in text and "Traceback" not in text
+    assert "ArduPilot steered at t = 0.10 s; the boat leaves its mooring" in text
+    assert "601 frames (3.0 s simulated)" in text and "filming 15 frames" in text
+    rows = (out / "trajectory.csv").read_text().splitlines()
+    assert rows[0].startswith("t,x,y,heading_deg") and len(rows) == 1 + 30  # 0.105 s to 3.005 s
+    assert (out / "film.mp4").stat().st_size > 1000
+
+
+def test_the_command_lines_seed_draws_the_sea_and_the_sea_it_draws_moves_the_boat():
+    """``--seed`` draws the sea's phases (unless ``--waves`` gives its own seed), from the wind's
+    direction; two seeds are two seas, so the boat heaves differently on each."""
+    from sailmujoco.cli.main import build_parser
+    from sailmujoco.cli.sitl import sea_of
+
+    parse = build_parser().parse_args
+    assert sea_of(parse(["sitl", "saoud_robot"])) is None
+    sea = sea_of(parse(["sitl", "saoud_robot", "--waves", "hs=1", "--seed", "3", "--wind-from", "90"]))
+    assert (sea.hs, sea.seed) == (1.0, 3) and sea.direction_from == pytest.approx(math.pi / 2)
+    own = parse(["sitl", "saoud_robot", "--waves", "hs=1", "--waves", "seed=5", "--seed", "3"])
+    assert sea_of(own).seed == 5
+    heave = []
+    for seed in (0, 1):
+        backend = JsonBackend("saoud_robot", wind_speed=5.0, waves=sea_of(parse(
+            ["sitl", "saoud_robot", "--waves", "hs=1", "--seed", str(seed)])))
+        lines = [json.loads(backend.handle(servo_packet(NEUTRAL, 200, k))) for k in range(2000)]  # 10 s
+        heave.append([line["position"][2] for line in lines])
+    assert np.ptp(heave[0]) > 0.1 and np.ptp(heave[1]) > 0.1  # a 1 m sea lifts the boat
+    assert np.max(np.abs(np.subtract(heave[0], heave[1]))) > 0.05

@@ -71,6 +71,26 @@ def add_parser(sub) -> None:
     parser.set_defaults(func=run_cli)
 
 
+def sea_of(args):
+    """The run's sea from ``--waves`` (None: calm): from the wind's direction and drawn by
+    ``--seed`` unless ``--waves`` gives its own.
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        ``waves``, ``wind_from``, ``seed``.
+    """
+    from ..options import wave_config
+
+    if not args.waves:
+        return None
+    values = dict(args.waves)
+    if "direction_from_deg" not in values:  # the waves come with the wind unless told
+        values["direction_from"] = math.radians(args.wind_from)
+    values.setdefault("seed", args.seed)
+    return wave_config(values, "--waves")
+
+
 class Terminated(Exception):
     """SIGTERM arrived: the run ends, its trajectory written."""
 
@@ -94,15 +114,9 @@ def run_cli(args) -> int:
         0; 2 where the port is taken or SITL never sent a packet (one line on stderr).
     """
     from ..boat.catalogue import boat_label
-    from ..options import wave_config
     from ..sitl.backend import JsonBackend, SitlError
 
-    waves = None
-    if args.waves:
-        values = dict(args.waves)
-        if "direction_from_deg" not in values:  # the waves come with the wind unless told
-            values["direction_from"] = math.radians(args.wind_from)
-        waves = wave_config(values, "--waves")
+    waves = sea_of(args)
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
@@ -110,15 +124,16 @@ def run_cli(args) -> int:
                           log=lambda line: print(line, flush=True))
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)
-    previous = signal.signal(signal.SIGTERM, _terminated)  # a SIGTERM ends the run as a timeout does
+    previous = signal.signal(signal.SIGTERM, _terminated)  # SIGTERM or Ctrl-C: the run ends as on a timeout
     try:
         counters = backend.serve(port=args.port, timeout=args.timeout, seconds=args.seconds)
     except SitlError as err:
         print(f"sailmujoco sitl: {err}", file=sys.stderr)
         return 2
-    except Terminated:
+    except (Terminated, KeyboardInterrupt) as stop:
         counters = backend.counters
-        print(f"sitl: terminated at t = {backend.time():.2f} s", flush=True)
+        how = "interrupted" if isinstance(stop, KeyboardInterrupt) else "terminated"
+        print(f"sitl: {how} at t = {backend.time():.2f} s", flush=True)
     finally:
         signal.signal(signal.SIGTERM, previous)
         for i, rows in enumerate(backend.runs):

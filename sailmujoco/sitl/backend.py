@@ -94,7 +94,7 @@ class JsonBackend:
     gusts : bool
         Gusts and the wind's wander (seeded by ``seed``); False: a steady wind.
     waves : WaveConfig, optional
-        The sea (None: calm water).
+        The sea (None: calm water); its phases are drawn by its own ``seed``.
     sensors : str, dict or SensorOptions
         The wind vane's figures (:func:`sailmujoco.boat.fitted.sensor_options`; default the
         boat's own). SITL models its own GPS, compass and IMU from the state it is sent.
@@ -103,7 +103,7 @@ class JsonBackend:
     heading_deg : float
         Compass heading the boat starts on, deg.
     seed : int
-        Seeds the wind, the sea's phases and the vane's noise.
+        Seeds the wind's gusts and the vane's noise.
     hold : bool
         The boat lies moored at its start until ArduPilot first steers (see the module's notes).
     film : bool
