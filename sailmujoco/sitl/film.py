@@ -42,14 +42,15 @@ def film(snapshots, params, path, *, waves=None, labels: str = "", width: int = 
     int
         Frames written.
     """
-    from ..video.recording import _Frames, _partial_file
+    from ..video.encoding import FrameWriter, partial_file
     from ..video.scene import SceneRenderer
 
     path = Path(path)
     renderer = SceneRenderer(params, width=width, height=height, sail_mode="sheeted", waves=waves,
                              labels=labels)
-    with _partial_file(path) as partial:
-        frames = _Frames(renderer, partial, PLAYBACK_FPS, len(snapshots), quality=6, progress=progress)
+    with partial_file(path) as partial:
+        frames = FrameWriter(renderer, partial, PLAYBACK_FPS, len(snapshots), quality=6,
+                             progress=progress)
         try:
             for snap in snapshots:
                 frames.emit(snap)

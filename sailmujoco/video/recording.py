@@ -15,7 +15,6 @@ encoded by the ffmpeg binary that the ``imageio-ffmpeg`` package ships.
 from __future__ import annotations
 
 import math
-import os
 import time
 from collections.abc import Callable
 from contextlib import contextmanager, nullcontext
@@ -24,8 +23,8 @@ from pathlib import Path
 
 from ..boat.catalogue import boat_label
 from ..errors import ControllerFailed, act
-from ..progress import Progress
 from .camera import ELEVATION_DEG
+from .encoding import FrameWriter, encoder, partial_file
 from .gl import import_gl
 from .panel import measured_of
 from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snapshot_physics
@@ -202,15 +201,6 @@ def check_arguments(*, camera: str, fps, seconds, width, height, follow_distance
     return fps, width, height
 
 
-def _encoder():
-    """The ``imageio_ffmpeg`` module (its ffmpeg binary encodes the mp4)."""
-    try:
-        import imageio_ffmpeg
-    except ImportError as err:
-        raise ImportError("video needs imageio-ffmpeg: pip install imageio-ffmpeg") from err
-    return imageio_ffmpeg
-
-
 def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, controller_options,
               options: dict, waves=None):
     """(env, policy, controller name, duration in s) of the run, the policy reset with ``seed``;
@@ -245,61 +235,7 @@ def _scene_renderer(boat: str, task: str, world: str, name: str, env, options: d
                                        labels=f"{boat_label(boat)} · {task} · {name} ({world})", **kwargs)
 
 
-class _Frames:
-    """The frames of one recording: when the next one is due, drawing it and sending it to ffmpeg."""
-
-    def __init__(self, renderer: SceneRenderer, path: Path, fps: float, n_frames: int,
-                 quality: float, progress: bool):
-        self.renderer, self.fps, self.n_frames = renderer, fps, n_frames
-        self.count = 0
-        self.last = None  # (snapshot, frame) of the last frame drawn
-        self.writer = _encoder().write_frames(
-            str(path), (renderer.width, renderer.height), fps=fps, codec="libx264", quality=quality,
-            macro_block_size=1, ffmpeg_log_level="error",
-            output_params=["-preset", "faster", "-movflags", "+faststart"])
-        self.writer.send(None)
-        self.bar = Progress(n_frames, "video", show=progress, unit="frame")
-
-    def due(self) -> float | None:
-        return self.count / self.fps if self.count < self.n_frames else None
-
-    def emit(self, snap: Snapshot) -> None:
-        frame = self.renderer.render(snap)
-        self.writer.send(frame)
-        self.count += 1
-        self.last = (snap, frame)
-        self.bar.update()
-
-    def hold(self, frame, n: int) -> None:
-        """Send ``frame`` ``n`` more times."""
-        for _ in range(n):
-            self.writer.send(frame)
-            self.count += 1
-
-    def close(self) -> None:
-        self.writer.close()
-        self.renderer.close()
-        self.bar.close()
-
-
-@contextmanager
-def _partial_file(out_path: Path):
-    """A hidden name beside ``out_path`` (its folders made) to write to; renamed to ``out_path``
-    when the block ends without error, removed otherwise."""
-    out_path.parent.mkdir(parents=True, exist_ok=True)
-    partial = out_path.with_name(f".{out_path.stem}.partial{out_path.suffix or '.mp4'}")
-    ok = False
-    try:
-        yield partial
-        ok = True
-    finally:
-        if ok:
-            os.replace(partial, out_path)
-        else:
-            partial.unlink(missing_ok=True)
-
-
-def _sail(env, policy, name: str, frames: _Frames,
+def _sail(env, policy, name: str, frames: FrameWriter,
           mujoco_world: bool) -> tuple[float, ControllerFailed | None]:
     """Run the episode, drawing each frame when due; returns the wall time of the first frame,
     and the controller's failure that ended it early (or None)."""
@@ -335,7 +271,7 @@ def _sail(env, policy, name: str, frames: _Frames,
     return start_loop, None
 
 
-def _finish(env, frames: _Frames, still, failure: ControllerFailed | None) -> dict:
+def _finish(env, frames: FrameWriter, still, failure: ControllerFailed | None) -> dict:
     """The task's metrics (none after a controller's failure); a run that stopped early, or
     whose controller failed, ends with its last frame, marked, for 1 s."""
     metrics = {} if failure is not None else env.task.metrics()
@@ -418,7 +354,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     fps, width, height = check_arguments(
         camera=camera, fps=fps, seconds=seconds, width=width, height=height, follow_distance=follow_distance,
         follow_bearing_deg=follow_bearing_deg, quality=quality, options=options)
-    import_gl(), _encoder()  # fail before loading anything
+    import_gl(), encoder()  # fail before loading anything
     start_wall = time.perf_counter()
     env, policy, name, duration = _load_run(boat, task, world, controller, seed, seconds, controller_options,
                                             options, waves)
@@ -437,8 +373,8 @@ def _film(env, policy, name: str, renderer: SceneRenderer, out_path: Path, *, mu
     """Run the episode into ``out_path`` (written under a hidden name, renamed when complete);
     its :class:`Recording`. A controller's failure ends the video there; the video is kept and
     the failure raised, its ``kept`` the Recording."""
-    with _partial_file(out_path) as partial:
-        frames = _Frames(renderer, partial, fps, n_frames, quality, progress)
+    with partial_file(out_path) as partial:
+        frames = FrameWriter(renderer, partial, fps, n_frames, quality, progress)
         try:
             start_loop, failure = _sail(env, policy, name, frames, mujoco_world)
             metrics = _finish(env, frames, still, failure)

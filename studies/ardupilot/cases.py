@@ -62,7 +62,13 @@ class Case:
 def cases(seeds: int) -> list[Case]:
     """Every flight: calm twice (nothing is drawn in a steady wind: the two show it), the sea on
     seeds ``0 .. seeds-1`` for our boats (their sea's phases) and twice for SIM_Sailboat (one sine,
-    nothing drawn), and the robot once with ArduPilot's own ``SAIL_ANGLE_IDEAL``."""
+    nothing drawn), and the robot once with ArduPilot's own ``SAIL_ANGLE_IDEAL``.
+
+    Parameters
+    ----------
+    seeds : int
+        N, the flights of each of our boats in the sea.
+    """
     out = []
     for simulator, _ in SIMULATORS:
         out += [Case(simulator, False, seed) for seed in range(2)]
@@ -73,7 +79,13 @@ def cases(seeds: int) -> list[Case]:
 
 
 def ours_parameters(boat: str) -> dict:
-    """ArduPilot's parameters for one of our boats: ``SAIL_ANGLE_IDEAL`` at its sail's stall."""
+    """ArduPilot's parameters for one of our boats: ``SAIL_ANGLE_IDEAL`` at its sail's stall.
+
+    Parameters
+    ----------
+    boat : str
+        A registered boat or a boat file.
+    """
     from sailmujoco.boat.catalogue import get_boat
 
     return {"SAIL_ANGLE_IDEAL": round(math.degrees(get_boat(boat).sail.suction_stall), 1)}

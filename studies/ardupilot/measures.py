@@ -23,7 +23,15 @@ HEEL_MAX_DEG = 15.0  # ArduPilot's SAIL_HEEL_MAX default
 
 def true_wind_angle(heading_deg, wind_from_deg: float) -> np.ndarray:
     """The true wind angle of each heading, deg in (-180, 180]: positive with the wind over the
-    starboard side (the boat's heading to the left of the wind's bearing)."""
+    starboard side (the boat's heading to the left of the wind's bearing).
+
+    Parameters
+    ----------
+    heading_deg : array_like
+        Compass headings, deg.
+    wind_from_deg : float
+        The bearing the wind comes from, deg.
+    """
     return (np.asarray(wind_from_deg, float) - np.asarray(heading_deg, float) + 180.0) % 360.0 - 180.0
 
 
@@ -52,7 +60,15 @@ def tacks(heading_deg, wind_from_deg: float) -> int:
 
 
 def cross_track(north, east, leg_start, leg_end) -> np.ndarray:
-    """Distance of each point from the line through ``leg_start`` and ``leg_end`` (north, east), m."""
+    """Distance of each point from the line through ``leg_start`` and ``leg_end``, m.
+
+    Parameters
+    ----------
+    north, east : array_like
+        The points, m from home.
+    leg_start, leg_end : tuple of float
+        (north, east) of the leg's ends, m.
+    """
     (n0, e0), (n1, e1) = leg_start, leg_end
     dn, de = n1 - n0, e1 - e0
     length = math.hypot(dn, de)

@@ -99,7 +99,13 @@ class Flight:
 
 
 def parm_text(values: dict) -> str:
-    """An ArduPilot parameter file."""
+    """An ArduPilot parameter file's text.
+
+    Parameters
+    ----------
+    values : dict
+        Parameter name -> value.
+    """
     return "".join(f"{name} {value}\n" for name, value in values.items())
 
 
@@ -277,7 +283,13 @@ def environment_ready() -> str | None:
 
 def find_ardurover(given: str | os.PathLike | None) -> Path | str:
     """The ardurover program: ``given`` (the program or its folder), else ``$SAILMUJOCO_ARDUROVER``,
-    else ``ardurover`` on the PATH; a one-line reason where none is found."""
+    else ``ardurover`` on the PATH; a one-line reason where none is found.
+
+    Parameters
+    ----------
+    given : str or os.PathLike, optional
+        ``--ardurover``.
+    """
     import shutil
 
     candidate = given or os.environ.get("SAILMUJOCO_ARDUROVER") or shutil.which("ardurover")

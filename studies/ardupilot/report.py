@@ -20,7 +20,15 @@ COLUMNS = ("mark_s", "home_s", "tacks", "tacks_timed_out", "heel_max_deg", "over
 
 
 def save_flight(flight, folder: Path) -> None:
-    """Keep one flight as it lands: ``record.csv``, ``events.csv`` and ``flight.json`` in ``folder``."""
+    """Keep one flight as it lands: ``record.csv``, ``events.csv`` and ``flight.json`` in ``folder``.
+
+    Parameters
+    ----------
+    flight : Flight
+        Its record.
+    folder : Path
+        Where it goes.
+    """
     folder.mkdir(parents=True, exist_ok=True)
     _write_csv(folder / "record.csv", flight.rows)
     _write_csv(folder / "events.csv", [{"t": t, "text": text} for t, text in flight.events])
@@ -29,7 +37,13 @@ def save_flight(flight, folder: Path) -> None:
 
 
 def load_flight(folder: Path):
-    """A flight :func:`save_flight` kept (None where it is incomplete)."""
+    """A flight :func:`save_flight` kept (None where it is incomplete).
+
+    Parameters
+    ----------
+    folder : Path
+        The flight's folder.
+    """
     from .mission import Flight
 
     if not (folder / "flight.json").is_file():
@@ -80,7 +94,13 @@ def _write_csv(path: Path, rows: list[dict]) -> None:
 
 def summary(rows: list[dict]) -> list[dict]:
     """Each case's numbers over its flights: finished k of N, and each measure's mean with its
-    95 % interval (times over the flights that finished)."""
+    95 % interval (times over the flights that finished).
+
+    Parameters
+    ----------
+    rows : list of dict
+        One per flight (:func:`write_all`).
+    """
     order = list(dict.fromkeys(r["case"] for r in rows))
     out = []
     for case in order:
@@ -105,7 +125,15 @@ def _text(interval, decimals: int = 0) -> str:
 
 
 def report(rows: list[dict], flights) -> str:
-    """The Markdown of ``report.md``."""
+    """The Markdown of ``report.md``.
+
+    Parameters
+    ----------
+    rows : list of dict
+        One per flight (:func:`write_all`).
+    flights : list of (Case, Mission, Flight)
+        What flew.
+    """
     table = summary(rows)
     lines = [
         "# ArduPilot's sailboat code: its own simulator against the 6-DOF boats",
@@ -151,7 +179,13 @@ def report(rows: list[dict], flights) -> str:
 
 
 def findings(table: list[dict]) -> list[str]:
-    """The differences the table shows, in sentences filled from it."""
+    """The differences the table shows, in sentences filled from it.
+
+    Parameters
+    ----------
+    table : list of dict
+        :func:`summary`'s rows.
+    """
     by = {e["case"]: e for e in table}
     out = []
     sim = by.get(f"{SIMULATORS[0][1]}, calm")
