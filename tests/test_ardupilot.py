@@ -96,3 +96,25 @@ def test_ardupilot_arms_goes_auto_and_heads_for_its_first_waypoint(mavlink, tmp_
             ardurover.kill()
         server.join(15)
     assert backend.counters.refused == 0 and backend.counters.answered > 10_000
+
+
+@pytest.mark.parametrize("simulator", ["sailboat", "saoud_robot"])
+def test_the_comparison_flies_a_mission_with_a_tack_in_either_simulator(mavlink, tmp_path, simulator):
+    """The comparison's own flight (studies/ardupilot): 30 m straight upwind and home, in
+    ArduPilot's SIM_Sailboat and on the robot let go from its mooring; both get home, tacking
+    (the mark lies dead upwind), and only ours heels."""
+    from sailmujoco.studies.ardupilot.cases import ours_parameters
+    from sailmujoco.studies.ardupilot.measures import measure
+    from sailmujoco.studies.ardupilot.mission import Mission, fly
+
+    mission = Mission(upwind=30.0, limit=300.0)
+    parameters = {} if simulator == "sailboat" else ours_parameters(simulator)
+    flight = fly(simulator, mission, ARDUPILOT / "ardurover", tmp_path, parameters=parameters, instance=5)
+    numbers = measure(flight, mission)
+    assert numbers["finished"], flight.events
+    assert numbers["tacks"] >= 1 and 0 < numbers["mark_s"] < numbers["home_s"] < 300
+    if simulator == "sailboat":
+        assert numbers["heel_max_deg"] < 1.0  # SIM_Sailboat has no heel
+    else:
+        assert numbers["heel_max_deg"] > 1.0
+        assert "the boat leaves its mooring" in (tmp_path / "sitl.log").read_text()
