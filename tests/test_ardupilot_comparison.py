@@ -36,6 +36,8 @@ def test_the_cross_track_error_is_the_distance_from_the_legs_line():
 
 def test_the_mission_and_the_sim_sailboat_sea():
     assert Mission().waypoints() == [(0.0, 0.0), (100.0, 0.0), (0.0, 0.0)]
+    # laid from where the boat is
+    assert Mission().waypoints((-34.0, 34.0)) == [(-34.0, 34.0), (66.0, 34.0), (-34.0, 34.0)]
     north, east = Mission(wind_from_deg=90.0).waypoints()[1]
     assert north == pytest.approx(0.0, abs=1e-12) and east == pytest.approx(100.0)
     sea = sim_sailboat_sea()  # deep water: L = g T^2 / (2 pi), c = L / T; T = 6 s
@@ -48,7 +50,10 @@ def test_our_boats_sheet_to_their_sails_stall_and_the_cases_are_all_there():
     assert ours_parameters("saoud_robot") == {"SAIL_ANGLE_IDEAL": 15.0}
     assert ours_parameters("wille_yacht") == {"SAIL_ANGLE_IDEAL": 15.0}
     all_cases = cases(4)
-    assert len(all_cases) == 2 + 2 + (2 + 4) * 2 + 1
+    assert len(all_cases) == (2 + 2) + (2 + 4) + (2 + 4 + 2) + 1
+    motored = [c for c in all_cases if c.motor]
+    assert len(motored) == 4 and all(c.sea and c.simulator == "saoud_robot" for c in motored)
+    assert motored[0].label == "saoud_robot, 6-DOF, 10 N motor, 1 m sea"
     assert len({c.folder for c in all_cases}) == len(all_cases)
     assert Case("saoud_robot", False, 0, tuned=False).label == "saoud_robot, 6-DOF, SAIL_ANGLE_IDEAL 25, calm"
 
@@ -85,6 +90,10 @@ def test_a_flights_numbers_from_a_known_track():
     assert m["heel_max_deg"] == pytest.approx(20.0)
     assert m["over_heel_max_pct"] == pytest.approx(100.0 * 20 / 1100, rel=1e-3)  # 2 s of 110 s
     assert m["xte_max_m"] == pytest.approx(25.0 * math.sin(math.radians(45.0)), rel=1e-6)
+    shifted = _zigzag_flight()  # the same track, the mission laid 5 m to the west of it
+    shifted.waypoints = Mission().waypoints((0.0, -5.0))
+    xte = measure(shifted, Mission())["xte_max_m"]
+    assert xte == pytest.approx(5.0 + 25.0 * math.sin(math.radians(45.0)))
 
 
 def test_a_flight_kept_reads_back_and_the_report_tables_it(tmp_path):

@@ -376,3 +376,31 @@ def test_the_command_lines_seed_draws_the_sea_and_the_sea_it_draws_moves_the_boa
         heave.append([line["position"][2] for line in lines])
     assert np.ptp(heave[0]) > 0.1 and np.ptp(heave[1]) > 0.1  # a 1 m sea lifts the boat
     assert np.max(np.abs(np.subtract(heave[0], heave[1]))) > 0.05
+
+
+def test_a_motor_pushes_along_the_hull_in_proportion_to_the_throttle_and_is_nothing_when_stopped():
+    """The throttle channel's fraction of ``motor_thrust`` pushes the hull along its axis: from rest
+    in still air the first 0.05 s are pure impulse (no drag yet), so the speed it gains doubles
+    with the thrust and reverses with the throttle, and lies below Newton's F t / m (the water's
+    added mass only slows it) and above F t / 2m (a slender hull's surge added mass is a tenth of
+    its mass); a stopped motor (the middle), or none, leaves every answer as without one."""
+    def speeds(thrust, throttle_pwm, frames=10):
+        backend = JsonBackend("saoud_robot", wind_speed=0.0, heading_deg=90.0, motor_thrust=thrust)
+        pwm = list(NEUTRAL)
+        pwm[2] = throttle_pwm
+        lines = [json.loads(backend.handle(servo_packet(pwm, 200, k))) for k in range(frames)]
+        return backend, np.array(lines[-1]["velocity"]), [json.dumps(line) for line in lines]
+
+    backend, ahead, _ = speeds(5.0, 2000)
+    _, double, _ = speeds(10.0, 2000)
+    _, astern, _ = speeds(5.0, 1000)
+    _, half, _ = speeds(5.0, 1750)
+    mass = backend.params.mass
+    t = 10 * backend.dt
+    assert ahead[1] > 0 and abs(ahead[0]) < 1e-3 * ahead[1]  # heading east: NED east only
+    assert 5.0 * t / (2 * mass) < ahead[1] < 5.0 * t / mass
+    assert double[1] == pytest.approx(2 * ahead[1], rel=1e-3)
+    assert astern[1] == pytest.approx(-ahead[1], rel=1e-3)
+    assert half[1] == pytest.approx(0.5 * ahead[1], rel=1e-3)
+    assert backend.runs[-1][-1]["thrust"] == 5.0 and backend.runs[-1][-1]["throttle_pwm"] == 2000
+    assert speeds(5.0, 1500)[2] == speeds(0.0, 1500)[2] == speeds(0.0, 2000)[2]

@@ -56,6 +56,10 @@ def add_parser(sub) -> None:
                         help="moor the boat at its start (upright, at rest) until ArduPilot first steers: "
                              "it is launched on --heading when the mission starts, not left to drift "
                              "through ArduPilot's start-up")
+    parser.add_argument("--motor", type=number(0.0, low_open=False, unit="N", high=1e4), default=0.0,
+                        metavar="N", help="an auxiliary motor's thrust at full throttle, N (ArduPilot's "
+                                          "channel 3: it motors through a tack that takes longer than 5 s); "
+                                          "default 0: none, as the boats are built")
     parser.add_argument("--seed", type=SEED, default=0, help="seeds the wind, the sea and the vane's noise")
     parser.add_argument("--port", type=number(1024, low_open=False, unit="", integer=True, high=65535),
                         default=9002,
@@ -106,7 +110,7 @@ def run_cli(args) -> int:
     ----------
     args : argparse.Namespace
         ``boat``, ``wind_speed``, ``wind_from``, ``gusts``, ``waves``, ``sensors``, ``heading``,
-        ``hold``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``, ``video``.
+        ``hold``, ``motor``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``, ``video``.
 
     Returns
     -------
@@ -120,7 +124,7 @@ def run_cli(args) -> int:
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
-                          hold=args.hold, film=bool(args.video), seed=args.seed,
+                          hold=args.hold, motor_thrust=args.motor, film=bool(args.video), seed=args.seed,
                           log=lambda line: print(line, flush=True))
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)

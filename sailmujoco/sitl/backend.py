@@ -37,7 +37,7 @@ import numpy as np
 
 from ..boat.fitted import sensor_options
 from ..boat.geometry import sheet_length
-from ..errors import SimulationStopped
+from ..errors import SimulationStopped, check_number
 from ..forces.wind import WindConfig
 from ..frames import wrap_angle, yaw_from_heading
 from ..measurement.instruments import Instruments
@@ -106,6 +106,11 @@ class JsonBackend:
         Seeds the wind's gusts and the vane's noise.
     hold : bool
         The boat lies moored at its start until ArduPilot first steers (see the module's notes).
+    motor_thrust : float
+        An auxiliary motor's thrust at full throttle ahead, N (0: none, as our boats are built):
+        the throttle channel's fraction of it pushes the hull along its own axis, applied at the
+        hull's centre of mass (``xfrc_applied``: outside the force models, so a boat without a
+        motor steps exactly as before). ArduPilot runs it to finish a slow tack.
     film : bool
         Keep the boat's state ``FILM_RATE_HZ`` times a simulated second (``self.films``, one list
         per run) for :func:`sailmujoco.sitl.film.film`.
@@ -115,7 +120,8 @@ class JsonBackend:
 
     def __init__(self, boat="saoud_robot", *, wind_speed: float = 5.0, wind_from_deg: float = 0.0,
                  gusts: bool = False, waves=None, sensors=None, servos: ServoMap | None = None,
-                 heading_deg: float = 0.0, seed: int = 0, hold: bool = False, film: bool = False, log=None):
+                 heading_deg: float = 0.0, seed: int = 0, hold: bool = False, motor_thrust: float = 0.0,
+                 film: bool = False, log=None):
         wind = WindConfig(speed=float(wind_speed), direction_from=math.radians(wind_from_deg),
                           gusts=bool(gusts), wander=bool(gusts), seed=int(seed))
         self.physics = BoatPhysics.load(boat, sail_mode="sheeted", wind=wind, waves=waves)
@@ -125,6 +131,8 @@ class JsonBackend:
         self.heading = math.radians(heading_deg)
         self.seed = int(seed)
         self.hold = bool(hold)
+        self.motor_thrust = check_number("motor_thrust", motor_thrust, 0.0, 1e4)
+        self._hull = int(self.physics.model.ptr.body("hull").id)
         self.film = bool(film)
         self.films: list[list] = []  # the snapshots of each run, when filmed
         self.dt = float(self.physics.timestep())
@@ -151,6 +159,7 @@ class JsonBackend:
         self._steered = 0.0  # s the steering has been off its middle while held
         self._moored = 0.0  # s spent moored: SITL's clock is this plus the boat's
         self._next_snapshot = 0.0
+        self._thrust = 0.0  # N, the motor's push this step
         self.runs.append([])
         self.films.append([])
 
@@ -196,6 +205,8 @@ class JsonBackend:
                 return self._answer_moored(packet.frame_count)
             self._held = False
             self.log(f"sitl: ArduPilot steered at t = {self.time():.2f} s; the boat leaves its mooring")
+        throttle = packet.channel(self.servos.throttle_channel)
+        self._push(self.motor_thrust * self.servos.throttle(throttle))
         rudder = self.servos.rudder(steering, self._max_rudder)
         boom = self.servos.sail_angle(mainsail)
         sheet = float(np.clip(sheet_length(self.params, boom), *self._sheet_range))
@@ -208,7 +219,7 @@ class JsonBackend:
         self._velocity = before
         self._last_count, self._last_line = packet.frame_count, state_line(state)
         self.counters.answered += 1
-        self._record(steering, mainsail, sheet, vane)
+        self._record(steering, mainsail, throttle, sheet, vane)
         if self.film and self.physics.data.time + 1e-9 >= self._next_snapshot:
             self._next_snapshot += 1.0 / FILM_RATE_HZ
             from ..video.scene import snapshot_physics
@@ -233,7 +244,15 @@ class JsonBackend:
         reading = self._instruments.read(truth)
         return float(reading["apparent_wind_angle"]), float(reading["apparent_wind_speed"])
 
-    def _record(self, steering: int, mainsail: int, sheet: float, vane) -> None:
+    def _push(self, thrust: float) -> None:
+        """The motor's thrust (N, along the hull's axis) on the hull for the coming step."""
+        force = self.physics.data.xfrc_applied[self._hull]
+        force[:] = 0.0
+        if thrust:
+            force[:3] = thrust * self.physics.rotation()[:, 0]
+        self._thrust = thrust
+
+    def _record(self, steering: int, mainsail: int, throttle: int, sheet: float, vane) -> None:
         """A row of the trajectory table, ``RECORD_RATE_HZ`` times a simulated second."""
         p = self.physics
         t = self.time()
@@ -246,7 +265,8 @@ class JsonBackend:
             "heel_deg": math.degrees(p.heel()), "u": p.surge_speed(),
             "rudder_deg": math.degrees(p.rudder_angle()),
             "sail_deg": math.degrees(p.sail_angle()), "sheet": sheet, "steering_pwm": steering,
-            "mainsail_pwm": mainsail, "vane_deg": math.degrees(vane[0]), "vane_speed": vane[1],
+            "mainsail_pwm": mainsail, "throttle_pwm": throttle, "thrust": self._thrust,
+            "vane_deg": math.degrees(vane[0]), "vane_speed": vane[1],
             "awa_deg": math.degrees(p.apparent_wind_angle()), "aws": p.apparent_wind_speed()})
 
     # ---- the socket

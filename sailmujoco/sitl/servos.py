@@ -11,8 +11,10 @@ ArduPilot Rover in sailboat mode (``SAIL_ENABLE 1``) drives:
   ``SAIL_ANGLE_MIN`` to ``SAIL_ANGLE_MAX`` (ArduPilot's defaults 0 and 90 degrees). The boat's
   sheeted sail (``sail_mode="sheeted"``) takes the sheet's length that lets the boom out that far
   (:func:`sailmujoco.boat.geometry.sheet_length`);
-* the throttle (channel 3), a motor that ArduPilot uses to finish a tack that takes longer than
-  5 s: not modelled here (the boats carry no motor); it is read and ignored.
+* the throttle (channel 3): ArduPilot's motor, which it runs to finish a tack that takes longer
+  than 5 s (for up to 10 s more), from ``pwm_min`` (full astern) through the middle (stopped) to
+  ``pwm_max`` (full ahead). Our boats carry no motor; a run may give one
+  (:class:`~sailmujoco.sitl.backend.JsonBackend`'s ``motor_thrust``).
 
 A reversed channel (``SERVOn_REVERSED 1``) swaps the ends.
 """
@@ -31,9 +33,9 @@ class ServoMap:
 
     Parameters
     ----------
-    steering_channel, mainsail_channel : int
-        The channels (1-based) of ground steering and the mainsail.
-    steering_reversed, mainsail_reversed : bool
+    steering_channel, mainsail_channel, throttle_channel : int
+        The channels (1-based) of ground steering, the mainsail and the throttle.
+    steering_reversed, mainsail_reversed, throttle_reversed : bool
         ``SERVOn_REVERSED`` of each.
     pwm_min, pwm_max : int
         The channels' pulse range, us (``SERVOn_MIN``, ``SERVOn_MAX``).
@@ -43,15 +45,17 @@ class ServoMap:
 
     steering_channel: int = 1
     mainsail_channel: int = 4
+    throttle_channel: int = 3
     steering_reversed: bool = False
     mainsail_reversed: bool = False
+    throttle_reversed: bool = False
     pwm_min: int = 1000
     pwm_max: int = 2000
     sail_angle_min_deg: float = 0.0
     sail_angle_max_deg: float = 90.0
 
     def __post_init__(self):
-        for name in ("steering_channel", "mainsail_channel"):
+        for name in ("steering_channel", "mainsail_channel", "throttle_channel"):
             value = getattr(self, name)
             if isinstance(value, bool) or not isinstance(value, int) or not 1 <= value <= 32:
                 raise ValueError(f"servos.{name} must be a channel from 1 to 32, got {value!r}")
@@ -88,6 +92,16 @@ class ServoMap:
         """
         steer = 2.0 * self.fraction(pwm, self.steering_reversed) - 1.0  # +1: full to starboard
         return -max_rudder * steer
+
+    def throttle(self, pwm: int) -> float:
+        """The throttle for the pulse: -1 full astern, 0 stopped (the middle), +1 full ahead.
+
+        Parameters
+        ----------
+        pwm : int
+            The throttle channel's pulse, us.
+        """
+        return 2.0 * self.fraction(pwm, self.throttle_reversed) - 1.0
 
     def sail_angle(self, pwm: int) -> float:
         """The boom angle the mainsail pulse lets the sail out to, rad (>= 0).

@@ -69,7 +69,7 @@ def main(argv=None) -> int:
         print(f"[{k}/{len(todo)}] {case.label}, seed {case.seed} ...", flush=True)
         try:
             flight = fly(case.simulator, mission, ardurover, work, seed=case.seed, parameters=parameters,
-                         speedup=args.speedup, say=print)
+                         speedup=args.speedup, motor=case.motor, say=print)
         except (RuntimeError, OSError) as err:
             print(f"  failed: {err}", flush=True)
             continue

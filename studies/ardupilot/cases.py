@@ -15,6 +15,7 @@ from dataclasses import dataclass, field
 
 SIMULATORS = (("sailboat", "ArduPilot's SIM_Sailboat"), ("wille_yacht", "wille_yacht, 6-DOF"),
               ("saoud_robot", "saoud_robot, 6-DOF"))
+ROBOT_MOTOR_N = 10.0  # the robot's auxiliary motor in the sea, N at full throttle (about 1 kgf)
 
 
 @dataclass(frozen=True)
@@ -33,6 +34,8 @@ class Case:
         ``SAIL_ANGLE_IDEAL`` set to the sail's stall angle (our boats).
     parameters : dict
         Further ArduPilot parameters.
+    motor : float
+        Our boat's auxiliary motor, N at full throttle (0: none).
     """
 
     simulator: str
@@ -40,11 +43,14 @@ class Case:
     seed: int
     tuned: bool = True
     parameters: dict = field(default_factory=dict)
+    motor: float = 0.0
 
     @property
     def name(self) -> str:
         """The simulator's name in the report."""
         name = dict(SIMULATORS)[self.simulator]
+        if self.motor:
+            name = f"{name}, {self.motor:g} N motor"
         return name if self.tuned or self.simulator == "sailboat" else f"{name}, SAIL_ANGLE_IDEAL 25"
 
     @property
@@ -56,13 +62,16 @@ class Case:
     def folder(self) -> str:
         """The flight's folder under ``flights/``."""
         tag = "" if self.tuned or self.simulator == "sailboat" else "_default_ideal"
+        tag += f"_motor{self.motor:g}" if self.motor else ""
         return f"{self.simulator}{tag}_{'sea' if self.sea else 'calm'}_seed{self.seed}"
 
 
 def cases(seeds: int) -> list[Case]:
     """Every flight: calm twice (nothing is drawn in a steady wind: the two show it), the sea on
     seeds ``0 .. seeds-1`` for our boats (their sea's phases) and twice for SIM_Sailboat (one sine,
-    nothing drawn), and the robot once with ArduPilot's own ``SAIL_ANGLE_IDEAL``.
+    nothing drawn); in the sea the robot carries a ``ROBOT_MOTOR_N`` motor, which ArduPilot runs
+    to finish a tack that takes longer than 5 s (without it, twice: its tacks stall in the waves);
+    and the robot once with ArduPilot's own ``SAIL_ANGLE_IDEAL``.
 
     Parameters
     ----------
@@ -72,8 +81,11 @@ def cases(seeds: int) -> list[Case]:
     out = []
     for simulator, _ in SIMULATORS:
         out += [Case(simulator, False, seed) for seed in range(2)]
-        n = 2 if simulator == "sailboat" else seeds
-        out += [Case(simulator, True, seed) for seed in range(n)]
+        if simulator == "saoud_robot":
+            out += [Case(simulator, True, seed, motor=ROBOT_MOTOR_N) for seed in range(seeds)]
+            out += [Case(simulator, True, seed) for seed in range(2)]
+        else:
+            out += [Case(simulator, True, seed) for seed in range(2 if simulator == "sailboat" else seeds)]
     out.append(Case("saoud_robot", False, 0, tuned=False))
     return out
 

@@ -95,7 +95,7 @@ def measure(flight, mission, heel_max_deg: float = HEEL_MAX_DEG) -> dict:
     roll = np.abs(np.array([r["roll"] for r in rows], float))
     wp = np.array([r["wp"] for r in rows])
     speed = np.array([r["speed"] for r in rows], float)
-    points = mission.waypoints()
+    points = flight.waypoints or mission.waypoints()
     xte = np.zeros(len(rows))
     for k in range(1, len(points)):
         on = wp == k

@@ -50,13 +50,22 @@ class Mission:
     wind_speed: float = 5.0
     wind_from_deg: float = 0.0
     sea: bool = False
-    limit: float = 600.0
+    limit: float = 1200.0
 
-    def waypoints(self) -> list[tuple[float, float]]:
-        """(north, east) of home, the upwind mark and home again, m."""
+    def waypoints(self, start=(0.0, 0.0)) -> list[tuple[float, float]]:
+        """(north, east) of the start, the upwind mark and the start again, m from home.
+
+        Parameters
+        ----------
+        start : tuple of float
+            Where the boat is when the mission starts, (north, east) m from home: ours lie
+            moored at home; SIM_Sailboat's boat sails off during ArduPilot's start-up (its
+            sheet hauled in while disarmed), so its mission is laid from where it is.
+        """
         bearing = math.radians(self.wind_from_deg)
-        mark = (self.upwind * math.cos(bearing), self.upwind * math.sin(bearing))
-        return [(0.0, 0.0), mark, (0.0, 0.0)]
+        n0, e0 = float(start[0]), float(start[1])
+        mark = (n0 + self.upwind * math.cos(bearing), e0 + self.upwind * math.sin(bearing))
+        return [(n0, e0), mark, (n0, e0)]
 
 
 SEA_TP = 6.0  # s, the sea's peak period (sailmujoco's default) and SIM_Sailboat's wave period
@@ -85,6 +94,8 @@ class Flight:
         ArduPilot's messages and the waypoints reached, with their time from AUTO.
     reached : dict
         Waypoint number -> time from AUTO it was reached, s.
+    waypoints : list of (float, float)
+        The mission as laid, (north, east) m from home (:meth:`Mission.waypoints`).
     wall : float
         Wall-clock seconds of the whole flight (start-up included).
     sim_log : str
@@ -94,6 +105,7 @@ class Flight:
     rows: list = field(default_factory=list)
     events: list = field(default_factory=list)
     reached: dict = field(default_factory=dict)
+    waypoints: list = field(default_factory=list)
     wall: float = 0.0
     sim_log: str = ""
 
@@ -121,7 +133,8 @@ def _stop(process, grace: float = 10.0) -> None:
 
 
 def fly(simulator: str, mission: Mission, ardurover: Path, work: Path, *, seed: int = 0,
-        parameters: dict | None = None, speedup: int = 10, instance: int = 0, say=print) -> Flight:
+        parameters: dict | None = None, speedup: int = 10, instance: int = 0, motor: float = 0.0,
+        say=print) -> Flight:
     """Fly ``mission`` in ``simulator`` and record it.
 
     Parameters
@@ -142,6 +155,8 @@ def fly(simulator: str, mission: Mission, ardurover: Path, work: Path, *, seed: 
         ArduPilot's ``--speedup``.
     instance : int
         ArduPilot's ``-I``: its ports move by 10 per instance.
+    motor : float
+        Our boat's auxiliary motor, N at full throttle (``sailmujoco sitl --motor``; 0: none).
     say : callable
         Gets one line when something goes wrong.
     """
@@ -170,6 +185,8 @@ def fly(simulator: str, mission: Mission, ardurover: Path, work: Path, *, seed: 
                    "--out", str(work)]
         if mission.sea:
             command += ["--waves", "hs=1"]
+        if motor:
+            command += ["--motor", str(motor)]
         backend = subprocess.Popen(command, stdout=open(work / "sitl.log", "w"), stderr=subprocess.STDOUT)
         time.sleep(3.0)  # its port open before ArduPilot's first packet
     defaults = ",".join(str(p) for p in (folder / "rover.parm", folder / "sailboat.parm", work / "mission.parm"))
@@ -210,8 +227,11 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
                 break
     else:
         raise RuntimeError("ArduPilot's EKF never used the GPS (see ardurover.log)")
+    here = m.recv_match(type="GLOBAL_POSITION_INT", blocking=True, timeout=10)
+    start = (0.0, 0.0) if here is None else _north_east(here)
+    flight.waypoints = mission.waypoints(start)
     points = [(HOME[0] + n / M_PER_DEG_LAT, HOME[1] + e / (M_PER_DEG_LAT * math.cos(math.radians(HOME[0]))))
-              for n, e in mission.waypoints()]
+              for n, e in flight.waypoints]
     m.mav.mission_count_send(m.target_system, m.target_component, len(points), 0)
     asked = set()
     while len(asked) < len(points):
@@ -265,11 +285,17 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
                 return
             if t + 1e-6 >= next_row:
                 next_row = t + 0.1
-                north = (msg.lat / 1e7 - HOME[0]) * M_PER_DEG_LAT
-                east = (msg.lon / 1e7 - HOME[1]) * M_PER_DEG_LAT * math.cos(math.radians(HOME[0]))
+                north, east = _north_east(msg)
                 flight.rows.append({"t": round(t, 3), "north": north, "east": east,
                                     "heading": msg.hdg / 100.0, "roll": state["roll"],
                                     "speed": state["speed"], "wp": state["wp"]})
+
+
+def _north_east(msg) -> tuple[float, float]:
+    """(north, east) m from home of a GLOBAL_POSITION_INT."""
+    north = (msg.lat / 1e7 - HOME[0]) * M_PER_DEG_LAT
+    east = (msg.lon / 1e7 - HOME[1]) * M_PER_DEG_LAT * math.cos(math.radians(HOME[0]))
+    return north, east
 
 
 def environment_ready() -> str | None:

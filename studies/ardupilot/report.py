@@ -32,8 +32,8 @@ def save_flight(flight, folder: Path) -> None:
     folder.mkdir(parents=True, exist_ok=True)
     _write_csv(folder / "record.csv", flight.rows)
     _write_csv(folder / "events.csv", [{"t": t, "text": text} for t, text in flight.events])
-    (folder / "flight.json").write_text(json.dumps({"reached": flight.reached, "wall": flight.wall,
-                                                    "sim_log": flight.sim_log}, indent=1))
+    (folder / "flight.json").write_text(json.dumps({"reached": flight.reached, "waypoints": flight.waypoints,
+                                                    "wall": flight.wall, "sim_log": flight.sim_log}, indent=1))
 
 
 def load_flight(folder: Path):
@@ -54,7 +54,8 @@ def load_flight(folder: Path):
     with open(folder / "events.csv") as f:
         events = [(float(row["t"]), row["text"]) for row in csv.DictReader(f)]
     return Flight(rows=rows, events=events, reached={int(k): v for k, v in meta["reached"].items()},
-                  wall=meta["wall"], sim_log=meta["sim_log"])
+                  waypoints=[tuple(p) for p in meta.get("waypoints", [])], wall=meta["wall"],
+                  sim_log=meta["sim_log"])
 
 
 def write_all(flights, out: Path) -> list[dict]:
@@ -117,11 +118,19 @@ def summary(rows: list[dict]) -> list[dict]:
 
 
 def _text(interval, decimals: int = 0) -> str:
+    """``mean [low, high]``; every measure here is >= 0, so an interval's low end is shown no
+    lower than 0."""
     if interval is None:
         return "—"
     if interval.n > 1 and interval.low == interval.high:
         return f"{interval.mean:.{decimals}f} (all {interval.n} equal)"
+    if interval.n > 1 and interval.low < 0.0:
+        return f"{interval.mean:.{decimals}f} [{0.0:.{decimals}f}, {interval.high:.{decimals}f}]"
     return interval.fixed(decimals)
+
+
+def _mean(interval, decimals: int = 0) -> str:
+    return "—" if interval is None else f"{interval.mean:.{decimals}f}"
 
 
 def report(rows: list[dict], flights) -> str:
@@ -151,9 +160,11 @@ def report(rows: list[dict], flights) -> str:
         "- **Our boats** (`--model JSON` against `sailmujoco sitl`): the 6-DOF `wille_yacht` and "
         "`saoud_robot`; the sea is JONSWAP, Hs 1 m, Tp 6 s, from the wind, its phases drawn by the seed. "
         "`SAIL_ANGLE_IDEAL` (the angle of attack ArduPilot sheets to, 25 deg by default) is set to our sails' "
-        "stall angle, 15 deg; one case keeps 25 deg on the robot.",
+        "stall angle, 15 deg; one case keeps 25 deg on the robot. In the sea the robot carries a 10 N motor, "
+        "which ArduPilot runs (channel 3, `sailmujoco sitl --motor`) to finish a tack that takes longer than "
+        "5 s; twice it sails there without one.",
         "",
-        f"Times are from AUTO, simulated seconds. Intervals are 95 % over the flights of a case (times over "
+        f"Times are from AUTO, simulated seconds; a flight not home after {flights[0][1].limit:g} s is stopped. Intervals are 95 % over the flights of a case (times over "
         f"the flights that finished). Tacks are counted from the heading (bow through the wind between "
         f"20-90 deg off it on each side); \"timed out\" counts ArduPilot's own \"Tacking timed out\". "
         f"Heel is the largest |roll| and the share of the time beyond SAIL_HEEL_MAX ({HEEL_MAX_DEG:g} deg). "
@@ -189,29 +200,28 @@ def findings(table: list[dict]) -> list[str]:
     by = {e["case"]: e for e in table}
     out = []
     sim = by.get(f"{SIMULATORS[0][1]}, calm")
-    for _, name in SIMULATORS[1:]:
-        for sea in ("calm", "1 m sea"):
-            e = by.get(f"{name}, {sea}")
-            if e is None or sim is None:
-                continue
-            if e["finished"] == 0:
-                out.append(f"- **{name}, {sea}**: home in none of {e['n']} flights "
-                           f"(the mark reached in {e['reached_mark']}).")
-                continue
-            against = (f"{e['home_s'].mean / sim['home_s'].mean:.1f} times SIM_Sailboat's calm "
-                       f"{sim['home_s'].mean:.0f} s" if sim["home_s"] else "SIM_Sailboat never home")
-            out.append(
-                f"- **{name}, {sea}**: home in {e['finished']} of {e['n']} flights, after {_text(e['home_s'])} s, "
-                f"{against}; largest heel "
-                f"{_text(e['heel_max_deg'], 1)} deg against SIM_Sailboat's {sim['heel_max_deg'].mean:.1f} deg; "
-                f"{_text(e['tacks'], 1)} tacks ({_text(e['tacks_timed_out'], 1)} timed out).")
+    for e in table:
+        if e["case"].startswith(SIMULATORS[0][1]) or "SAIL_ANGLE_IDEAL 25" in e["case"] or sim is None:
+            continue
+        if e["finished"] == 0:
+            out.append(f"- **{e['case']}**: home in none of {e['n']} flights (the mark reached in "
+                       f"{e['reached_mark']}); {_mean(e['tacks_timed_out'], 1)} tacks a flight timed out, "
+                       f"{_mean(e['mean_speed'], 2)} m/s on average.")
+            continue
+        against = (f"{e['home_s'].mean / sim['home_s'].mean:.1f} times SIM_Sailboat's calm "
+                   f"{sim['home_s'].mean:.0f} s" if sim["home_s"] else "SIM_Sailboat never home")
+        out.append(
+            f"- **{e['case']}**: home in {e['finished']} of {e['n']} flights, after {_text(e['home_s'])} s, "
+            f"{against}; largest heel {_text(e['heel_max_deg'], 1)} deg against SIM_Sailboat's "
+            f"{sim['heel_max_deg'].mean:.1f} deg; {_mean(e['tacks'], 1)} tacks a flight, "
+            f"{_mean(e['tacks_timed_out'], 1)} timed out.")
     default = next((e for e in table if "SAIL_ANGLE_IDEAL 25" in e["case"]), None)
     if default is not None:
         out.append(f"- **{default['case']}**: home in {default['finished']} of {default['n']}, the mark reached in "
-                   f"{default['reached_mark']}; {_text(default['tacks_timed_out'], 1)} tacks timed out. Sheeted "
-                   "to 25 deg of attack its sail is stalled: close-hauled it makes a few cm/s and its rudder "
-                   "cannot hold the sail's weather helm, so it luffs head to wind, and ArduPilot (no motor, no "
-                   "recovery from irons) tries the tack again every 5 s.")
+                   f"{default['reached_mark']}; {_mean(default['tacks_timed_out'])} tacks timed out, "
+                   f"{_mean(default['mean_speed'], 2)} m/s on average. Sheeted to 25 deg of attack its sail is "
+                   "stalled: it cannot hold a close-hauled course, luffs towards the wind and stalls there, "
+                   "and ArduPilot (no motor, no recovery from irons) tries the tack again every 5 s.")
     return out
 
 
@@ -232,10 +242,11 @@ def _figures(flights, out: Path) -> None:
             east = [r["east"] for r in flight.rows]
             north = [r["north"] for r in flight.rows]
             ax.plot(east, north, lw=1.0, label=f"seed {case.seed}")
-        points = np.array(flights[0][1].waypoints())
+        first = next(f for c, _, f in flights if c.label == label)
+        points = np.array(first.waypoints or flights[0][1].waypoints())
         ax.plot(points[:, 1], points[:, 0], "k--", lw=0.8)
         ax.plot(points[:2, 1], points[:2, 0], "ko", ms=5)
-        ax.axvspan(-10, 10, color="0.9", zorder=0)
+        ax.axvspan(points[0, 1] - 10, points[0, 1] + 10, color="0.9", zorder=0)
         ax.annotate("wind", xy=(0.88, 0.78), xytext=(0.88, 0.95), xycoords="axes fraction",
                     arrowprops={"arrowstyle": "->"}, ha="center")
         ax.set_title(label, fontsize=10)
