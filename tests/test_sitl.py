@@ -404,3 +404,11 @@ def test_a_motor_pushes_along_the_hull_in_proportion_to_the_throttle_and_is_noth
     assert half[1] == pytest.approx(0.5 * ahead[1], rel=1e-3)
     assert backend.runs[-1][-1]["thrust"] == 5.0 and backend.runs[-1][-1]["throttle_pwm"] == 2000
     assert speeds(5.0, 1500)[2] == speeds(0.0, 1500)[2] == speeds(0.0, 2000)[2]
+
+
+def test_a_film_that_cannot_be_made_is_said_before_the_run(capsys):
+    from sailmujoco.cli.main import main
+
+    assert main(["sitl", "saoud_robot", "--video", "run.avi"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err == "sailmujoco sitl: --video run.avi: the film is an .mp4 file"

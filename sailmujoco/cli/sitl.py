@@ -95,6 +95,28 @@ def sea_of(args):
     return wave_config(values, "--waves")
 
 
+def film_problem(path) -> str | None:
+    """Why ``--video PATH`` could not be filmed here (one line), found before the run rather
+    than after it; None when it can.
+
+    Parameters
+    ----------
+    path : str
+        ``--video``.
+    """
+    from ..video.encoding import encoder
+    from ..video.gl import RenderingUnavailable, check_rendering
+
+    if not str(path).lower().endswith(".mp4"):
+        return "the film is an .mp4 file"
+    try:
+        encoder()
+        check_rendering()
+    except (ImportError, RenderingUnavailable) as err:
+        return str(err)
+    return None
+
+
 class Terminated(Exception):
     """SIGTERM arrived: the run ends, its trajectory written."""
 
@@ -115,12 +137,18 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0; 2 where the port is taken or SITL never sent a packet (one line on stderr).
+        0; 2 where the port is taken, SITL never sent a packet or ``--video`` cannot be filmed
+        (one line on stderr).
     """
     from ..boat.catalogue import boat_label
     from ..sitl.backend import JsonBackend, SitlError
 
     waves = sea_of(args)
+    if args.video:
+        problem = film_problem(args.video)
+        if problem:
+            print(f"sailmujoco sitl: --video {args.video}: {problem}", file=sys.stderr)
+            return 2
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
