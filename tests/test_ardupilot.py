@@ -112,6 +112,7 @@ def test_the_comparison_flies_a_mission_with_a_tack_in_either_simulator(mavlink,
     flight = fly(simulator, mission, ARDUPILOT / "ardurover", tmp_path, parameters=parameters, instance=5)
     numbers = measure(flight, mission)
     assert numbers["finished"], flight.events
+    assert len(flight.autopilot) == 8 and int(flight.autopilot, 16) >= 0  # its git hash, as it reports it
     assert numbers["tacks"] >= 1 and 0 < numbers["mark_s"] < numbers["home_s"] < 300
     if simulator == "sailboat":
         assert numbers["heel_max_deg"] < 1.0  # SIM_Sailboat has no heel

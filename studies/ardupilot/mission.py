@@ -100,6 +100,8 @@ class Flight:
         Wall-clock seconds of the whole flight (start-up included).
     sim_log : str
         The last lines ``sailmujoco sitl`` printed ("" for SIM_Sailboat).
+    autopilot : str
+        ArduPilot's git hash as it reports it (AUTOPILOT_VERSION), "" if it did not.
     """
 
     rows: list = field(default_factory=list)
@@ -108,6 +110,7 @@ class Flight:
     waypoints: list = field(default_factory=list)
     wall: float = 0.0
     sim_log: str = ""
+    autopilot: str = ""
 
 
 def parm_text(values: dict) -> str:
@@ -216,6 +219,11 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
     """Upload, arm, AUTO, record until home is reached or the limit."""
     if m.wait_heartbeat(timeout=60) is None:
         raise RuntimeError("no heartbeat from ardurover in 60 s (see its ardurover.log)")
+    m.mav.command_long_send(m.target_system, m.target_component,
+                            mavutil.mavlink.MAV_CMD_REQUEST_AUTOPILOT_CAPABILITIES, 0, 1, 0, 0, 0, 0, 0, 0)
+    version = m.recv_match(type="AUTOPILOT_VERSION", blocking=True, timeout=5)
+    if version is not None:  # its git hash, the first 8 hex digits
+        flight.autopilot = bytes(version.flight_custom_version).rstrip(b"\0").decode("ascii", "replace")
     m.mav.request_data_stream_send(m.target_system, m.target_component, mavutil.mavlink.MAV_DATA_STREAM_ALL,
                                    10, 1)
     deadline = time.time() + 300

@@ -33,7 +33,8 @@ def save_flight(flight, folder: Path) -> None:
     _write_csv(folder / "record.csv", flight.rows)
     _write_csv(folder / "events.csv", [{"t": t, "text": text} for t, text in flight.events])
     (folder / "flight.json").write_text(json.dumps({"reached": flight.reached, "waypoints": flight.waypoints,
-                                                    "wall": flight.wall, "sim_log": flight.sim_log}, indent=1))
+                                                    "wall": flight.wall, "sim_log": flight.sim_log,
+                                                    "autopilot": flight.autopilot}, indent=1))
 
 
 def load_flight(folder: Path):
@@ -55,7 +56,7 @@ def load_flight(folder: Path):
         events = [(float(row["t"]), row["text"]) for row in csv.DictReader(f)]
     return Flight(rows=rows, events=events, reached={int(k): v for k, v in meta["reached"].items()},
                   waypoints=[tuple(p) for p in meta.get("waypoints", [])], wall=meta["wall"],
-                  sim_log=meta["sim_log"])
+                  sim_log=meta["sim_log"], autopilot=meta.get("autopilot", ""))
 
 
 def write_all(flights, out: Path) -> list[dict]:
@@ -129,6 +130,12 @@ def _text(interval, decimals: int = 0) -> str:
     return interval.fixed(decimals)
 
 
+def _versions(flights) -> str:
+    """`` (git 90700977)``: the ArduPilot the flights report, "" where none did."""
+    found = sorted({f.autopilot for _, _, f in flights if f.autopilot})
+    return f" (git {', '.join(found)})" if found else ""
+
+
 def _mean(interval, decimals: int = 0) -> str:
     return "—" if interval is None else f"{interval.mean:.{decimals}f}"
 
@@ -147,11 +154,13 @@ def report(rows: list[dict], flights) -> str:
     lines = [
         "# ArduPilot's sailboat code: its own simulator against the 6-DOF boats",
         "",
-        "ArduPilot Rover (sailboat mode, its rover and sailboat defaults) flies one mission: from home to a "
-        f"mark {flights[0][1].upwind:g} m straight upwind and home again, in {flights[0][1].wind_speed:g} m/s of "
-        "wind from the north, calm and in a 1 m sea. Every boat starts at home on a broad reach (135 deg); "
-        "ours lie moored there until ArduPilot first steers (`sailmujoco sitl --hold`). The same MAVLink "
-        "client records every flight ten times a simulated second, so each number below is measured the "
+        f"ArduPilot Rover{_versions(flights)} (sailboat mode, its rover and sailboat defaults) flies one mission: "
+        f"from its start to a mark {flights[0][1].upwind:g} m straight upwind and back, in "
+        f"{flights[0][1].wind_speed:g} m/s of wind from the north, calm and in a 1 m sea. Our boats lie moored "
+        "at home on a broad reach (135 deg) until ArduPilot first steers (`sailmujoco sitl --hold`); "
+        "SIM_Sailboat's boat, started on the same heading, sails off while ArduPilot starts up (its sheet is "
+        "hauled in while disarmed), so its mission is laid from where it is when the mission starts. The "
+        "same MAVLink client records every flight ten times a simulated second, so each number below is measured the "
         "same way in both simulators (studies/ardupilot/measures.py).",
         "",
         "- **SIM_Sailboat** (`--model sailboat`): ArduPilot's kinematic boat, no heel, a fixed 1.8 m turning "
@@ -256,7 +265,8 @@ def _figures(flights, out: Path) -> None:
         ax.legend(fontsize=7, loc="lower right")
     for ax in axes.ravel()[len(labels):]:
         ax.set_visible(False)
-    fig.suptitle("Tracks: home to the mark 100 m upwind and back (grey: ArduPilot's 10 m cross-track corridor)")
+    fig.suptitle("Tracks: the start to the mark 100 m upwind and back (grey: ArduPilot's 10 m cross-track "
+                 "corridor)")
     fig.tight_layout()
     fig.savefig(out / "tracks.png", dpi=110)
     plt.close(fig)
