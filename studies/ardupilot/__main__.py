@@ -34,12 +34,17 @@ def main(argv=None) -> int:
                              "cases fly twice")
     parser.add_argument("--out", default="results/ardupilot", help="output folder (default results/ardupilot)")
     parser.add_argument("--speedup", type=int, default=10, help="ArduPilot's --speedup (1 to 50, default 10)")
+    parser.add_argument("--instance", type=int, default=0,
+                        help="ArduPilot's -I (0 to 9, default 0): its ports and ours move by 10 per instance, "
+                             "to fly beside another SITL")
     parser.add_argument("--only", help="fly only the cases whose label contains this text")
     parser.add_argument("--report-only", action="store_true",
                         help="fly nothing: write the report from the flights kept under --out")
     args = parser.parse_args(argv)
     if not 1 <= args.seeds <= 20:
         parser.error(f"--seeds must be from 1 to 20, got {args.seeds}")
+    if not 0 <= args.instance <= 9:
+        parser.error(f"--instance must be from 0 to 9, got {args.instance}")
     if not 1 <= args.speedup <= 50:
         parser.error(f"--speedup must be from 1 to 50, got {args.speedup}")
     out = Path(args.out)
@@ -69,7 +74,7 @@ def main(argv=None) -> int:
         print(f"[{k}/{len(todo)}] {case.label}, seed {case.seed} ...", flush=True)
         try:
             flight = fly(case.simulator, mission, ardurover, work, seed=case.seed, parameters=parameters,
-                         speedup=args.speedup, motor=case.motor, say=print)
+                         speedup=args.speedup, instance=args.instance, motor=case.motor, say=print)
         except (RuntimeError, OSError) as err:
             print(f"  failed: {err}", flush=True)
             continue
