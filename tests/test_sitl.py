@@ -198,6 +198,7 @@ def test_lock_step_one_answer_per_packet_resends_and_a_restart():
     sitl.close()  # no packet for 0.5 s: the run ends, in one line
     counters = sitl.result["counters"]
     assert (counters.answered, counters.resent, counters.resets) == (55, 1, 1)
+    assert 0 < counters.lock_step < counters.wall - 0.45  # the 0.5 s of silence at the end is not lock-step
     assert len(backend.runs) == 2 and sitl.log[-1].startswith("sitl: SITL stopped sending")
     assert any("SITL restarted" in line for line in sitl.log)
 

@@ -175,10 +175,10 @@ def run_cli(args) -> int:
     if args.video:
         _film(backend, args, waves)
     simulated = counters.answered * backend.dt
-    speed = simulated / counters.wall if counters.wall > 0 else math.nan
-    print(f"sitl: {counters.answered} frames ({simulated:.1f} s simulated) in {counters.wall:.1f} s, "
-          f"{speed:.1f} times real time; {counters.resent} sent again, {counters.refused} refused, "
-          f"{counters.resets} restarts; the trajectory in {out}")
+    speed = simulated / counters.lock_step if counters.lock_step > 0 else math.nan
+    print(f"sitl: {counters.answered} frames ({simulated:.1f} s simulated) in {counters.lock_step:.1f} s of "
+          f"lock-step, {speed:.1f} times real time; {counters.resent} sent again, "
+          f"{counters.refused} refused, {counters.resets} restarts; the trajectory in {out}")
     return 0
 
 

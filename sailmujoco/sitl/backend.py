@@ -67,6 +67,9 @@ class Counters:
         Frames answered with a step, frames answered again, datagrams refused, SITL restarts.
     wall : float
         Seconds spent serving.
+    lock_step : float
+        Seconds from the first frame answered to the last: the lock-step's own time, without the
+        wait for SITL to come or the silence after it stopped.
     refusals : dict
         A refusal's text -> how often.
     """
@@ -76,6 +79,7 @@ class Counters:
     refused: int = 0
     resets: int = 0
     wall: float = 0.0
+    lock_step: float = 0.0
     refusals: dict = field(default_factory=dict)
 
 
@@ -316,6 +320,7 @@ class JsonBackend:
         return self.counters
 
     def _loop(self, sock, port: int, timeout: float, seconds: float | None) -> None:
+        first = None
         while seconds is None or self.time() < seconds - 1e-9:
             try:
                 data, address = sock.recvfrom(4096)
@@ -335,6 +340,9 @@ class JsonBackend:
                 self.log(f"sitl: the boat stopped at t = {self.time():.2f} s: {err}; the run ends")
                 return
             sock.sendto(answer, address)
+            now = time.perf_counter()
+            first = now if first is None else first
+            self.counters.lock_step = now - first
 
     def _refuse(self, reason: str, address) -> None:
         """Count a refused datagram; its first of a kind in one line."""
