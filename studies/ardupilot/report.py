@@ -131,9 +131,9 @@ def _text(interval, decimals: int = 0) -> str:
 
 
 def _versions(flights) -> str:
-    """`` (git 90700977)``: the ArduPilot the flights report, "" where none did."""
+    """``git 90700977; ``: the ArduPilot the flights report, "" where none did."""
     found = sorted({f.autopilot for _, _, f in flights if f.autopilot})
-    return f" (git {', '.join(found)})" if found else ""
+    return f"git {', '.join(found)}; " if found else ""
 
 
 def _mean(interval, decimals: int = 0) -> str:
@@ -154,7 +154,7 @@ def report(rows: list[dict], flights) -> str:
     lines = [
         "# ArduPilot's sailboat code: its own simulator against the 6-DOF boats",
         "",
-        f"ArduPilot Rover{_versions(flights)} (sailboat mode, its rover and sailboat defaults) flies one mission: "
+        f"ArduPilot Rover ({_versions(flights)}sailboat mode, its rover and sailboat defaults) flies one mission: "
         f"from its start to a mark {flights[0][1].upwind:g} m straight upwind and back, in "
         f"{flights[0][1].wind_speed:g} m/s of wind from the north, calm and in a 1 m sea. Our boats lie moored "
         "at home on a broad reach (135 deg) until ArduPilot first steers (`sailmujoco sitl --hold`); "
@@ -267,19 +267,19 @@ def _figures(flights, out: Path) -> None:
         ax.set_visible(False)
     fig.suptitle("Tracks: the start to the mark 100 m upwind and back (grey: ArduPilot's 10 m cross-track "
                  "corridor)")
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.985))
     fig.savefig(out / "tracks.png", dpi=110)
     plt.close(fig)
 
-    fig, ax = plt.subplots(figsize=(10, 4.5))
-    for label in labels:
+    fig, axes = plt.subplots(len(labels), 1, figsize=(10, 1.5 * len(labels) + 0.8), sharey=True, squeeze=False)
+    for ax, label in zip(axes[:, 0], labels, strict=True):
         first = next(f for c, _, f in flights if c.label == label)
-        ax.plot([r["t"] for r in first.rows], [abs(r["roll"]) for r in first.rows], lw=0.8, label=label)
-    ax.axhline(HEEL_MAX_DEG, color="k", ls="--", lw=0.8, label="SAIL_HEEL_MAX")
-    ax.set_xlabel("time from AUTO (s)")
-    ax.set_ylabel("|roll| (deg)")
-    ax.set_title("Heel, the first flight of each case")
-    ax.legend(fontsize=7, ncol=2)
-    fig.tight_layout()
+        ax.plot([r["t"] for r in first.rows], [abs(r["roll"]) for r in first.rows], lw=0.6, color="tab:blue")
+        ax.axhline(HEEL_MAX_DEG, color="k", ls="--", lw=0.8)
+        ax.set_title(label, fontsize=9, loc="left")
+        ax.set_ylabel("|roll| (deg)", fontsize=8)
+    axes[-1, 0].set_xlabel("time from AUTO (s)")
+    fig.suptitle("Heel, the first flight of each case (dashed: SAIL_HEEL_MAX)")
+    fig.tight_layout(rect=(0, 0, 1, 0.98))
     fig.savefig(out / "heel.png", dpi=110)
     plt.close(fig)
