@@ -9,7 +9,8 @@ It listens on UDP 9002 (``--port``), answers every servo packet with one physics
 boat's state, and ends when SITL stops sending for ``--timeout`` seconds (or after
 ``--seconds`` of simulated time); then it prints what it did (frames, resends, refusals, the
 speed against real time) and writes the trajectory table, ``trajectory.csv`` (one row per
-0.1 s, a file per run when SITL restarted), under ``--out``. docs/ardupilot.md is the recipe.
+0.1 s, a file per run when SITL restarted), under ``--out``, and with ``--video`` films the run
+once it is over. docs/ardupilot.md is the recipe.
 """
 
 from __future__ import annotations

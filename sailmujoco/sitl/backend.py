@@ -16,10 +16,9 @@ and the state goes back as one JSON line; nothing moves between packets.
   off the middle for ``HOLD_STEER_S`` of SITL's time: a disarmed ArduPilot holds the middle, one
   in AUTO steers at once (a single frame off the middle is ArduPilot 90700977 setting up its
   outputs, 1.9 s after its start, and lets nothing go). A boat that cannot bear away from rest
-  (the robot: let go beam-on at rest, it luffs from 90 to 23 deg off the wind in 15 s, rudder hard
-  over to bear away, never faster than 0.5 m/s) is then
-  launched from a heading of the user's choice rather than left to drift beam-on through
-  ArduPilot's start-up.
+  (the robot: let go beam-on at rest, it luffs from 90 to 23 deg off the wind in 15 s with its
+  rudder hard over to bear away, never faster than 0.5 m/s) is then launched from a heading of
+  the user's choice rather than left to drift beam-on through ArduPilot's start-up.
 
 :meth:`JsonBackend.handle` is the protocol without a socket (the tests drive it);
 :meth:`JsonBackend.serve` listens on UDP and answers the address each packet came from.
