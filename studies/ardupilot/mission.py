@@ -216,7 +216,7 @@ def fly(simulator: str, mission: Mission, ardurover: Path, work: Path, *, seed: 
 
 
 def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
-    """Upload, arm, AUTO, record until home is reached or the limit."""
+    """Upload, arm, AUTO, then record (:func:`_record`)."""
     if m.wait_heartbeat(timeout=60) is None:
         raise RuntimeError("no heartbeat from ardurover in 60 s (see its ardurover.log)")
     m.mav.command_long_send(m.target_system, m.target_component,
@@ -255,6 +255,11 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
     m.recv_match(type="MISSION_ACK", blocking=True, timeout=10)
     m.arducopter_arm()
     m.set_mode("AUTO")
+    _record(m, mavutil, mission, flight, len(points), say)
+
+
+def _record(m, mavutil, mission: Mission, flight: Flight, n_points: int, say) -> None:
+    """Record from AUTO until the last of ``n_points`` waypoints is reached or the limit."""
     auto_ms = None
     state = {"heading": math.nan, "roll": math.nan, "speed": math.nan, "wp": 1}
     next_row = 0.0
@@ -280,7 +285,7 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
             flight.events.append((round(flight.rows[-1]["t"] if flight.rows else 0.0, 1), msg.text))
         elif kind == "MISSION_ITEM_REACHED" and auto_ms is not None and auto_ms >= 0 and flight.rows:
             flight.reached.setdefault(int(msg.seq), flight.rows[-1]["t"])
-            if int(msg.seq) == len(points) - 1:
+            if int(msg.seq) == n_points - 1:
                 return
         elif kind == "GLOBAL_POSITION_INT":
             if auto_ms == -1:
