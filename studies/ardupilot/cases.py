@@ -3,8 +3,9 @@
 ArduPilot's parameters are its rover and sailboat defaults, except on our boats
 ``SAIL_ANGLE_IDEAL`` (the angle of attack ArduPilot sheets the sail to, 25 deg by default), set to
 the angle at which the boat's sail stalls (its ``sail.suction_stall``, 15 deg on both: Saoud (2015)
-§VII-A's flat sail). At 25 deg both sails are stalled; the robot, sheeted so, cannot bear away from
-close-hauled and never leaves its start. One case keeps the default on the robot to show it.
+§VII-A's flat sail). At 25 deg both sails are stalled; the robot, sheeted so, cannot hold a
+close-hauled course and makes no ground to windward. One case keeps the default on the robot to
+show it.
 SIM_Sailboat keeps every default: it is what ArduPilot's sailboat defaults are tuned against.
 """
 
