@@ -261,7 +261,7 @@ def _fly(m, mavutil, mission: Mission, flight: Flight, say) -> None:
 def _record(m, mavutil, mission: Mission, flight: Flight, n_points: int, say) -> None:
     """Record from AUTO until the last of ``n_points`` waypoints is reached or the limit."""
     auto_ms = None
-    state = {"heading": math.nan, "roll": math.nan, "speed": math.nan, "wp": 1}
+    state = {"roll": math.nan, "speed": math.nan, "wp": 1}
     next_row = 0.0
     last_wall = time.time()
     while True:
