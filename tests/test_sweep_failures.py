@@ -1,7 +1,8 @@
 """A sweep whose runs fail says so: exit status 1 and one line per distinct reason with its count
-and an example run; a run that raised in its own simulation runs once (same seed, same code,
-same error), a run the cluster lost is tried again; a refused sweep file names the nearest
-accepted value and a refused sea option in one line."""
+and an example run, the finished runs still summarised over seeds, and one more line when no run
+finished; a run that raised in its own simulation runs once (same seed, same code, same error), a
+run the cluster lost is tried again; a refused sweep file names the nearest accepted value and a
+refused sea option in one line."""
 
 import re
 import textwrap
@@ -63,6 +64,79 @@ def test_a_failing_run_exits_1_says_why_once_and_runs_once(failing_sweep, tmp_pa
         f"{run_id}: controller.gain=2.0)"]
     assert (tmp_path / "raised.txt").read_text() == "2.0\n"  # raised once: not retried
     assert table.set_index("controller.gain").loc[2.0, "attempts"] == 1
+    # the run that finished is still summarised: the mean of its one seed is its own value
+    finished = table.set_index("controller.gain").loc[1.0, "mean_surge"]
+    summary = pd.read_csv(out / "summary.csv")
+    assert list(summary["controller.gain"]) == [1.0] and list(summary["n"]) == [1]
+    assert summary["mean_surge"].item() == pytest.approx(finished, rel=1e-12)
+    assert "  mean_surge: mean [95 % interval] over 1 seed(s) per combination" in captured.out
+    assert "over seeds: summary.csv" in captured.out
+
+
+EVERY_RUN_FAILS = textwrap.dedent('''
+    """Raises on its first step, naming its gain: one reason per gain."""
+
+
+    def make(env, gain: float = 1.0):
+        def law(timestep):
+            raise ValueError(f"gain {gain} is too high")
+        return law
+''')
+
+
+def test_a_sweep_whose_every_run_fails_says_why_once_per_reason_and_exits_1(tmp_path, capsys):
+    (tmp_path / "law.py").write_text(EVERY_RUN_FAILS)
+    path = tmp_path / "all_fail.toml"
+    path.write_text(textwrap.dedent("""
+        boat = "saoud_robot"
+        task = "heading_hold"
+        controller = "law.py:make"
+        duration = 0.3
+        seeds = [0, 1]
+        metrics = ["mean_surge"]
+        [grid]
+        "controller.gain" = [2.0, 3.0]
+    """))
+    out = tmp_path / "out"
+    out.mkdir()
+    (out / "summary.csv").write_text("left from an earlier sweep\n")
+    code = main(["sweep", str(path), "--out", str(out), "--scheduler", "serial", "--no-progress"])
+    captured = capsys.readouterr()
+    assert code == 1, captured.err
+    assert "status: ok 0, stopped 0, failed 4" in captured.out
+    assert "  mean_surge: no finished run" in captured.out
+    assert "over seeds: none (no run finished)" in captured.out
+    table = pd.read_csv(out / "results.csv")
+    assert list(table["status"]) == ["failed"] * 4
+
+    def first(gain):  # the first run of this gain, in the sweep's order: (its position, its id)
+        position = int(table.index[table["controller.gain"] == gain][0])
+        return position, table.loc[position, "run_id"], table.loc[position, "seed"]
+
+    lines = []
+    for gain in sorted((2.0, 3.0), key=first):  # two runs (seeds) each: a tie, so first seen first
+        position, run_id, seed = first(gain)
+        lines.append(f"sailmujoco sweep: failed 2 of 4 runs: ValueError: gain {gain} is too high "
+                     f"(e.g. run {position}, {run_id}: seed={seed} controller.gain={gain})")
+    assert captured.err.splitlines() == lines + ["sailmujoco sweep: no run finished (4 of 4 runs failed)"]
+    assert not (out / "summary.csv").exists()  # nothing finished: no summary, not a stale one
+
+
+def test_over_seeds_of_a_sweep_with_no_finished_run_is_empty_with_its_columns():
+    table = pd.DataFrame({"run_id": ["a", "b", "c"], "boat": ["saoud_robot"] * 3,
+                          "seed": [0, 1, 0], "status": ["failed", "stopped", "failed"],
+                          "error": ["ValueError: x", "capsized", "ValueError: x"],
+                          "controller.gain": [1.0, 1.0, 2.0], "mean_surge": [None, 0.4, None]})
+    summary = sweep.over_seeds(table, ["mean_surge", "not_a_column"])
+    assert summary.empty
+    assert list(summary.columns) == ["boat", "controller.gain", "mean_surge", "mean_surge_low",
+                                     "mean_surge_high", "n"]
+    assert sweep.summary.lines(summary, "mean_surge", table) == ["mean_surge: no finished run"]
+    table["status"] = ["ok", "ok", "failed"]  # two seeds of gain 1.0 finished
+    table["mean_surge"] = [0.2, 0.4, None]
+    summary = sweep.over_seeds(table, ["mean_surge"])
+    assert list(summary["controller.gain"]) == [1.0] and list(summary["n"]) == [2]
+    assert summary["mean_surge"].item() == pytest.approx(0.3, rel=1e-12)
 
 
 def test_on_workers_a_failing_run_runs_once_too(failing_sweep, tmp_path):

@@ -69,7 +69,8 @@ def epilog() -> str:
             "exit status 2). Each finished run is kept in <out>/runs/; the table is\n"
             "<out>/results.parquet and results.csv. A run whose simulation raised is recorded as\n"
             "failed, not retried (--retries: runs lost with a worker that died); the sweep then\n"
-            "prints one line per distinct reason, with an example run, and exits with status 1.\n\n"
+            "prints one line per distinct reason, with an example run, and exits with status 1\n"
+            "(when no run finished, a last line says so and no summary.csv is written).\n\n"
             "examples:\n"
             "  sailmujoco sweep --example > example.toml\n"
             "  sailmujoco sweep example.toml --workers 2\n"
@@ -89,7 +90,8 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0; 1 when a run failed (one line per distinct reason on stderr); or
+        0; 1 when a run failed (one line per distinct reason on stderr, then one more when no
+        run finished); or
         :data:`~sailmujoco.cli.arguments.INTERRUPTED` after Ctrl-C (the runs done are kept).
     """
     from .. import sweep
@@ -129,11 +131,17 @@ def run_cli(args) -> int:
     by_combination = sweep.over_seeds(table, metrics)
     if not by_combination.empty:
         by_combination.to_csv(out / "summary.csv", index=False)
+    else:  # no run finished: no summary, not one left from an earlier sweep in this folder
+        (out / "summary.csv").unlink(missing_ok=True)
     for metric in metrics[:5]:
         print("\n".join("  " + line for line in summary.lines(by_combination, metric, table)))
     print(f"table: {out / 'results.parquet'} (pandas.read_parquet) and results.csv; over seeds: "
-          f"summary.csv", flush=True)
+          + ("summary.csv" if not by_combination.empty else "none (no run finished)"), flush=True)
     failed = sweep.failures(table)
     for line in failed:  # one line per distinct reason; the traceback is in the run's record
         print(f"sailmujoco sweep: {line}", file=sys.stderr)
+    if failed and not counts["ok"]:  # nothing to summarise: say so last, in one line
+        stopped = f", {counts['stopped']} stopped early" if counts["stopped"] else ""
+        print(f"sailmujoco sweep: no run finished ({counts['failed']} of {len(table)} runs failed"
+              f"{stopped})", file=sys.stderr)
     return 1 if failed else 0

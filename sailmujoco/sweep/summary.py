@@ -46,6 +46,7 @@ def over_seeds(table, metrics: list[str]):
     Returns
     -------
     pandas.DataFrame
+        With these columns even when no run finished (then with no row).
     """
     import pandas as pd
 
@@ -54,9 +55,13 @@ def over_seeds(table, metrics: list[str]):
     by = combination_columns(table)
     ok = table[table["status"] == "ok"] if "status" in table else table
     metrics = [m for m in metrics if m in table]
+    columns = by + [c for m in metrics for c in (m, f"{m}_low", f"{m}_high")] + ["n"]
     rows = []
-    # options may hold lists (a start position): group on their text, keep the first row's values
-    keys = ok[by].astype(str).agg("|".join, axis=1) if by else pd.Series("", index=ok.index)
+    # options may hold lists (a start position): group on their text, keep the first row's values.
+    # The key is built row by row: DataFrame.agg(axis=1) of no row gives a frame, not a Series,
+    # and groupby refuses a 2-D key
+    keys = pd.Series(["|".join(values) for values in ok[by].astype(str).itertuples(index=False)],
+                     index=ok.index, dtype=object)
     for _, group in ok.groupby(keys, sort=False):
         row = {c: group.iloc[0][c] for c in by}
         for m in metrics:
@@ -64,7 +69,7 @@ def over_seeds(table, metrics: list[str]):
             row.update({m: got.mean, f"{m}_low": got.low, f"{m}_high": got.high})
         row["n"] = len(group)
         rows.append(row)
-    return pd.DataFrame(rows)
+    return pd.DataFrame(rows, columns=columns)
 
 
 def lines(summary, metric: str, table) -> list[str]:
