@@ -99,7 +99,7 @@ def observed_apparent_wind(observation: dict, source: str = "saoud_v") -> tuple[
         yaw = scalar(state, "yaw")  # air over the boat (ENU) in the level heading frame:
         c, s = math.cos(yaw), math.sin(yaw)
         level_x, level_y = c * air_e + s * air_n, -s * air_e + c * air_n
-        return saoud_theta_v((level_x, level_y)), float(np.hypot(level_x, level_y))  # Saoud §IV
+        return saoud_theta_v((level_x, level_y)), math.hypot(level_x, level_y)  # Saoud §IV
     heel = scalar(observation, "heel")
     if source == "ce":
         flow = np.asarray(observation["true_state"]["apparent_wind_ce"], dtype=float).reshape(2)

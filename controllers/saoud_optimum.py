@@ -21,6 +21,7 @@ from scipy import optimize
 
 from sailmujoco.forces.sail import saoud_normal_coefficient
 from sailmujoco.frames import wrap_angle
+from sailmujoco.jit.ordered import elementwise, geomspace
 
 from .saoud_model import (
     BRANCH_TOL,
@@ -197,7 +198,7 @@ def thrust_branch_roots(v1: float, v2: float, beta: float) -> list[float]:
     beta : float
         beta of :meth:`SaoudParams.beta` [-].
     """
-    grid = np.concatenate((np.geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
+    grid = np.concatenate((geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
     grid = grid.tolist()
     values = [thrust_branch_residual(r, v1, v2, beta) for r in grid]
     roots = []
@@ -285,6 +286,16 @@ def _f_vec(x: np.ndarray) -> np.ndarray:
     return _f_array(x).astype(float)
 
 
+def _sin(x):
+    """sin element by element from the C library (numpy's SIMD sine varies by CPU)."""
+    return elementwise(math.sin, x)
+
+
+def _cos(x):
+    """cos element by element from the C library (numpy's SIMD cosine varies by CPU)."""
+    return elementwise(math.cos, x)
+
+
 def _equilibrium_roots(deltas: np.ndarray, v1: float, v2: float, beta: float, phi_step: float):
     """Every heel phi in [-pi/2, pi/2] of the roll equilibrium (eq. 4, constraint of 5) at each delta.
 
@@ -295,8 +306,8 @@ def _equilibrium_roots(deltas: np.ndarray, v1: float, v2: float, beta: float, ph
     phis = np.linspace(-0.5 * math.pi, 0.5 * math.pi, int(math.ceil(math.pi / phi_step)) + 1)
 
     def h(delta, phi):  # Saoud (2015) eq. 5 constraint, with eq. 8a for sin(alpha_s)
-        x = v1 * np.sin(delta) - v2 * np.cos(phi) * np.cos(delta)
-        return beta * np.sin(phi) + _f_vec(x) * np.cos(delta)
+        x = v1 * _sin(delta) - v2 * _cos(phi) * _cos(delta)
+        return beta * _sin(phi) + _f_vec(x) * _cos(delta)
 
     values = h(deltas[:, None], phis[None, :])
     rows, cols = np.nonzero(np.sign(values[:, :-1]) * np.sign(values[:, 1:]) <= 0.0)
@@ -390,8 +401,8 @@ def brute_force_sail(theta_v: float, apparent_speed: float, l_phi: float, phi_ma
         dd, pp = _equilibrium_roots(deltas, v1, v2, beta, phi_step)
         keep = np.abs(pp) <= limit
         dd, pp = dd[keep], pp[keep]
-        x = v1 * np.sin(dd) - v2 * np.cos(pp) * np.cos(dd)  # eq. 8a
-        return dd, pp, _f_vec(x) * np.sin(dd)  # eq. 5
+        x = v1 * _sin(dd) - v2 * _cos(pp) * _cos(dd)  # eq. 8a
+        return dd, pp, _f_vec(x) * _sin(dd)  # eq. 5
 
     span = math.pi if full_circle else 0.5 * math.pi
     n = int(math.ceil(2.0 * span / delta_step)) + 1

@@ -26,6 +26,7 @@ import numpy as np
 
 from sailmujoco.forces.sail import saoud_normal_coefficient
 from sailmujoco.jit.kernel import clear_stale_cache, kernel
+from sailmujoco.jit.ordered import geomspace
 
 from .saoud_model import (
     BRANCH_TOL,
@@ -47,7 +48,7 @@ _BRENT_XTOL = 1e-14  # the reference's brentq(..., xtol=1e-14)
 _BRENT_RTOL = 4.0 * np.finfo(float).eps  # scipy.optimize.brentq's default rtol
 _BRENT_ITERATIONS = 100  # scipy.optimize.brentq's default maxiter
 # the reference's scan grids, as the reference builds them
-_THRUST_GRID = np.concatenate((np.geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
+_THRUST_GRID = np.concatenate((geomspace(1e-5, 1e-2, 7)[:-1], np.linspace(1e-2, 1.0, ROOT_SCAN + 1)))
 _ROLL_GRID = np.linspace(-0.5 * math.pi, 0.5 * math.pi, ROLL_SCAN + 1)
 _MAX_CANDIDATES = 8 + 2 * _THRUST_GRID.size + _ROLL_GRID.size
 # status of a solve

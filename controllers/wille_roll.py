@@ -65,6 +65,7 @@ from sailmujoco import frames
 from sailmujoco.boat.catalogue import wille_yacht
 from sailmujoco.boat.params import BoatParams
 from sailmujoco.forces.wind import log_profile
+from sailmujoco.jit.ordered import mat_t_vec
 
 from .base import scalar
 from .wille_roll_lqr import PHI_D, Q_WEIGHTS, R_WEIGHT, RollLQR, roll_lqr
@@ -262,16 +263,17 @@ class WilleRollSail:
         lam = scalar(state, "sail")
         r_ce = np.array([s.mast_x - s.ce_aft * math.cos(lam), s.ce_aft * math.sin(lam),
                          s.ce_height])
-        height = float(rot[2] @ r_ce)  # Wille (2016a) eq. 42: -h1 cos(phi) in NED
+        # Wille (2016a) eq. 42: -h1 cos(phi) in NED
+        height = float(rot[2, 0] * r_ce[0] + rot[2, 1] * r_ce[1] + rot[2, 2] * r_ce[2])
         speed = float(log_profile(height, scalar(state, "wind_speed_10")))  # eq. 40
-        wind_body = rot.T @ frames.wind_velocity(speed, scalar(state, "wind_direction"))
+        wind_body = mat_t_vec(rot, frames.wind_velocity(speed, scalar(state, "wind_direction")))
         velocity = np.array([scalar(state, "u"), scalar(state, "v"), scalar(state, "w")])
         omega = np.array([scalar(state, "roll_rate"), 0.0, scalar(state, "yaw_rate")])
         flow = wind_body - (velocity + np.cross(omega, r_ce))  # Wille (2016a) eq. 26 in FLU
         if self.wind == "mean_speed":  # the direction from the vane, the speed from the mean wind
             measured = np.asarray(state["apparent_wind_ce"], dtype=float).reshape(-1)[:2]
-            norm = float(np.hypot(*measured))
-            return measured * (float(np.hypot(*flow[:2])) / norm) if norm > 0.0 else flow[:2]
+            norm = math.hypot(*measured)
+            return measured * (math.hypot(*flow[:2]) / norm) if norm > 0.0 else flow[:2]
         return flow[:2]
 
     def _side_force(self, observation: dict, beta_ws: float, speed: float) -> float:

@@ -10,6 +10,10 @@ Readings chosen where the extracted text of the papers is garbled or silent
   with phi_d = phi_w. We read eq. 66 as G_phi = k (1 - 2 sin^2 phi_w)(phi - phi_w) + C_1.
 * Eq. 69 prints B as a column "0, 1, I_xx - K_pdot": the fraction bar was lost. We read
   B = [0, 1 / (I_xx - K_pdot)]^T (u is a moment, eq. 70).
+
+The Riccati equation of this two-state, one-input model is solved in closed form (below), not
+by scipy's CARE solver: LAPACK takes its kernels from the CPU, and the gain's last bits with
+them, and every later bit of a run follows the gain.
 """
 
 from __future__ import annotations
@@ -18,7 +22,6 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-import scipy.linalg
 
 from sailmujoco.boat.catalogue import wille_yacht
 from sailmujoco.boat.params import BoatParams
@@ -73,7 +76,15 @@ class RollLQR:
 
 def roll_lqr(params: BoatParams | None = None, *, phi_w: float = PHI_D,
              q: tuple[float, float] = Q_WEIGHTS, r: float = R_WEIGHT) -> RollLQR:
-    """Build A, B (eqs. 68-69) and solve the LQR (eq. 71) with scipy's CARE solver.
+    """Build A, B (eqs. 68-69) and solve the LQR (eq. 71) in closed form.
+
+    With A = [[0, 1], [a, 0]], B = [0, b]^T, Q = diag(q1, q2), R = r and P = [[p1, p2], [p2, p3]],
+    the algebraic Riccati equation A^T P + P A - P B R^-1 B^T P + Q = 0 reads, entry by entry,
+    2 a p2 - (b^2/r) p2^2 + q1 = 0, 2 p2 - (b^2/r) p3^2 + q2 = 0 and
+    p1 + a p3 - (b^2/r) p2 p3 = 0. The stabilising solution (A - B K Hurwitz, P > 0) takes
+    p2 = (r/b^2)(a + sqrt(a^2 + q1 b^2/r)) = q1 / (sqrt(a^2 + q1 b^2/r) - a) and
+    p3 = sqrt((r/b^2)(2 p2 + q2)); K = (b/r)(p2, p3) (MATLAB's lqr, K = R^-1 B^T P).
+    tests/test_cpu_targets.py holds it to scipy's CARE solver.
 
     Parameters
     ----------
@@ -93,8 +104,12 @@ def roll_lqr(params: BoatParams | None = None, *, phi_w: float = PHI_D,
     B = np.array([[0.0], [1.0 / inertia]])  # Wille (2016b) eq. 69, see the module docstring
     Q = np.diag(q)  # Wille (2016b) eq. 71
     R = np.array([[r]])
-    P = scipy.linalg.solve_continuous_are(A, B, Q, R)
-    K = np.linalg.solve(R, B.T @ P).ravel()  # K = R^-1 B^T P (MATLAB lqr)
+    a, b, (q1, q2) = float(A[1, 0]), float(B[1, 0]), (float(v) for v in q)
+    root = math.sqrt(a * a + q1 * b * b / r)
+    # a + root cancels where a < 0 (a heel below 45 deg): there its conjugate form
+    p2 = r / (b * b) * (a + root) if a >= 0.0 else q1 / (root - a)
+    p3 = math.sqrt(r / (b * b) * (2.0 * p2 + q2))
+    K = np.array([b / r * p2, b / r * p3])  # K = R^-1 B^T P
     for array in (A, B, Q, R, K):
         array.flags.writeable = False
     return RollLQR(A, B, Q, R, K, stiffness, inertia, phi_w)

@@ -213,7 +213,7 @@ def wind_velocity(speed, direction_from):
     numpy.ndarray, shape (3,)
         Velocity of the air in the world frame (ENU), m/s, horizontal.
     """
-    return -speed * np.array([np.sin(direction_from), np.cos(direction_from), 0.0])
+    return -speed * np.array([math.sin(direction_from), math.cos(direction_from), 0.0])
 
 
 def wille_beta_w(direction_from):
@@ -264,9 +264,9 @@ def euler_from_matrix(rot):
         Angles, rad.
     """
     rot = np.asarray(rot, dtype=float).reshape(3, 3)
-    heel = np.arctan2(rot[2, 1], rot[2, 2])
-    pitch = np.arcsin(np.clip(rot[2, 0], -1.0, 1.0))
-    yaw = np.arctan2(rot[1, 0], rot[0, 0])
+    heel = math.atan2(rot[2, 1], rot[2, 2])  # the C library's, as everywhere per step: numpy's
+    pitch = math.asin(min(max(float(rot[2, 0]), -1.0), 1.0))  # SIMD kernels vary by CPU
+    yaw = math.atan2(rot[1, 0], rot[0, 0])
     return heel, pitch, yaw
 
 
@@ -287,13 +287,14 @@ def matrix_from_euler(heel, pitch, yaw):
     numpy.ndarray, shape (3, 3)
         R = Rz(yaw) Ry(-pitch) Rx(heel), body (FLU) to world (ENU).
     """
-    ch, sh = np.cos(heel), np.sin(heel)
-    cp, sp = np.cos(-pitch), np.sin(-pitch)
-    cy, sy = np.cos(yaw), np.sin(yaw)
-    rz = np.array([[cy, -sy, 0.0], [sy, cy, 0.0], [0.0, 0.0, 1.0]])
-    ry = np.array([[cp, 0.0, sp], [0.0, 1.0, 0.0], [-sp, 0.0, cp]])
-    rx = np.array([[1.0, 0.0, 0.0], [0.0, ch, -sh], [0.0, sh, ch]])
-    return rz @ ry @ rx
+    ch, sh = math.cos(heel), math.sin(heel)
+    cp, sp = math.cos(-pitch), math.sin(-pitch)
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    # Rz Ry Rx multiplied out (its zero terms dropped), each entry in one written order
+    a00, a02, a10, a12 = cy * cp, cy * sp, sy * cp, sy * sp  # Rz Ry
+    return np.array([[a00, -sy * ch + a02 * sh, sy * sh + a02 * ch],
+                     [a10, cy * ch + a12 * sh, -cy * sh + a12 * ch],
+                     [-sp, cp * sh, cp * ch]])
 
 
 def quat_from_euler(heel, pitch, yaw):
@@ -345,7 +346,7 @@ def quat_from_matrix(rot):
         q[1 + i] = s / 4.0
         q[1 + j] = (rot[j, i] + rot[i, j]) / s
         q[1 + k] = (rot[k, i] + rot[i, k]) / s
-    return q / np.linalg.norm(q)
+    return q / math.sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3])
 
 
 def ned_frd_quaternion(rot):
@@ -399,7 +400,7 @@ def apparent_wind_angle(flow_body):
         Apparent wind angle, rad, in (-pi, pi]: 0 wind from ahead, positive from starboard.
     """
     fx, fy = float(flow_body[0]), float(flow_body[1])
-    return float(np.arctan2(fy, -fx))
+    return math.atan2(fy, -fx)
 
 
 def saoud_theta_v(flow_heading_frame):
@@ -418,4 +419,4 @@ def saoud_theta_v(flow_heading_frame):
     float
         Saoud's Theta_V, rad, counter-clockwise.
     """
-    return float(np.arctan2(-flow_heading_frame[1], -flow_heading_frame[0]))
+    return math.atan2(-float(flow_heading_frame[1]), -float(flow_heading_frame[0]))

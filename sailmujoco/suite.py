@@ -276,7 +276,7 @@ def rollout(env, controller, record=None):
                 "heel": float(observation["heel"]), "heel_deg": math.degrees(float(observation["heel"])),
                 "roll_rate": float(observation["roll_rate"]), "yaw_rate": float(observation["yaw_rate"]),
                 "u": float(ts["u"]), "v": float(ts["v"]),
-                "speed": float(np.linalg.norm(observation["velocity"])),
+                "speed": math.hypot(*observation["velocity"]),
                 "rudder": float(ts["rudder"]), "sail": float(ts["sail"]),
                 "awa": float(observation["apparent_wind_angle"]),
                 "aws": float(observation["apparent_wind_speed"])}

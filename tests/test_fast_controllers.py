@@ -61,7 +61,7 @@ def ref_saoud_v(observation):
     yaw = ref_scalar(state, "yaw")
     c, s = math.cos(yaw), math.sin(yaw)
     level = np.array([c * air[0] + s * air[1], -s * air[0] + c * air[1]])
-    return saoud_theta_v((level[0], level[1])), float(np.hypot(*level))
+    return saoud_theta_v((level[0], level[1])), math.hypot(*level)
 
 
 class ReferenceSaoudSail(SaoudSail):

@@ -6,8 +6,11 @@ boom bodies, and the sheet's geometry of the sheeted sail.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
+from ..jit.ordered import elementwise
 from .params import BoatParams
 
 
@@ -41,7 +44,7 @@ def rig_inertia(p: BoatParams):
 def _shift(inertia, mass, d):
     """Parallel-axis term: inertia of a body about a point ``d`` away from its CG."""
     d = np.asarray(d, dtype=float)
-    return inertia + mass * (d @ d * np.eye(3) - np.outer(d, d))
+    return inertia + mass * ((d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) * np.eye(3) - np.outer(d, d))
 
 
 def hull_inertial(p: BoatParams):
@@ -68,7 +71,7 @@ def hull_inertial(p: BoatParams):
     mh = m - ms - mr
     ch = (m * c - ms * cs - mr * cr) / mh
     ih = total - _shift(i_s, ms, cs - c) - _shift(i_r, mr, cr - c)
-    ih = ih - mh * ((ch - c) @ (ch - c) * np.eye(3) - np.outer(ch - c, ch - c))
+    ih = _shift(ih, -mh, ch - c)
     eig = np.linalg.eigvalsh(ih)
     if mh <= 0 or eig.min() <= 0 or 2 * eig.max() > eig.sum() + 1e-9:
         raise ValueError(f"{p.name}: the rig is too heavy for the given total mass/inertia")
@@ -101,7 +104,7 @@ def hull_mesh(p: BoatParams, n_stations: int = 25, n_section: int = 12):
         f = max(h.fullness(x), 0.03)
         b, t = h.half_beam * f, h.canoe_draft * f
         ring = [(x, -h.flare * b, h.freeboard)]
-        ring += [(x, b * np.sin(th), -t * np.cos(th)) for th in theta]
+        ring += [(x, b * math.sin(th), -t * math.cos(th)) for th in theta]
         ring += [(x, h.flare * b, h.freeboard)]
         rings.append(list(range(len(verts), len(verts) + len(ring))))
         verts += ring
@@ -156,7 +159,8 @@ def sheet_length(p: BoatParams, angle):
     """
     block, end = sheet_geometry(p)
     dz = p.sail.boom_height - block[2]
-    return np.sqrt((2.0 * p.sail.foot * np.sin(0.5 * np.asarray(angle))) ** 2 + dz**2)
+    sine = elementwise(math.sin, 0.5 * np.asarray(angle))[()]  # the C library's: numpy's varies by CPU
+    return np.sqrt((2.0 * p.sail.foot * sine) ** 2 + dz**2)
 
 
 def sheet_angle(p: BoatParams, length):
@@ -172,4 +176,4 @@ def sheet_angle(p: BoatParams, length):
     block, _ = sheet_geometry(p)
     dz = p.sail.boom_height - block[2]
     horizontal = np.sqrt(np.maximum(np.asarray(length) ** 2 - dz**2, 0.0))
-    return 2.0 * np.arcsin(np.clip(horizontal / (2.0 * p.sail.foot), 0.0, 1.0))
+    return 2.0 * elementwise(math.asin, np.clip(horizontal / (2.0 * p.sail.foot), 0.0, 1.0))[()]

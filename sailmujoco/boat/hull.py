@@ -32,10 +32,13 @@ Closed forms (s = 2x/L, integrals of (1 - s^2)^k over s in [-1, 1] times L/2):
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import brentq
+
+from ..jit.ordered import elementwise, gauss_legendre
 
 
 @dataclass(frozen=True)
@@ -217,7 +220,7 @@ def wetted_surface(h: HullShape, n: int = 200) -> float:
     n : int
         Number of Gauss-Legendre stations along x.
     """
-    x, w = np.polynomial.legendre.leggauss(n)
+    x, w = gauss_legendre(n)
     x = 0.5 * h.length * x
     f = h.fullness(x)
     a, b = h.half_beam * f, h.canoe_draft * f
@@ -322,7 +325,7 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
     -------
     ColumnQuadrature
     """
-    xg, wg = np.polynomial.legendre.leggauss(nx)
+    xg, wg = gauss_legendre(nx)
     x1 = 0.5 * h.length * xg
     wx = 0.5 * h.length * wg
     f = h.fullness(x1)
@@ -331,9 +334,10 @@ def column_quadrature(h: HullShape, nx: int = 24, ntheta: int = 16,
     b = (h.half_beam * f)[:, None]
     t = (h.canoe_draft * f)[:, None]
     x = np.broadcast_to(x1[:, None], (nx, ntheta))
-    y = b * np.sin(theta)[None, :]
-    area = wx[:, None] * b * np.cos(theta)[None, :] * dtheta
-    z_bottom = -t * np.cos(theta)[None, :]
+    sin, cos = elementwise(math.sin, theta), elementwise(math.cos, theta)  # numpy's vary by CPU
+    y = b * sin[None, :]
+    area = wx[:, None] * b * cos[None, :] * dtheta
+    z_bottom = -t * cos[None, :]
     z_top = np.full((nx, ntheta), h.freeboard)
     parts = [(x, y, area, z_bottom, z_top)]
     if h.flare > 1.0:
@@ -369,7 +373,7 @@ def strip_quadrature(h: HullShape, n: int = 16):
     draft : numpy.ndarray
         Draft T(x) = t(x), the canoe-body depth at each station, m.
     """
-    xg, wg = np.polynomial.legendre.leggauss(n)
+    xg, wg = gauss_legendre(n)
     x = 0.5 * h.length * xg
     w = 0.5 * h.length * wg
     draft = h.canoe_draft * h.fullness(x)

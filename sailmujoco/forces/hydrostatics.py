@@ -73,7 +73,7 @@ def submerged_volume(pos_z, rot, columns):
     return vol, qx, qy, qz
 
 
-@kernel(reassociate=True)
+@kernel
 def upright_submerged_volume(pos_z, rot, columns):
     """:func:`submerged_volume` of a hull not upside down (R22 >= 1e-12), summed on vector lanes.
 

@@ -72,6 +72,7 @@ import numpy as np
 from ..boat import hull as hull_geometry
 from ..constants import GRAVITY
 from ..jit.kernel import kernel
+from ..jit.ordered import mat_t_vec
 
 # ---- Keuning & Katgert (2008), Fossati (2009) Table 2.5: upright residuary resistance -------
 UPRIGHT_FROUDE = np.array([0.15, 0.20, 0.25, 0.30, 0.35, 0.40, 0.45, 0.50, 0.55, 0.60, 0.65,
@@ -187,7 +188,7 @@ def upright_table(d: DelftHull) -> np.ndarray:
     terms = np.array([1.0 / slender, d.lcb / d.length, d.prismatic,
                       d.volume ** (2.0 / 3.0) / d.waterplane_area, d.beam / d.length,
                       d.lcb / d.lcf, d.beam / d.draft, d.midship])
-    return np.maximum(slender * terms @ UPRIGHT_COEFFICIENTS, 0.0)
+    return np.maximum(slender * mat_t_vec(UPRIGHT_COEFFICIENTS, terms), 0.0)  # terms @ C, summed in order
 
 
 def heel_table(d: DelftHull) -> np.ndarray:
@@ -200,7 +201,7 @@ def heel_table(d: DelftHull) -> np.ndarray:
     """
     bt, lcb = d.beam / d.draft, d.lcb_percent
     terms = np.array([1.0, d.length / d.beam, bt, bt * bt, lcb, lcb * lcb])
-    return np.maximum(1e-3 * terms @ HEEL_COEFFICIENTS, 0.0)
+    return np.maximum(1e-3 * mat_t_vec(HEEL_COEFFICIENTS, terms), 0.0)
 
 
 def _read_table(fn: float, grid: np.ndarray, values: np.ndarray) -> float:

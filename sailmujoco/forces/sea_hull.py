@@ -90,7 +90,7 @@ def _setup(sea, dx, dy, nx, ny, decay, sc):
             sc[_ROWS + 2 * mirror, j], sc[_ROWS + 2 * mirror + 1, j] = c, -s
 
 
-@kernel(reassociate=True)
+@kernel
 def _cell_sums(sc, kappa_y, p, offset, cs, c):
     """Sum over components at one cell (station phasor times row p's, moved by ``offset`` along
     body y to the column's centre to first order, e^(i kappa_y offset) ~ 1 + i kappa_y offset):
@@ -163,7 +163,7 @@ def _column_dynamic(cs, k, h_stretched, r22, lo, hi, rga):
     return fx, fy, fz, gx, gy, gz
 
 
-@kernel(reassociate=True)
+@kernel
 def _station_acceleration(sc, sea, decay_row):
     """The water's acceleration (world, m/s^2) on the centre line at the station whose phasor
     the scratch holds, at depth factors ``decay_row`` (e^(k_j z_c))."""
@@ -217,7 +217,7 @@ def _grid_phases(sea, decay_exp, sc, columns, rot, dx, dy, nx, ny, added, diffra
             sc[_EI, j] = er * sc[_SI, j] + ei * sc[_SR, j]
 
 
-@kernel(reassociate=True)
+@kernel
 def _parts_wrench(pos, rot, columns, cs, rg):
     """Each column of the grid in the sea (one loop over the columns, on vector lanes): its
     change of wet volume and first moment against calm water, its dynamic force

@@ -26,6 +26,7 @@ import numpy as np
 
 from ..boat.hull_grid import GRID_ROWS, HullGrid, hull_grid, section_depths, section_weights
 from ..jit.kernel import kernel
+from ..jit.ordered import elementwise
 from ..options import WaveConfig
 from .lane_math import exp, sincos
 from .sea_hull import SCRATCH_ROWS
@@ -63,9 +64,11 @@ def sea_array(config: WaveConfig | None, depths=()) -> np.ndarray:
     felt = np.argsort(-comp.amplitude, kind="stable")  # largest first
     sea = np.zeros((rows, felt.size))
     sea[0], sea[1], sea[2] = comp.amplitude[felt], comp.omega[felt], comp.k[felt]
-    sea[3], sea[4] = np.cos(comp.direction_to[felt]), np.sin(comp.direction_to[felt])
+    # set up through the C library: numpy's sin, cos and exp pick a SIMD kernel by CPU
+    to = comp.direction_to[felt]
+    sea[3], sea[4] = elementwise(math.cos, to), elementwise(math.sin, to)
     sea[5] = comp.phase[felt]
-    sea[SEA_ROWS:SEA_ROWS + depths.size] = np.exp(np.outer(depths, sea[2]))
+    sea[SEA_ROWS:SEA_ROWS + depths.size] = elementwise(math.exp, np.outer(depths, sea[2]))
     return np.ascontiguousarray(sea)
 
 
@@ -161,7 +164,7 @@ def sea_stage(t, duration, pos, rot, sea):
         sea[10, j] = k * (cb * rot[0, 2] + sb * rot[1, 2])
 
 
-@kernel(reassociate=True)
+@kernel
 def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
     """The water's velocity at a foil, body frame: the current plus the orbital velocity
     averaged over the foil's span.

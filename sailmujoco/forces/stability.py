@@ -14,6 +14,7 @@ over-displace the heeled hull (+34 % at 20 deg on the yacht), which no floating 
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,6 +24,7 @@ from ..boat.hull import column_quadrature
 from ..boat.params import BoatParams
 from ..constants import GRAVITY
 from ..frames import matrix_from_euler
+from ..jit.ordered import elementwise, least_squares_2x2, mat_vec
 from .hydrostatics import submerged_volume
 
 
@@ -67,7 +69,7 @@ def righting_moment(p: BoatParams, heel: float, columns: np.ndarray | None = Non
     """
     vol, lever = _buoyancy_lever(p, heel, columns)
     # buoyancy (0, 0, rho g V) at B: moment about world x = lever_y * F_z; restoring is -M_x
-    return -p.rho_water * GRAVITY * vol * lever[1] * np.sign(np.cos(heel))
+    return -p.rho_water * GRAVITY * vol * lever[1] * np.sign(math.cos(heel))
 
 
 def righting_arm(p: BoatParams, heel: float, columns: np.ndarray | None = None) -> float:
@@ -99,7 +101,7 @@ def _buoyancy_lever(p: BoatParams, heel: float, columns) -> tuple[float, np.ndar
     rot = matrix_from_euler(heel, 0.0, 0.0)
     vol, qx, qy, qz = submerged_volume(equilibrium_heave(p, heel, columns), rot, columns)
     centroid = np.array([qx, qy, qz]) / vol
-    return vol, rot @ (centroid - np.array([p.cg_x, 0.0, p.cg_z]))  # world, from CG to B
+    return vol, mat_vec(rot, centroid - np.array([p.cg_x, 0.0, p.cg_z]))  # world, from CG to B
 
 
 def righting_curve(p: BoatParams, heels) -> dict[str, np.ndarray]:
@@ -124,8 +126,8 @@ def righting_curve(p: BoatParams, heels) -> dict[str, np.ndarray]:
     return {
         "heel": heels,
         "geometric": np.array([righting_moment(p, h, columns) for h in heels]),
-        "sin_cos": stiffness * np.sin(heels) * np.cos(heels),
-        "sin": stiffness * np.sin(heels),
+        "sin_cos": stiffness * elementwise(math.sin, heels) * elementwise(math.cos, heels),
+        "sin": stiffness * elementwise(math.sin, heels),
         "linear": stiffness * heels,
     }
 
@@ -158,7 +160,7 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
         vol, qx, qy, qz = submerged_volume(z, rot, columns)
         if vol <= 0.0:
             return [-1.0, trim]
-        lever = rot @ (np.array([qx, qy, qz]) / vol - cg)  # world, from CG to B
+        lever = mat_vec(rot, np.array([qx, qy, qz]) / vol - cg)  # world, from CG to B
         return [vol / target - 1.0, lever[0] / length]
 
     # Newton with a fixed-step difference Jacobian (m, rad). scipy's hybr scales its first
@@ -174,7 +176,7 @@ def floating_pose(p: BoatParams, heel: float, columns: np.ndarray,
         # lstsq, not solve: near 90 deg heel the columns lie almost level, each wholly wet or
         # dry, and then no column's cut moves with trim (a zero Jacobian column); the minimum-
         # norm step leaves the trim where it is
-        x = x - np.linalg.lstsq(jac, f, rcond=None)[0]
+        x = x - least_squares_2x2(jac, f)  # lstsq's, in a written order
         f = np.asarray(residual(x))
     if abs(f[0]) > 1e-9 and abs(f[1]) <= 1e-9:
         # there the volume is steep where a column is cut and flat between (continuous but
@@ -239,7 +241,7 @@ def floating_table(p: BoatParams, max_heel: float = np.radians(89.0),
         guess = floating_pose(p, h, columns, guess)
         rot = matrix_from_euler(h, guess[1], 0.0)
         vol, qx, qy, qz = submerged_volume(guess[0], rot, columns)
-        lever = rot @ (np.array([qx, qy, qz]) / vol - cg)
+        lever = mat_vec(rot, np.array([qx, qy, qz]) / vol - cg)
         heave[i], trim[i], volume[i] = guess[0], guess[1], vol
         righting[i] = -p.rho_water * GRAVITY * vol * lever[1]  # restoring: -M_x
     # the hull is port-starboard symmetric: mirror the starboard-down half
@@ -284,10 +286,10 @@ def gz_curves(p: BoatParams, heels, working_heels=(WILLE_WORKING_HEEL,)) -> dict
     weight = p.rho_water * GRAVITY * p.displaced_volume
     out = {"heel": heels,
            "geometric": np.interp(heels, table.heel, table.righting) / weight,
-           "eq20": p.gm_t * np.sin(heels) * np.cos(heels)}
+           "eq20": p.gm_t * elementwise(math.sin, heels) * elementwise(math.cos, heels)}
     for w in working_heels:
-        out[f"eq66_{np.degrees(w):g}"] = p.gm_t * ((1.0 - 2.0 * np.sin(w) ** 2) * (heels - w)
-                                                   + np.sin(w) * np.cos(w))
+        out[f"eq66_{np.degrees(w):g}"] = p.gm_t * ((1.0 - 2.0 * math.sin(w) ** 2) * (heels - w)
+                                                   + math.sin(w) * math.cos(w))
     return out
 
 

@@ -35,6 +35,8 @@ import math
 
 import numpy as np
 
+from ..jit.ordered import elementwise, gauss_legendre, power
+
 JONSWAP_SIGMA_LOW = 0.07  # -, peak width below omega_p, Hasselmann et al. (1973)
 JONSWAP_SIGMA_HIGH = 0.09  # -, peak width above omega_p
 JONSWAP_NORMALISATION = 0.287  # -, A_gamma = 1 - 0.287 ln gamma, DNV-RP-C205 eq. 3.5.5.4
@@ -59,7 +61,8 @@ def pierson_moskowitz(omega, hs: float, tp: float):
     omega = np.asarray(omega, dtype=float)
     wp = 2.0 * math.pi / tp
     w = np.where(omega > 0.0, omega, 1.0)
-    s = 5.0 / 16.0 * hs**2 * wp**4 * w**-5 * np.exp(-1.25 * (w / wp) ** -4)
+    # the powers and the exponential through the C library: numpy's pick a SIMD kernel by CPU
+    s = 5.0 / 16.0 * hs**2 * wp**4 * power(w, -5.0) * elementwise(math.exp, -1.25 * power(w / wp, -4.0))
     return np.where(omega > 0.0, s, 0.0)
 
 
@@ -83,9 +86,9 @@ def jonswap(omega, hs: float, tp: float, gamma: float):
     omega = np.asarray(omega, dtype=float)
     wp = 2.0 * math.pi / tp
     sigma = np.where(omega <= wp, JONSWAP_SIGMA_LOW, JONSWAP_SIGMA_HIGH)
-    r = np.exp(-((omega - wp) ** 2) / (2.0 * sigma**2 * wp**2))
+    r = elementwise(math.exp, -((omega - wp) ** 2) / (2.0 * sigma**2 * wp**2))
     a_gamma = 1.0 - JONSWAP_NORMALISATION * math.log(gamma)
-    return a_gamma * pierson_moskowitz(omega, hs, tp) * gamma**r
+    return a_gamma * pierson_moskowitz(omega, hs, tp) * power(gamma, r)
 
 
 def spectrum_density(config, omega):
@@ -121,7 +124,7 @@ def bin_energies(config, edges: np.ndarray, nodes: int = 16) -> np.ndarray:
     nodes : int
         Gauss-Legendre nodes per bin.
     """
-    x, w = np.polynomial.legendre.leggauss(nodes)
+    x, w = gauss_legendre(nodes)
     lo, hi = edges[:-1, None], edges[1:, None]
     half = 0.5 * (hi - lo)
     omega = lo + half * (x[None, :] + 1.0)
@@ -143,6 +146,6 @@ def spreading_offsets(s: float, uniform: np.ndarray) -> np.ndarray:
         Quantiles in [0, 1).
     """
     theta = np.linspace(-math.pi, math.pi, _SPREAD_GRID)
-    pdf = np.cos(0.5 * theta) ** (2.0 * s)
+    pdf = power(elementwise(math.cos, 0.5 * theta), 2.0 * s)
     cdf = np.concatenate([[0.0], np.cumsum(0.5 * (pdf[1:] + pdf[:-1]) * np.diff(theta))])
     return np.interp(uniform, cdf / cdf[-1], theta)

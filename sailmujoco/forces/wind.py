@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from .. import constants as c
+from ..jit.ordered import elementwise, geomspace, power
 from ..tomlfile import read_toml
 from .wind_kernels import gust_speed, wander_angle, wind_velocity
 
@@ -35,7 +36,7 @@ F_MAX = 0.4  # Hz, upper end of the simulated gust band (Wille §2.1)
 MAX_SPEED = 100.0  # m/s, U10: well above any hurricane's; the force models are not meant for more
 WANDER_DT = 0.1  # s, grid of the direction-wander random walk
 # Heights of the gust-amplitude table (log spaced); the amplitude is interpolated in ln z.
-_Z_TABLE = np.geomspace(0.05, 60.0, 48)
+_Z_TABLE = geomspace(0.05, 60.0, 48)
 
 
 @dataclass(frozen=True)
@@ -166,8 +167,9 @@ def norsok_spectrum(f, z, mean_speed_10):
     if u <= 0.0:
         return np.zeros(np.broadcast(f, zr).shape)
     n = c.NORSOK_N
-    x = 172.0 * f * zr ** (2.0 / 3.0) * u ** (-0.75)
-    return 320.0 * u**2 * zr**0.45 / (1.0 + x**n) ** (5.0 / (3.0 * n))
+    # the powers through the C library: numpy's pick a SIMD kernel by CPU
+    x = 172.0 * f * power(zr, 2.0 / 3.0) * u ** (-0.75)
+    return 320.0 * u**2 * power(zr, 0.45) / power(1.0 + power(x, n), 5.0 / (3.0 * n))
 
 
 def log_profile(z, mean_speed_10):
@@ -183,7 +185,8 @@ def log_profile(z, mean_speed_10):
     k = c.KARMAN_K
     z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
     z = np.asarray(z, dtype=float)
-    return np.where(z > z0, mean_speed_10 * 2.5 * math.sqrt(k) * np.log(np.maximum(z, z0) / z0), 0.0)
+    log = elementwise(math.log, np.maximum(z, z0) / z0)  # the C library's: numpy's varies by CPU
+    return np.where(z > z0, mean_speed_10 * 2.5 * math.sqrt(k) * log, 0.0)
 
 
 class WindField:
@@ -207,7 +210,7 @@ class WindField:
         df = F_MAX / n
         self.gust_frequency = (np.arange(n) + rng.uniform(0.0, 1.0, n)) * df
         self.gust_phase = rng.uniform(0.0, 2.0 * np.pi, n)
-        self.log_z = np.log(_Z_TABLE)
+        self.log_z = elementwise(math.log, _Z_TABLE)
         self.gust_cos = np.full(n + 1, np.nan)  # gust_cosines' cache: (time, cos_1 .. cos_n)
         if config.gusts and config.speed > 0.0:
             s = norsok_spectrum(self.gust_frequency[None, :], _Z_TABLE[:, None], config.speed)

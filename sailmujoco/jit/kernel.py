@@ -29,6 +29,7 @@ _PACKAGE = Path(__file__).resolve().parents[1]
 # where it is called) and hull_grid.py (its grid size is frozen into the sea's scratch size).
 _SOURCES = sorted([*(_PACKAGE / "step").glob("*.py"), *(_PACKAGE / "forces").glob("*.py"),
                    *(_PACKAGE / "reference").glob("*.py"), _PACKAGE / "jit" / "kernel.py",
+                   _PACKAGE / "jit" / "ordered.py",
                    _PACKAGE / "frames.py", _PACKAGE / "boat" / "hull_grid.py"])
 
 
@@ -73,16 +74,18 @@ def clear_stale_cache(module_file: str) -> None:
     _clear_stale_cache((*_SOURCES, module), {module.parent / "__pycache__"})
 
 
-def kernel(fn=None, *, inline: bool = False, reassociate: bool = False):
+def kernel(fn=None, *, inline: bool = False):
     """Compile ``fn`` with numba (cached on disk), or return it unchanged when JIT is disabled.
 
     ``@kernel(inline=True)`` inlines the function into its compiled callers (numba IR level):
     for a helper with many array arguments called in the per-step kernel, where the call itself
-    would cost measurable time. ``@kernel(reassociate=True)`` lets the compiler reorder sums
-    (LLVM's ``reassoc`` and ``contract``, not ``nnan``/``ninf``: a NaN still shows), so that
-    a sum over wave components runs on vector registers; its last bits then differ from the
-    interpreted path's (the tests compare the two to 1e-10). Only the sea's sums use it: calm
-    water's arithmetic stays in its written order.
+    would cost measurable time.
+
+    No kernel lets the compiler reorder or fuse floating-point operations (no fastmath flag):
+    LLVM then keeps every sum in its written order and never contracts a multiply and an add
+    into one FMA, so a kernel gives the same bits whatever CPU numba compiles it for (the
+    host's, with AVX-512 and FMA, or a generic x86-64): ``tests/test_cpu_targets.py``. Where a
+    long sum should run on vector lanes, write the lanes out (``forces/lane_math.lane_sum``).
 
     Every kernel is compiled with ``cache=True``, ``nogil=True`` and ``error_model="numpy"``
     (a division by zero gives inf or NaN, as in numpy, rather than raising).
@@ -95,9 +98,6 @@ def kernel(fn=None, *, inline: bool = False, reassociate: bool = False):
     inline : bool, optional
         Inline the kernel into its compiled callers (numba's ``inline="always"``); default
         False (``inline="never"``).
-    reassociate : bool, optional
-        Let LLVM reorder and fuse floating-point operations (fastmath flags ``reassoc`` and
-        ``contract`` only); default False (strict IEEE order).
 
     Returns
     -------
@@ -107,8 +107,7 @@ def kernel(fn=None, *, inline: bool = False, reassociate: bool = False):
     """
     def build(f):
         return numba.njit(cache=True, nogil=True, error_model="numpy",
-                          inline="always" if inline else "never",
-                          fastmath={"reassoc", "contract"} if reassociate else False)(f)
+                          inline="always" if inline else "never", fastmath=False)(f)
 
     return build if fn is None else build(fn)
 

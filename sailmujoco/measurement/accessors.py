@@ -24,6 +24,7 @@ import numpy as np
 
 from .. import frames
 from ..forces import boat as kernels
+from ..jit.ordered import mat_t_vec
 from .observation import Truth, euler_of, euler_of_entries, observation_and_record, rotation_of, wrench_rows
 
 _SITE = mujoco.mjtObj.mjOBJ_SITE
@@ -77,7 +78,7 @@ class BoatAccessors:
 
     def body_velocity(self) -> np.ndarray:
         """Body-frame linear velocity of CO (u, v, w), m/s."""
-        return self.rotation().T @ self._free_state()[1][0:3]
+        return mat_t_vec(self.rotation(), self._free_state()[1][0:3])
 
     def angular_velocity(self) -> np.ndarray:
         """Body-frame angular velocity (p, q, r), rad/s."""
@@ -150,7 +151,7 @@ class BoatAccessors:
 
     def speed_over_ground(self) -> float:
         """Horizontal speed of CO over ground, m/s."""
-        return float(np.hypot(*self._free_state()[1][0:2]))
+        return math.hypot(*self._free_state()[1][0:2])
 
     def rudder_angle(self) -> float:
         """Rudder angle, rad, positive trailing edge to port."""
@@ -188,7 +189,7 @@ class BoatAccessors:
         vel = np.zeros(6)
         mujoco.mj_objectVelocity(m, d, mujoco.mjtObj.mjOBJ_SITE, site, vel, 0)
         air = self.wind.velocity(d.time, float(d.site_xpos[site][2])) - vel[3:]
-        return self.rotation().T @ air
+        return mat_t_vec(self.rotation(), air)
 
     def apparent_wind_angle(self) -> float:
         """AWA at the masthead, rad, positive when the wind comes from starboard."""
@@ -196,7 +197,7 @@ class BoatAccessors:
 
     def apparent_wind_speed(self) -> float:
         """Apparent wind speed at the masthead in the body x-y plane, m/s."""
-        return float(np.hypot(*self.apparent_wind_masthead()[:2]))
+        return math.hypot(*self.apparent_wind_masthead()[:2])
 
     def angle_of_attack(self, foil: str) -> float:
         """Angle of attack (rad) of one foil now.
@@ -270,17 +271,17 @@ class BoatAccessors:
         held = self.__dict__.get("_truth_held")
         if held is None or held[0] is not d:
             held = self._hold_truth_arrays(d)
-        _, qvel, m, site, joints, site_xpos, rudder_at, sail_at, flat, rot_t, vel = held
+        _, qvel, m, site, joints, site_xpos, rudder_at, sail_at, flat, rot, vel = held
         if self.dofs == 6:  # _free_state()
             qpos = joints
         else:
             qpos, qvel = self._free_state()
         mujoco.mju_quat2Mat(flat, qpos[3:7])  # rotation_of(qpos), into the held matrix
-        body = rot_t @ qvel[0:3]  # body_velocity()
+        body = mat_t_vec(rot, qvel[0:3])  # body_velocity()
         rates = qvel[3:6]  # angular_velocity(), read before _ensure_fresh refills it (4 DOF): same values
         wind = self.wind
         current = wind.current
-        current_body = rot_t @ current
+        current_body = mat_t_vec(rot, current)
         t = d.time
         heel, pitch, yaw = euler_of_entries(flat.tolist())  # euler_of(rot)
         heading = frames.wrap_angle(math.pi / 2.0 - yaw)  # frames.heading_from_yaw
@@ -291,9 +292,9 @@ class BoatAccessors:
         # apparent_wind_masthead(): the air relative to the masthead, body axes
         mujoco.mj_objectVelocity(m, d, _SITE, site, vel, 0)  # writes all six
         air = wind.velocity(t, float(site_xpos[site, 2])) - vel[3:]
-        flow_x, flow_y, _ = (rot_t @ air).tolist()
-        awa = float(np.arctan2(flow_y, -flow_x))  # frames.apparent_wind_angle
-        aws = float(np.hypot(flow_x, flow_y))
+        flow_x, flow_y, _ = mat_t_vec(rot, air).tolist()
+        awa = math.atan2(flow_y, -flow_x)  # frames.apparent_wind_angle
+        aws = math.hypot(flow_x, flow_y)
         return Truth._make((  # in the order of its fields
             t, qpos[0:2].copy(), qvel[0:2].copy(), body, current_body, rates, yaw, heel, pitch, heading,
             rudder, sail, awa, aws, diag[_D_WIND:_D_WIND + 2].copy(), diag[_D_FLOW:_D_FLOW + 2].copy(),
@@ -309,7 +310,7 @@ class BoatAccessors:
         flat = np.empty(9)
         rudder_at, _, sail_at, _ = self._idx.tolist()
         self._truth_held = (d, d.qvel, m, mujoco.mj_name2id(m, _SITE, "masthead"), d.qpos, d.site_xpos,
-                            rudder_at, sail_at, flat, flat.reshape(3, 3).T, np.empty(6))
+                            rudder_at, sail_at, flat, flat.reshape(3, 3), np.empty(6))
         return self._truth_held
 
     def _wrenches(self) -> dict:
@@ -362,10 +363,10 @@ class BoatAccessors:
         heel, pitch, _ = euler_of(rot)
         # MuJoCo applies the weight itself, at the CG: its roll moment about CO completes the
         # restoring moment (buoyancy + weight) that the papers' g(eta) stands for
-        weight_body = rot.T @ np.array([0.0, 0.0, -p.mass * 9.81])
+        weight_body = mat_t_vec(rot, np.array([0.0, 0.0, -p.mass * 9.81]))
         gravity_mx = -p.cg_z * weight_body[1]  # (r_G x F)_x with r_G = (cg_x, 0, cg_z)
         restoring = terms[kernels.T_HYDRO][3] + gravity_mx
-        u, v, _ = rot.T @ qvel[0:3]  # body velocity
+        u, v, _ = mat_t_vec(rot, qvel[0:3])  # body velocity
         return {
             "ct_cn": abs(c_t) / abs(c_n) if abs(c_n) > 0.05 else float("nan"),
             "pitch": pitch, "heave": float(qpos[2]),

@@ -35,6 +35,7 @@ import mujoco
 import numpy as np
 
 from ..frames import wrap_angle
+from ..jit.ordered import mat_t_vec
 
 # force term of a world -> key of the observation's "<key>_wrench" (true_state)
 WRENCH_KEYS = {"sail": "sail", "keel": "keel", "rudder": "rudder", "damping": "damping",
@@ -233,12 +234,12 @@ def euler_of_entries(entries: list) -> tuple[float, float, float]:
         (heel, pitch, yaw), rad.
     """
     r00, _, _, r10, _, _, sin_pitch, r21, r22 = entries
-    heel = float(np.arctan2(r21, r22))
+    heel = math.atan2(r21, r22)
     if sin_pitch > 1.0:
         sin_pitch = 1.0
     elif sin_pitch < -1.0:
         sin_pitch = -1.0
-    return heel, float(np.arcsin(sin_pitch)), float(np.arctan2(r10, r00))
+    return heel, math.asin(sin_pitch), math.atan2(r10, r00)
 
 
 # key -> its value from the truth: a number (handed out as a 0-d float64 array) or a float64 array
@@ -374,7 +375,7 @@ def record(truth: Truth) -> dict:
     east, north = velocity.tolist() if type(velocity) is np.ndarray else velocity  # the same float64s
     return {"t": truth.time, "position": truth.position.copy(), "heading": truth.heading,
             "heel": truth.heel, "roll_rate": float(truth.rates[0]), "surge": float(truth.body_velocity[0]),
-            "course": float(math.atan2(north, east)), "speed": float(np.hypot(east, north))}
+            "course": float(math.atan2(north, east)), "speed": math.hypot(east, north)}
 
 
 def observation_and_record(world) -> tuple[dict, dict]:
@@ -440,7 +441,7 @@ def accessor_truth(world) -> Truth:
     return Truth(
         time=t, position=np.asarray(world.position()[:2], dtype=np.float64),
         velocity=np.asarray(world.ground_velocity(), dtype=np.float64),
-        body_velocity=world.body_velocity(), current_body=rot.T @ current,
+        body_velocity=world.body_velocity(), current_body=mat_t_vec(rot, current),
         rates=world.angular_velocity(), yaw=world.yaw(), heel=world.heel(), pitch=world.pitch(),
         heading=world.heading(), rudder=world.rudder_angle(), sail=world.sail_angle(),
         apparent_wind_angle=world.apparent_wind_angle(), apparent_wind_speed=world.apparent_wind_speed(),

@@ -32,6 +32,7 @@ import numpy as np
 
 from ..errors import check_number
 from ..frames import matrix_from_euler, wrap_angle
+from ..jit.ordered import mat_t_vec, mat_vec
 from .noise import GaussMarkov, LowPass
 
 CEP_PER_SIGMA = math.sqrt(2.0 * math.log(2.0))  # CEP / per-axis sigma of a circular normal error
@@ -79,8 +80,8 @@ def tilt_compensated_heading(rot, dip: float, heel: float, pitch: float) -> floa
     heel, pitch : float
         The inclinometer's heel and pitch, rad.
     """
-    m = np.asarray(rot, dtype=np.float64).reshape(3, 3).T @ earth_field(dip)
-    level = matrix_from_euler(heel, pitch, 0.0) @ m
+    m = mat_t_vec(np.asarray(rot, dtype=np.float64).reshape(3, 3), earth_field(dip))
+    level = mat_vec(matrix_from_euler(heel, pitch, 0.0), m)
     return math.atan2(float(level[1]), float(level[0]))
 
 
@@ -139,7 +140,7 @@ def masthead_flow(rot, velocity, omega_body, r_body, wind) -> np.ndarray:
         The air's world velocity at the point, m/s.
     """
     rot = np.asarray(rot, dtype=np.float64).reshape(3, 3)
-    air = rot.T @ (np.asarray(wind, dtype=np.float64) - np.asarray(velocity, dtype=np.float64))
+    air = mat_t_vec(rot, np.asarray(wind, dtype=np.float64) - np.asarray(velocity, dtype=np.float64))
     return air - np.cross(np.asarray(omega_body, dtype=np.float64), np.asarray(r_body, dtype=np.float64))
 
 

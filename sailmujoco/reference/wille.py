@@ -53,6 +53,7 @@ from ..boat.params import BoatParams
 from ..errors import SimulationStopped  # the same stop as in 6 DOF
 from ..forces.foil_sections import naca0015
 from ..forces.wind import WANDER_DT, WindConfig, WindField
+from ..jit.ordered import mat_t_vec, mat_vec, solve
 from ..measurement.observation import Truth, observation_and_record, wrench_rows
 from ..options import PaperModel, choices
 from ..physics import ForceSwitches  # the same switches as in 6 DOF
@@ -118,7 +119,9 @@ class Wille4DOF:
             [0.0, 0.0, ixx + self._a[3], -p.inertia_xz],
             [0.0, 0.0, -p.inertia_xz, izz + self._a[5]],
         ])
-        self._mass_inverse = np.linalg.inv(self._mass_matrix)  # constant in the paper's model
+        # constant in the paper's model; solved column by column in a written order (LAPACK's inverse
+        # takes its kernels, and its last bits, from the CPU)
+        self._mass_inverse = np.column_stack([solve(self._mass_matrix, e) for e in np.eye(4)])
         self.external = np.zeros(4)  # extra (X, Y, K, N) in FRD, for tests
         self._terms = np.zeros((len(TERMS), 5))  # work space of the kernels
         self._work = np.zeros((7, 6))
@@ -355,7 +358,7 @@ class Wille4DOF:
         return float(math.atan2(vn, ve))
 
     def speed_over_ground(self) -> float:
-        return float(np.hypot(*self.ground_velocity()))
+        return math.hypot(*self.ground_velocity())
 
     def drift_angle(self) -> float:
         """beta = atan2(v cos(phi), u), Wille eq. 45, in our sign (positive to port)."""
@@ -430,15 +433,15 @@ class Wille4DOF:
         p = self.params
         top = np.array([p.sail.mast_x, 0.0, p.sail.masthead_height])
         (wx, wy, wz), (tx, _, tz) = rates, top
-        vel = rot @ (body + np.array([wy * tz, wz * tx - wx * tz, -wy * tx]))  # v + w x r
-        air = self.true_wind(float((rot @ top)[2])) - vel
-        return rot.T @ air
+        vel = mat_vec(rot, body + np.array([wy * tz, wz * tx - wx * tz, -wy * tx]))  # v + w x r
+        air = self.true_wind(float(mat_vec(rot, top)[2])) - vel
+        return mat_t_vec(rot, air)
 
     def apparent_wind_angle(self) -> float:
         return frames.apparent_wind_angle(self.apparent_wind_masthead())
 
     def apparent_wind_speed(self) -> float:
-        return float(np.hypot(*self.apparent_wind_masthead()[:2]))
+        return math.hypot(*self.apparent_wind_masthead()[:2])
 
     # ------------------------------------------------------------------ the task's measurement
     def truth(self) -> Truth:
@@ -453,10 +456,10 @@ class Wille4DOF:
         body = self.body_velocity()
         rates = self.angular_velocity()
         current = wind.current
-        current_body = rot.T @ current
+        current_body = mat_t_vec(rot, current)
         flow = self.masthead_flow(rot, body, rates)  # apparent_wind_masthead()
-        awa = float(np.arctan2(float(flow[1]), -float(flow[0])))  # frames.apparent_wind_angle
-        aws = float(np.hypot(*flow[:2]))
+        awa = math.atan2(float(flow[1]), -float(flow[0]))  # frames.apparent_wind_angle
+        aws = math.hypot(*flow[:2])
         true_wind = wind.velocity(t, self.params.sail.ce_height * math.cos(heel))  # sail_wind()
         frd, (vws_u, vws_v) = self.terms_and_sail_flow(t, state)  # forces(), _sail_flow()
         # force_terms(): FRD (X, Y, K, N, M) -> FLU (Fx, Fy, Fz, Mx, My, Mz), a row of zeros after

@@ -25,6 +25,7 @@ from ..forces.hydrostatics import paper_righting_moment
 from ..forces.sail import flat_sail_force
 from ..forces.wind import wind_velocity
 from ..jit.kernel import kernel
+from ..jit.ordered import solve
 from .integrators import STATUS_RAN_AWAY, final_status, rk4_stage, rk4_update
 
 TERMS = ("sail", "keel", "rudder", "restoring", "damping", "added_mass", "coriolis", "external")
@@ -366,7 +367,7 @@ def rates(t, state, P, sigma_d, lam_d, external, a, strip_x, strip_w, strip_draf
         for i in range(4):
             finite = finite and math.isfinite(tau[i]) and math.isfinite(mass[3, i])
         if finite:
-            nu_dot = np.linalg.solve(mass, tau[:4].copy())
+            nu_dot = solve(mass, tau[:4].copy())  # in a written order: LAPACK's varies by CPU
             for i in range(4):
                 out[4 + i] = nu_dot[i]
         else:  # compiled solve refuses NaN: the state is lost either way

@@ -39,6 +39,7 @@ from ..boat.geometry import sheet_length
 from ..errors import SimulationStopped, check_number
 from ..forces.wind import WindConfig
 from ..frames import wrap_angle, yaw_from_heading
+from ..jit.ordered import mat_vec
 from ..measurement.instruments import Instruments
 from ..physics import BoatPhysics
 from .film import FILM_RATE_HZ
@@ -213,7 +214,7 @@ class JsonBackend:
         rudder = self.servos.rudder(steering, self._max_rudder)
         boom = self.servos.sail_angle(mainsail)
         sheet = float(np.clip(sheet_length(self.params, boom), *self._sheet_range))
-        before = self.physics.rotation() @ self.physics.body_velocity()
+        before = mat_vec(self.physics.rotation(), self.physics.body_velocity())
         self.physics.set_control([rudder, sheet])
         self.physics.step(1)
         vane = self._vane()

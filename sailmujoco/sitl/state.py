@@ -23,6 +23,7 @@ import numpy as np
 
 from .. import frames
 from ..constants import GRAVITY
+from ..jit.ordered import mat_t_vec, mat_vec
 
 
 def boat_state(physics, previous_velocity, dt: float, vane: tuple[float, float]) -> dict:
@@ -41,9 +42,9 @@ def boat_state(physics, previous_velocity, dt: float, vane: tuple[float, float])
         (direction, speed) the wind vane reports: rad clockwise from the bow, m/s.
     """
     rot = physics.rotation()
-    velocity = rot @ physics.body_velocity()  # CO's world (ENU) velocity, m/s
+    velocity = mat_vec(rot, physics.body_velocity())  # CO's world (ENU) velocity, m/s
     acceleration = np.zeros(3) if previous_velocity is None else (velocity - previous_velocity) / dt
-    specific = rot.T @ (acceleration - np.array([0.0, 0.0, -GRAVITY]))  # body FLU
+    specific = mat_t_vec(rot, acceleration - np.array([0.0, 0.0, -GRAVITY]))  # body FLU
     return {
         "timestamp": float(physics.data.time),
         "imu": {"gyro": frames.frd_from_flu(physics.angular_velocity()),

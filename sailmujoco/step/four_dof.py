@@ -22,6 +22,7 @@ from ..forces import boat as kernels
 from ..forces import stability
 from ..forces.boat_parameters import HYDROSTATIC_MODES, P_G, P_HYDRO_MODE, P_K_HEAVE
 from ..jit.kernel import entry_point
+from ..jit.ordered import mat_mat, mat_t_vec, mat_vec
 from . import native, registry
 
 # the compiled 4-DOF stage, called past numba's type dispatch (one signature)
@@ -119,7 +120,7 @@ class FourDofStage:
                    math.sin(yaw / 2) * math.sin(roll / 2), math.sin(yaw / 2) * math.cos(roll / 2))
         q7[7], q7[8] = d.qpos[4], d.qpos[5]
         v6[0], v6[1], v6[2] = xd, yd, 0.0
-        v6[3:6] = rot.T @ np.array([0.0, 0.0, yawd]) + np.array([rolld, 0.0, 0.0])
+        v6[3:6] = mat_t_vec(rot, np.array([0.0, 0.0, yawd])) + np.array([rolld, 0.0, 0.0])
         v6[6], v6[7] = d.qvel[4], d.qvel[5]
         return rot
 
@@ -140,7 +141,7 @@ class FourDofStage:
         wrench = np.array([fx, fy, fz, 0.0 * fz - cz * fy, cz * fx - cx * fz, cx * fy - 0.0 * fx])
         wrench[3] -= righting
         self._terms[kernels.T_HYDRO] = wrench
-        self._qfrc8[0:3] += rot @ force_b
+        self._qfrc8[0:3] += mat_vec(rot, force_b)
         self._qfrc8[3:6] += wrench[3:]
 
     def _forces_4dof(self, add_mass: bool) -> int:
@@ -160,7 +161,7 @@ class FourDofStage:
         if self._floating is not None:
             self._floating_hydrostatics(rot)
         f = self._qfrc8
-        torque_world = rot @ f[3:6]
+        torque_world = mat_vec(rot, f[3:6])
         qfrc = d.qfrc_applied
         qfrc[0], qfrc[1], qfrc[2], qfrc[3] = f[0], f[1], torque_world[2], f[3]
         qfrc[4], qfrc[5] = f[6], f[7]
@@ -179,7 +180,7 @@ class FourDofStage:
             jac[0:3, 0:2] = rot.T[:, 0:2]
             jac[3:6, 2] = rot.T[:, 2]
             jac[3, 3] = 1.0
-            added = jac.T @ (self._a_diag[:, None] * jac)
+            added = mat_mat(jac.T, self._a_diag[:, None] * jac)
             for i, j, a in self._csr4:
                 d.M[a] += added[i, j]
         return status

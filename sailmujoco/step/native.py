@@ -36,6 +36,7 @@ from numba import types
 
 from ..forces import boat as kernels
 from ..forces.boat_parameters import P_G
+from ..jit.ordered import mat_mat, mat_t_vec, mat_vec
 from .mujoco_calls import address, mj_factorM, mj_step, mj_step1, mj_step2, pointer, time_byte_offset
 from .registry import (
     A_A_DIAG,
@@ -410,7 +411,7 @@ def _forces_4dof(row, t, add_mass):
     v6[0], v6[1], v6[2] = xd, yd, 0.0
     spin = np.zeros(3)
     spin[2] = yawd
-    omega = rot.T @ spin
+    omega = mat_t_vec(rot, spin)
     v6[3], v6[4], v6[5] = omega[0] + rolld, omega[1] + 0.0, omega[2] + 0.0
     v6[6], v6[7] = qvel[4], qvel[5]
 
@@ -427,11 +428,11 @@ def _forces_4dof(row, t, add_mass):
         terms[_T_HYDRO, 3] = (0.0 * fz - cz * fy) - righting
         terms[_T_HYDRO, 4] = cz * fx - cx * fz
         terms[_T_HYDRO, 5] = cx * fy - 0.0 * fx
-        push = rot @ force_b
+        push = mat_vec(rot, force_b)
         for k in range(3):
             f[k] += push[k]
             f[3 + k] += terms[_T_HYDRO, 3 + k]
-    torque_world = rot @ f[3:6].copy()
+    torque_world = mat_vec(rot, f[3:6].copy())
     qfrc[0], qfrc[1], qfrc[2], qfrc[3] = f[0], f[1], torque_world[2], f[3]
     qfrc[4], qfrc[5] = f[6], f[7]
     if a_diag[4] != a_diag[5]:  # the rotational added-mass rate term (see _forces_4dof_python)
@@ -443,7 +444,7 @@ def _forces_4dof(row, t, add_mass):
         jac[0:3, 0:2] = rot.T[:, 0:2]
         jac[3:6, 2] = rot.T[:, 2]
         jac[3, 3] = 1.0
-        added = jac.T @ (a_diag.reshape((6, 1)) * jac)
+        added = mat_mat(jac.T, a_diag.reshape((6, 1)) * jac)
         for k in range(csr4.shape[0]):
             mass_csr[csr4[k, 2]] += added[csr4[k, 0], csr4[k, 1]]
     return status

@@ -100,7 +100,7 @@ class PositionKeeping(SailTask):
         return {"target_position": self.target}
 
     def reward_terms(self, physics, observation):
-        d = float(np.linalg.norm(observation["position"] - self.target))
+        d = math.hypot(*(observation["position"] - self.target))
         return {"distance": -min(d, FAR * self.d_target) / self.d_target}
 
     def reward_floor(self, physics):
@@ -108,7 +108,7 @@ class PositionKeeping(SailTask):
 
     def summarise(self, records):
         t = np.array([r["t"] for r in records])
-        d = np.array([np.linalg.norm(r["position"] - self.target) for r in records])
+        d = np.array([math.hypot(*(r["position"] - self.target)) for r in records])
         inside = np.nonzero(d < self.d_target)[0]
         out = {"final_distance": float(d[-1]), "min_distance": float(d.min())}
         if inside.size:

@@ -356,7 +356,7 @@ class SpeedTrial(SailTask):
         return {"desired_heading": 0.0}
 
     def reward_terms(self, physics, observation):
-        speed = float(np.linalg.norm(observation["velocity"]))
+        speed = math.hypot(*observation["velocity"])
         return {"speed": speed / self.wind_speed if self.wind_speed > 0.0 else 0.0}
 
     def reward_floor(self, physics):

@@ -349,4 +349,4 @@ class VielPhysics:
 
     def speed_over_ground(self):
         """Speed over ground, m/s."""
-        return float(np.hypot(*self.world.velocity()))
+        return math.hypot(*self.world.velocity())
