@@ -75,12 +75,14 @@ def submerged_volume(pos_z, rot, columns):
 
 @kernel
 def upright_submerged_volume(pos_z, rot, columns):
-    """:func:`submerged_volume` of a hull not upside down (R22 >= 1e-12), summed on vector lanes.
+    """:func:`submerged_volume` of a hull not upside down (R22 >= 1e-12), the force kernel's.
 
     The same cut of each column, written without branches (a dry column adds zeros) and with
-    its four sums left to the compiler's order, so that the loop over the columns runs on
-    vector registers: within a few units in the last place of the ordered sum (at most about
-    1e-14 of the volume). Other attitudes go to :func:`submerged_volume`.
+    the waterline's height taken by one multiplication by -1/R22 rather than a division per
+    column (the division cost half the loop): within a few units in the last place of
+    :func:`submerged_volume` (at most about 1e-14 of the volume). The four sums run in the
+    columns' order, as every sum in the kernels does. Other attitudes go to
+    :func:`submerged_volume`.
 
     Parameters
     ----------
@@ -100,6 +102,7 @@ def upright_submerged_volume(pos_z, rot, columns):
     if not r22 >= 1e-12:
         return submerged_volume(pos_z, rot, columns)
     r20, r21 = rot[2, 0], rot[2, 1]
+    down = -1.0 / r22
     vol = 0.0
     qx = 0.0
     qy = 0.0
@@ -108,7 +111,7 @@ def upright_submerged_volume(pos_z, rot, columns):
         x = columns[0, k]
         y = columns[1, k]
         zb = columns[3, k]
-        hi = min(columns[4, k], -(pos_z + r20 * x + r21 * y) / r22)  # wet below body z_w
+        hi = min(columns[4, k], (pos_z + r20 * x + r21 * y) * down)  # wet below body z_w
         dv = columns[2, k] * max(hi - zb, 0.0)
         vol += dv
         qx += dv * x

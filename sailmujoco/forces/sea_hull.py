@@ -56,7 +56,9 @@ _AX, _AY, _AZ = 0, ORDERS, 2 * ORDERS
 _A, _AW, _AA, _ER, _EI, _SR, _SI, _ROWS = (3 * ORDERS + i for i in range(8))
 SCRATCH_ROWS = _ROWS  # scratch rows of the sea array, plus two per grid row
 CELL_ROWS = 2 + 3 * ORDERS  # per grid column: eta, d eta / dt, the Froude-Krylov sums
-SMALL_SIZE = 6 + CELL_ROWS * 2 * GRID_STATIONS * GRID_ROWS  # scratch: the diffraction's wrench, the cells
+PART_ROWS = 15  # per grid column: its terms of the sums of :func:`_parts_wrench`
+# scratch: the diffraction's wrench, the cells, the columns' terms
+SMALL_SIZE = 6 + (CELL_ROWS + PART_ROWS) * 2 * GRID_STATIONS * GRID_ROWS
 
 
 @kernel(inline=True)
@@ -218,16 +220,17 @@ def _grid_phases(sea, decay_exp, sc, columns, rot, dx, dy, nx, ny, added, diffra
 
 
 @kernel
-def _parts_wrench(pos, rot, columns, cs, rg):
-    """Each column of the grid in the sea (one loop over the columns, on vector lanes): its
-    change of wet volume and first moment against calm water, its dynamic force
-    (:func:`_column_dynamic`) and moment about CO, and the waterplane's tallies. Returns
-    (V, Qx, Qy, Qz, world force (3), world moment (3), area, area x, area x^2, area rate,
-    area x rate).
+def _parts_wrench(pos, rot, columns, cs, rg, terms):
+    """Each column of the grid in the sea: its change of wet volume and first moment against
+    calm water, its dynamic force (:func:`_column_dynamic`) and moment about CO, and the
+    waterplane's tallies. Returns (V, Qx, Qy, Qz, world force (3), world moment (3), area,
+    area x, area x^2, area rate, area x rate).
 
     Each column's wet part is cut where its axis, at world height h + r22 z, meets the
     surface: as :func:`sailmujoco.forces.wave_pressure.wet_interval`, with r22 kept at least
-    1e-12 from zero (a column lying flat is then wet or dry whole, as there).
+    1e-12 from zero (a column lying flat is then wet or dry whole, as there). Every column's
+    terms go into ``terms`` (PART_ROWS x columns) in a loop with no sum in it, which the
+    compiler runs on vector lanes; then each sum runs over the columns in their order.
     """
     r22 = rot[2, 2]
     if abs(r22) < 1e-12:
@@ -235,17 +238,16 @@ def _parts_wrench(pos, rot, columns, cs, rg):
     inverse = 1.0 / r22
     upright = r22 > 0.0
     ax, ay, az = rot[0, 2], rot[1, 2], rot[2, 2]  # the columns' axis, world
-    vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
-    s_a = s_ax = s_axx = s_r = s_rx = 0.0
-    for k in range(columns.shape[1]):
+    n = columns.shape[1]
+    for k in range(n):
         x, y, area = columns[0, k], columns[1, k], columns[2, k]
         z_bottom, z_top = columns[3, k], columns[4, k]
         eta, rate = cs[0, k], cs[1, k]
-        s_a += area
-        s_ax += area * x
-        s_axx += area * x * x
-        s_r += area * rate
-        s_rx += area * x * rate
+        terms[10, k] = area
+        terms[11, k] = area * x
+        terms[12, k] = area * x * x
+        terms[13, k] = area * rate
+        terms[14, k] = area * x * rate
         h = pos[2] + rot[2, 0] * x + rot[2, 1] * y
         zw0, zw = -h * inverse, (eta - h) * inverse  # where the axis meets z = 0 and eta
         lo0 = z_bottom if upright else max(z_bottom, zw0)
@@ -254,21 +256,37 @@ def _parts_wrench(pos, rot, columns, cs, rg):
         hi = min(z_top, zw) if upright else z_top
         dv0 = area * max(hi0 - lo0, 0.0)
         dv = area * max(hi - lo, 0.0)
-        vol += dv - dv0
-        qx += (dv - dv0) * x
-        qy += (dv - dv0) * y
-        qz += dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
+        terms[0, k] = dv - dv0
+        terms[1, k] = (dv - dv0) * x
+        terms[2, k] = (dv - dv0) * y
+        terms[3, k] = dv * 0.5 * (lo + hi) - dv0 * 0.5 * (lo0 + hi0)
         wet = 1.0 if hi > lo else 0.0
         fx, fy, fz, gx, gy, gz = _column_dynamic(cs, k, h - eta, r22, lo, hi, rg * area * wet)
         rx = rot[0, 0] * x + rot[0, 1] * y  # the lever R (x, y, 0); R e_z along the axis
         ry = rot[1, 0] * x + rot[1, 1] * y
         rz = rot[2, 0] * x + rot[2, 1] * y
-        fwx += fx
-        fwy += fy
-        fwz += fz
-        mwx += ry * fz - rz * fy + ay * gz - az * gy
-        mwy += rz * fx - rx * fz + az * gx - ax * gz
-        mwz += rx * fy - ry * fx + ax * gy - ay * gx
+        terms[4, k], terms[5, k], terms[6, k] = fx, fy, fz
+        terms[7, k] = ry * fz - rz * fy + ay * gz - az * gy
+        terms[8, k] = rz * fx - rx * fz + az * gx - ax * gz
+        terms[9, k] = rx * fy - ry * fx + ax * gy - ay * gx
+    vol = qx = qy = qz = fwx = fwy = fwz = mwx = mwy = mwz = 0.0
+    s_a = s_ax = s_axx = s_r = s_rx = 0.0
+    for k in range(n):
+        vol += terms[0, k]
+        qx += terms[1, k]
+        qy += terms[2, k]
+        qz += terms[3, k]
+        fwx += terms[4, k]
+        fwy += terms[5, k]
+        fwz += terms[6, k]
+        mwx += terms[7, k]
+        mwy += terms[8, k]
+        mwz += terms[9, k]
+        s_a += terms[10, k]
+        s_ax += terms[11, k]
+        s_axx += terms[12, k]
+        s_r += terms[13, k]
+        s_rx += terms[14, k]
     return (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx)
 
 
@@ -320,8 +338,10 @@ def hull_sea_wrench(pos, rot, sea, decay_exp, sc, columns, dx, dy, nx, ny, flota
     parts = columns.shape[1]
     cs = small[6:6 + CELL_ROWS * parts].reshape((CELL_ROWS, parts))
     _grid_phases(sea, decay_exp, sc, columns, rot, dx, dy, nx, ny, added, diffraction, cs, dyn_b)
+    start = 6 + CELL_ROWS * parts
+    terms = small[start:start + PART_ROWS * parts].reshape((PART_ROWS, parts))
     (vol, qx, qy, qz, fwx, fwy, fwz, mwx, mwy, mwz, s_a, s_ax, s_axx, s_r, s_rx) = _parts_wrench(
-        pos, rot, columns, cs, rho * g)
+        pos, rot, columns, cs, rho * g, terms)
     buoyancy_wrench(vol, qx, qy, qz, rot, rho, g, out)
     for row in range(3):  # world -> body: R^T
         out[row] += rot[0, row] * fwx + rot[1, row] * fwy + rot[2, row] * fwz + dyn_b[row]

@@ -203,8 +203,7 @@ def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
         eta += sea[6, j] * sea[11, j]
     height = rot[2, 2] * span  # the span's world height
     z_top = min(pos[2] + rot[2, 0] * x + rot[2, 2] * (z + 0.5 * span) - eta, 0.0)
-    ue, un, uz = 0.0, 0.0, 0.0
-    for j in range(m):
+    for j in range(m):  # each component's flow, into rows 11 (horizontal) and 12 (vertical)
         k = sea[2, j]
         q = k * height
         top = exp(k * z_top)
@@ -213,9 +212,13 @@ def foil_water_velocity(pos, rot, x, z, span, sea, current_b, out):
         series = 1.0 - q * (_M1 - q * (_M2 - q * (_M3 - q * (_M4 - q * (_M5 - q * (_M6 - q * _M7))))))
         mean = top * series if q < 0.05 else (top - exp(k * (z_top - height))) / q
         speed = sea[6, j] * sea[1, j] * mean
-        horizontal = speed * sea[11, j]
-        ue += horizontal * sea[3, j]
-        un += horizontal * sea[4, j]
-        uz += speed * sea[12, j]
+        sea[11, j] = speed * sea[11, j]
+        sea[12, j] = speed * sea[12, j]
+    # the sums apart from the loop above, which then has no sum in it and runs on vector lanes
+    ue, un, uz = 0.0, 0.0, 0.0
+    for j in range(m):
+        ue += sea[11, j] * sea[3, j]
+        un += sea[11, j] * sea[4, j]
+        uz += sea[12, j]
     for i in range(3):
         out[i] = current_b[i] + rot[0, i] * ue + rot[1, i] * un + rot[2, i] * uz
