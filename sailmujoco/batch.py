@@ -157,7 +157,8 @@ class BatchEnvironment:
             raise ValueError("a batch needs at least one environment")
         steps = {env._n_sub_steps for env in self.envs}
         if len(steps) != 1:
-            raise ValueError("every environment of a batch needs the same control_timestep")
+            raise ValueError("every environment of a batch needs the same number of physics steps per "
+                             "control step: the same control_timestep and timestep")
         self._n_sub_steps = steps.pop()
         physics = [env.physics for env in self.envs]
         batched = all(isinstance(p, BoatPhysics) for p in physics)

@@ -60,17 +60,18 @@ boat_options         a mapping               SI   keyword arguments of the boat'
 waves                None, a ``WaveConfig``  SI   the sea (:mod:`sailmujoco.forces.waves`);
                      or a mapping of its          None or ``hs = 0``: calm water. A mapping
                      fields                       may give ``direction_from_deg`` (deg)
+timestep             None, a time > 0        s    the physics step; None: the world's own
 ==================== ======================= ==== ===========================================
 
-The first choice listed is the default: the boat as built. The other forms are the papers'
-forms or the forms a model replaced, kept so that their effect can be measured (the force
-modules' docstrings give the reasons and sources). The MuJoCo world reads every option but
-``paper_model``. Wille's 4-DOF paper world (:mod:`sailmujoco.reference.wille`) reads
-``paper_model``, the on/off switches of the five force models and ``sail_tangential``, and
-keeps the papers' forms of the rest; Viel's paper world reads none. All are checked in every
-world. ``world`` ("mujoco", "paper") is :func:`sailmujoco.suite.load`'s third argument. The
-paper worlds are calm water, as in the papers: they ignore ``waves``; in the MuJoCo world the
-6-DOF boat feels the sea (docs/physics.md, "The boat in the sea"), and ``dofs=4`` refuses one.
+The first choice listed is the default: the boat as built. The other forms are the papers' forms or the
+forms a model replaced, kept so that their effect can be measured (the force modules' docstrings give
+the reasons and sources). The MuJoCo world reads every option but ``paper_model``. Wille's 4-DOF paper
+world (:mod:`sailmujoco.reference.wille`) reads ``paper_model``, the on/off switches of the five force
+models and ``sail_tangential``, and keeps the papers' forms of the rest; Viel's paper world reads none
+of them. Every world reads ``timestep`` (:mod:`sailmujoco.step.timing`). All are checked in every world.
+``world`` ("mujoco", "paper") is :func:`sailmujoco.suite.load`'s third argument. The paper worlds are
+calm water, as in the papers: they ignore ``waves``; in the MuJoCo world the 6-DOF boat feels the sea
+(docs/physics.md, "The boat in the sea"), and ``dofs=4`` refuses one.
 """
 
 from __future__ import annotations
@@ -87,6 +88,7 @@ import numpy as np
 
 from .constants import GRAVITY
 from .names import check_known
+from .step.timing import check_timestep
 
 World = Literal["mujoco", "paper"]
 SailMode = Literal["actuated", "sheeted"]
@@ -177,9 +179,8 @@ class WaveConfig:
             if self.spectrum == "regular":
                 raise ValueError("WaveConfig.spreading must be None for spectrum 'regular' "
                                  f"(a regular wave is long-crested), got {self.spreading!r}")
-        for name in ("n_components", "seed"):
+        for name, low in (("n_components", 1), ("seed", 0)):
             value = getattr(self, name)
-            low = 1 if name == "n_components" else 0
             if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < low:
                 raise ValueError(f"WaveConfig.{name} must be an integer >= {low}, got {value!r}")
 
@@ -206,11 +207,7 @@ class WaveConfig:
             Fetch, m, > 0, for ``"fetch_limited"``; None for ``"fully_developed"``.
         direction_from : float
             Compass bearing the wind and the waves come from, rad.
-        spreading : float or None
-            As :class:`WaveConfig`.
-        n_components : int
-            As :class:`WaveConfig`.
-        seed : int
+        spreading, n_components, seed
             As :class:`WaveConfig`.
         """
         check_known([kind], SEA_KINDS, "WaveConfig.from_wind", kind="kind")
@@ -383,9 +380,7 @@ class PhysicsOptions(ForceSwitches):
     ----------
     hydrostatics, sail, keel, rudder, damping, added_mass, sail_tangential
         As :class:`ForceSwitches`.
-    added_mass_coupling, vertical_damping, restoring_axes, resistance, foils
-        As :class:`ForceSwitches`.
-    keel_downwash, windage : bool
+    added_mass_coupling, vertical_damping, restoring_axes, resistance, foils, keel_downwash, windage
         As :class:`ForceSwitches`.
     wave_hull, wave_foil_flow, wave_diffraction, wave_damping, wave_pressure_decay, wave_reflection
         As :class:`ForceSwitches`.
@@ -399,6 +394,8 @@ class PhysicsOptions(ForceSwitches):
         Keyword arguments of the boat's parameter factory (e.g. ``{"l_phi": 0.1}``).
     waves : WaveConfig, mapping or None
         The sea (:func:`wave_config`); None: calm water. Ignored by the paper worlds.
+    timestep : float or None
+        The integration step, s, > 0 (:mod:`sailmujoco.step.timing`); None: the world's own.
     """
 
     sail_mode: SailMode = "actuated"
@@ -406,9 +403,11 @@ class PhysicsOptions(ForceSwitches):
     paper_model: PaperModel = "paper"
     boat_options: Mapping = field(default_factory=dict, hash=False)
     waves: WaveConfig | None = None
+    timestep: float | None = None
 
     def __post_init__(self):
         _check_fields(self)
+        object.__setattr__(self, "timestep", check_timestep(self.timestep))
         if self.boat_options is None:
             object.__setattr__(self, "boat_options", {})
         if not isinstance(self.boat_options, Mapping) or not all(

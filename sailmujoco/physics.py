@@ -10,20 +10,18 @@ integrator) is::
     M <- M + J^T M_A J            added mass of the hull, then M is re-factorised
     actuators, acceleration                            (MuJoCo)
 
-so MuJoCo solves (M_RB + M_A) nu_dot = tau exactly inside the step: no force is built from
-an earlier acceleration, and a heave added mass six times the hull's mass is as stable as
-none. With RK4 the middle three lines run in MuJoCo's control callback (``mjcb_control``,
-installed only while :meth:`BoatPhysics.step` runs), because ``mj_RungeKutta`` evaluates its
-stages inside ``mj_step``. With a first-order integrator (Euler, implicit, implicit-fast, set
-in ``model.opt.integrator``) a sub-step is ``mj_step1``, the same three lines, ``mj_step2``.
-Why RK4: the semi-implicit first-order integrators treat the velocity-dependent forces
-(Coriolis/centripetal terms of a CG far below CO, the added-mass Kirchhoff terms) explicitly
-and the configuration-dependent mass matrix at the start of the step, so an undamped free
-oscillation gains or loses energy in proportion to the step (-16 % / +17 % in 60 s for the
+so MuJoCo solves (M_RB + M_A) nu_dot = tau exactly inside the step: no force is built from an earlier
+acceleration, and a heave added mass six times the hull's mass is as stable as none. With RK4 the middle
+three lines run in MuJoCo's control callback (``mjcb_control``, installed only while
+:meth:`BoatPhysics.step` runs), because ``mj_RungeKutta`` evaluates its stages inside ``mj_step``. With
+a first-order integrator (Euler, implicit, implicit-fast, set in ``model.opt.integrator``) a sub-step is
+``mj_step1``, the same three lines, ``mj_step2``. Why RK4: the semi-implicit first-order integrators
+treat the velocity-dependent forces (Coriolis/centripetal terms of a CG far below CO, the added-mass
+Kirchhoff terms) explicitly and the configuration-dependent mass matrix at the start of the step, so an
+undamped free oscillation gains or loses energy in proportion to the step (-16 % / +17 % in 60 s for the
 Saoud robot heeled 10 deg at 5 ms); RK4 at the same step changes it by under 1e-4
-(tests/test_energy.py).
-``step(n)`` runs n such sub-steps at the model's fixed timestep, so a trajectory does not
-depend on how many sub-steps a control step has.
+(tests/test_energy.py). ``step(n)`` runs n such sub-steps at the model's fixed timestep (the
+``timestep`` option), so a trajectory does not depend on how many sub-steps a control step has.
 """
 
 from __future__ import annotations
@@ -50,7 +48,7 @@ from .gl_platform import import_dm_control_mujoco
 from .jit.kernel import entry_point
 from .measurement.accessors import BoatAccessors
 from .options import ForceSwitches, WaveConfig, check_sea  # re-exported: physics.ForceSwitches
-from .step import native, registry
+from .step import native, registry, timing
 from .step.four_dof import FourDofStage, csr_address
 
 _dm = import_dm_control_mujoco()  # dm_control with no GL library loaded until a render asks
@@ -97,7 +95,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
     def load(cls, boat: str = "wille_yacht", *, params: BoatParams | None = None,
              sail_mode: str = "actuated", wind: WindConfig | None = None,
              forces: ForceSwitches | None = None, dofs: int = 6,
-             waves: WaveConfig | None = None, **boat_options) -> BoatPhysics:
+             waves: WaveConfig | None = None, timestep: float | None = None, **boat_options) -> BoatPhysics:
         """Compile ``boat`` (or ``params``) and attach wind and force models.
 
         Parameters
@@ -118,6 +116,8 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
             :func:`sailmujoco.boat.mjcf.boat_spec`.
         waves : WaveConfig, optional
             The sea (docs/physics.md, "The boat in the sea"), 6 DOF only; None: calm water.
+        timestep : float, optional
+            The physics step, s, > 0 (:mod:`sailmujoco.step.timing`); None: the boat's, 0.005 s.
         **boat_options
             Keyword arguments of the boat's parameter factory (e.g. ``l_phi`` for saoud_robot).
 
@@ -131,7 +131,7 @@ class BoatPhysics(BoatAccessors, FourDofStage, engine.Physics):
         elif boat_options:
             raise ValueError("give either params or boat options, not both")
         check_sea(waves, dofs)
-        model = compile_model(params, sail_mode, dofs)
+        model = compile_model(params, sail_mode, dofs, timing.check_timestep(timestep))
         physics = cls.from_model(core.MjModel(model))
         physics._setup(params, sail_mode, wind or WindConfig(), forces or ForceSwitches(), dofs, waves)
         physics.reset()

@@ -35,6 +35,7 @@ from .boat.params import BoatParams
 from .names import check_known
 from .options import FORCE_FIELDS, PHYSICS_FIELDS, ForceSwitches, PhysicsOptions, World, choices
 from .physics import BoatPhysics
+from .step.timing import sub_steps
 from .tasks.base import check_number
 from .tasks.environment import SailEnvironment
 from .tasks.registry import TASKS
@@ -106,7 +107,8 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     time_limit : float, optional
         Episode length in seconds (default: the task's, e.g. 200 s for course_hold).
     control_timestep : float
-        Seconds per ``env.step``; the physics runs at its own fixed step underneath.
+        Seconds per ``env.step``; the physics runs at its own fixed step underneath (the
+        ``timestep`` physics option, which must divide it into whole sub-steps).
     physics : PhysicsOptions or dict, optional
         The physics options (:class:`sailmujoco.options.PhysicsOptions`, whose docstring
         tables them: force models and their forms, ``sail_mode``, ``dofs``, ``paper_model``,
@@ -133,6 +135,9 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     if time_limit is not None:
         time_limit = check_number("time_limit", time_limit, 0.0, low_open=True, unit="s")
     settings, own_options, params = _split(task, physics, options)
+    step = {} if settings.timestep is None else {"max_step": settings.timestep}  # a paper world's
+    if step:
+        sub_steps(settings.timestep, control_timestep)  # one line unless it divides the control step
     params = _boat_params(boat, params, settings.boat_options)
     own_options["sensors"] = sensor_options(own_options.get("sensors"), base=params.sensors)
     own_options["actuators"] = actuator_options(own_options.get("actuators"), base=params.actuators)
@@ -145,16 +150,17 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     switches = settings.forces
     if world == "mujoco":
         world_physics = BoatPhysics.load(params=params, sail_mode=settings.sail_mode, wind=wind,
-                                         forces=switches, dofs=settings.dofs, waves=settings.waves)
+                                         forces=switches, dofs=settings.dofs, waves=settings.waves,
+                                         timestep=settings.timestep)
     elif task == "position_keeping":
         from .reference.viel import VielWorld
 
-        world_physics = VielPhysics.for_control(VielWorld(wind=wind), control_timestep)
+        world_physics = VielPhysics.for_control(VielWorld(wind=wind, **step), control_timestep)
     else:
         from .reference.wille import Wille4DOF
 
         world_physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
-                                               model=settings.paper_model))
+                                               model=settings.paper_model, **step))
     return SailEnvironment(world_physics, the_task, time_limit=time_limit or the_task.duration,
                            control_timestep=control_timestep, flat_observation=flat_observation,
                            legacy_step=False)

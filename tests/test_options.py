@@ -22,7 +22,7 @@ DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics=
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
                 keel_downwash=True, windage=True, wave_hull=True, wave_foil_flow=True, wave_diffraction=True,
                 wave_damping="relative", wave_pressure_decay=True, wave_reflection=True, boat_options={},
-                waves=None)
+                waves=None, timestep=None)
 
 
 # ---- one definition of each set of choices --------------------------------------------------

@@ -47,7 +47,7 @@ __all__ = ["REFERENCE_WIND", "SAIL_MODES", "SERVO_ERROR", "SERVO_FREQUENCY", "TI
            "sheet_geometry", "sheet_length", "write_default_xml", "xml_root"]
 
 SAIL_MODES = choices(SailMode)
-TIMESTEP = 0.005  # s, physics step of both boats
+TIMESTEP = 0.005  # s, physics step of every boat unless the ``timestep`` option gives another
 SERVO_FREQUENCY = 30.0  # rad/s, bandwidth of the rudder and sail servos (>> 1/T)
 SERVO_ERROR = math.radians(1.0)  # rad, static error of the sail servo at the reference load
 REFERENCE_WIND = 15.0  # m/s, apparent wind of the reference sail load
@@ -59,7 +59,8 @@ def _sail_reference_moment(p: BoatParams) -> float:
     return 0.5 * p.rho_air * REFERENCE_WIND**2 * s.area * 1.25 * s.ce_aft
 
 
-def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjSpec:
+def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6,
+              timestep: float | None = None) -> mujoco.MjSpec:
     """The boat as an MjSpec (no scene).
 
     ``dofs=6``: the hull is free. ``dofs=4``: heave and pitch held, as in Wille's and Saoud's
@@ -74,6 +75,8 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
         See the module docstring.
     dofs : {6, 4}
         The hull's degrees of freedom.
+    timestep : float, optional
+        The physics step, s (the ``timestep`` option); None: :data:`TIMESTEP`.
 
     Returns
     -------
@@ -86,7 +89,7 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
         raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
     if dofs not in choices(Dofs):
         raise ValueError(f"dofs must be 6 (free hull) or 4 (heave and pitch held), got {dofs!r}")
-    spec = _empty_spec(p)
+    spec = _empty_spec(p, timestep)
     visual = _visual_default(spec)
     hull = _add_hull(spec, p, dofs, visual)
     _add_keel(hull, p, visual)
@@ -104,14 +107,15 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujo
     return spec
 
 
-def _empty_spec(p: BoatParams) -> mujoco.MjSpec:
-    """The spec's compiler settings and physics options, nothing in its world yet."""
+def _empty_spec(p: BoatParams, timestep: float | None = None) -> mujoco.MjSpec:
+    """The spec's compiler settings and physics options (the step ``timestep``, s, or
+    :data:`TIMESTEP`), nothing in its world yet."""
     spec = mujoco.MjSpec()
     spec.modelname = p.name
     spec.compiler.degree = False
     spec.compiler.inertiafromgeom = mujoco.mjtInertiaFromGeom.mjINERTIAFROMGEOM_FALSE
     spec.compiler.autolimits = True
-    spec.option.timestep = TIMESTEP
+    spec.option.timestep = TIMESTEP if timestep is None else timestep
     # RK4: an undamped free oscillation keeps its energy (first-order integrators drift by up
     # to 17 % in 60 s at this step); the forces run at each stage, see physics.py
     spec.option.integrator = mujoco.mjtIntegrator.mjINT_RK4
@@ -305,7 +309,8 @@ def _add_sheet(spec: mujoco.MjSpec, p: BoatParams) -> list[float]:
     return [0.0, length_max]
 
 
-def boat_xml(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> str:
+def boat_xml(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6,
+             timestep: float | None = None) -> str:
     """MJCF text of the boat (what ``xml/<boat>/<boat>.xml`` holds for default parameters).
 
     Parameters
@@ -316,8 +321,10 @@ def boat_xml(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> str:
         See the module docstring.
     dofs : {6, 4}
         The hull's degrees of freedom.
+    timestep : float, optional
+        The physics step, s; None: :data:`TIMESTEP`.
     """
-    spec = boat_spec(p, sail_mode, dofs)
+    spec = boat_spec(p, sail_mode, dofs, timestep)
     spec.compile()  # validates
     return spec.to_xml()
 
@@ -376,7 +383,8 @@ def scene_for(p: BoatParams) -> str:
             .replace(f'<mujoco model="{nearest} scene">', f'<mujoco model="{p.name} scene">'))
 
 
-def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> mujoco.MjModel:
+def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6,
+                  timestep: float | None = None) -> mujoco.MjModel:
     """Compile scene + boat for parameters ``p`` (a raw ``mujoco.MjModel``).
 
     Parameters
@@ -387,9 +395,11 @@ def compile_model(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6) -> 
         See the module docstring.
     dofs : {6, 4}
         The hull's degrees of freedom.
+    timestep : float, optional
+        The physics step, s (the ``timestep`` option); None: :data:`TIMESTEP`.
     """
     return mujoco.MjModel.from_xml_string(
-        scene_for(p), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs).encode()})
+        scene_for(p), assets={f"{p.name}.xml": boat_xml(p, sail_mode, dofs, timestep).encode()})
 
 
 def write_default_xml(root) -> list:

@@ -62,7 +62,7 @@ def epilog() -> str:
     return (f"keys of a sweep file (TOML):\n{keys}\n\n"
             f"option keys of [options], [grid] and [zip] are \"<namespace>.<name>\":\n{namespaces}\n"
             f"{env}\n"
-            "    (the others true or false: a force model on or off; control_timestep in s)\n"
+            "    (the others true or false: a force model on or off; control_timestep, timestep in s)\n"
             "  task., boat. and controller. options: the keywords of the task, boat factory and\n"
             "  controller factory (a misspelt one is refused, naming the accepted ones)\n\n"
             "every run's options and the metrics are checked before any run starts (a refused one:\n"

@@ -90,10 +90,12 @@ class VielWorld:
         Height at which the wind is sampled [m] (the model has no height; 10 m is the
         reference height of ``WindConfig.speed``).
     integrator : str
-        ``"rk4"`` (classical Runge-Kutta, steps of at most ``RK4_MAX_STEP``) or ``"rk45"``
+        ``"rk4"`` (classical Runge-Kutta, steps of at most ``max_step``) or ``"rk45"``
         (:func:`scipy.integrate.solve_ivp`, adaptive).
     rtol, atol : float
         Tolerances of the RK45 integration.
+    max_step : float
+        The longest RK4 step (and RK45's), s, > 0: the ``timestep`` option of the suite.
 
     The action of :meth:`step` is ours, ``[rudder, sail]`` [rad], positive when the trailing
     edge swings to port, saturated at ``params.rudder_max`` and ``params.sail_max`` and held
@@ -102,7 +104,7 @@ class VielWorld:
 
     def __init__(self, params: VielParams | None = None, wind: WindConfig | WindField | None = None,
                  wind_height: float = 10.0, integrator: str = "rk4", rtol: float = 1e-7,
-                 atol: float = 1e-9):
+                 atol: float = 1e-9, max_step: float = RK4_MAX_STEP):
         self.params = VielParams() if params is None else params
         if not isinstance(self.params, VielParams):
             raise TypeError(f"params must be a VielParams, got {type(self.params).__name__}")
@@ -122,6 +124,9 @@ class VielWorld:
             raise ValueError(f"integrator must be one of {INTEGRATORS}, got {integrator!r}")
         self.integrator = integrator
         self.rtol, self.atol = float(rtol), float(atol)
+        if not (math.isfinite(max_step) and max_step > 0.0):
+            raise ValueError(f"max_step must be a time > 0 in s, got {max_step!r}")
+        self.max_step = float(max_step)
         self._state = np.zeros(6)
         self._time = 0.0
         self._action = np.zeros(2)
@@ -239,7 +244,7 @@ class VielWorld:
         if self.integrator == "rk4" and type(wind).velocity is WindField.velocity:  # one compiled call
             wind.ensure(self._time + dt + 1.0)
             new = self._state.copy()
-            status = advance(self._time, new, float(dt), steps_for(dt, RK4_MAX_STEP), P, delta_r, delta_s, z,
+            status = advance(self._time, new, float(dt), steps_for(dt, self.max_step), P, delta_r, delta_s, z,
                              float(wind.config.speed), float(wind.config.direction_from), wind.oscillation,
                              wind.gust_frequency, wind.gust_phase, wind.gust_amplitude, wind.log_z, WANDER_DT,
                              wind.wander, self._work)
@@ -257,7 +262,7 @@ class VielWorld:
                     raise ValueError(DOMAIN_ERROR)
                 return out
 
-            new, message = integrate(rhs, self._time, self._state, dt, self.integrator, RK4_MAX_STEP,
+            new, message = integrate(rhs, self._time, self._state, dt, self.integrator, self.max_step,
                                      self.rtol, self.atol)
         if message:
             raise FloatingPointError(

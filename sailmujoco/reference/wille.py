@@ -1,7 +1,7 @@
 """Wille's 4-DOF sailboat model, the "paper world" of Wille, Hassani & Sprenger (2016a).
 
 Equations 1-43 in the paper's own frames (NED world, FRD body, SNAME), integrated with
-classical RK4 in steps of at most ``RK4_MAX_STEP`` (default; the Table 1 metrics agree with
+classical RK4 in steps of at most ``max_step`` (default ``RK4_MAX_STEP``; the Table 1 metrics agree with
 scipy's adaptive RK45, ``integrator="rk45"``, to 1e-4 deg at half its time). Every force
 term calls the same force functions as the 6-DOF MuJoCo boat (:mod:`sailmujoco.forces`):
 one foil model, one wind model, one damping model.
@@ -91,11 +91,14 @@ class Wille4DOF:
         ``rtol``/``atol``.
     rtol, atol : float
         Tolerances of the RK45 integration.
+    max_step : float
+        The longest RK4 step (and RK45's), s, > 0: the ``timestep`` option of the suite.
     """
 
     def __init__(self, boat: str = "wille_yacht", *, params: BoatParams | None = None,
                  wind: WindConfig | None = None, switches=None, model: str = "paper",
-                 timestep: float = 0.005, integrator: str = "rk4", rtol: float = 1e-6, atol: float = 1e-8):
+                 timestep: float = 0.005, integrator: str = "rk4", rtol: float = 1e-6, atol: float = 1e-8,
+                 max_step: float = RK4_MAX_STEP):
         if model not in choices(PaperModel):
             raise ValueError(f"model must be one of {choices(PaperModel)}, got {model!r}")
         if integrator not in INTEGRATORS:
@@ -108,6 +111,9 @@ class Wille4DOF:
         self.model = model
         self._dt = timestep
         self._rtol, self._atol = rtol, atol
+        if not (math.isfinite(max_step) and max_step > 0.0):
+            raise ValueError(f"max_step must be a time > 0 in s, got {max_step!r}")
+        self.max_step = float(max_step)
         p = self.params
         self._table = naca0015()
         self._strips = strip_quadrature(p.hull)
@@ -211,14 +217,14 @@ class Wille4DOF:
         self.wind.ensure(t1 + 1.0)
         if self.integrator == "rk4":  # one compiled call
             new = np.array(self.state, dtype=float)
-            status = wille_model.advance(t0, new, t1 - t0, steps_for(t1 - t0, RK4_MAX_STEP), *self._model(),
+            status = wille_model.advance(t0, new, t1 - t0, steps_for(t1 - t0, self.max_step), *self._model(),
                                          self._mass_matrix, self._mass_inverse, self._terms, self._work,
                                          self._stages)
             if status == STATUS_RAN_AWAY:  # as integrate(): the state it ran away from
                 new = self.state
             message = MESSAGES[status]
         else:
-            new, message = integrate(self._rhs, t0, self.state, t1 - t0, self.integrator, RK4_MAX_STEP,
+            new, message = integrate(self._rhs, t0, self.state, t1 - t0, self.integrator, self.max_step,
                                      self._rtol, self._atol)
         if message:
             self.stop_reason = f"integration failed: {message}"
