@@ -13,7 +13,9 @@ over a step (held forces would leave a first-order error, a ratio of 2). The 6-D
 attitude is a quaternion, which MuJoCo's RK4 advances by composing the rotation of the
 weighted mean of the stages' angular velocities; that drops the commutator terms of rotations
 about different axes, so its error falls only as h^2 (a ratio of 4), as a bare MuJoCo free
-body spinning about no principal axis shows as well.
+body spinning about no principal axis shows as well. And the servos' lag (MuJoCo's exact
+first-order filter) is first order under RK4 while a command is being followed (a ratio of 2):
+the boat under control steps first order in h whatever its joints.
 """
 
 from __future__ import annotations
@@ -180,3 +182,38 @@ def test_the_free_hull_error_falls_fourfold_per_halving_as_mujocos_free_body():
         return np.concatenate([d.qpos, d.qvel])
 
     assert all(3.9 < r < 4.1 for r in _ratios(spinning, reference=0.000125))
+
+
+def _servo(h: float, dyntype: str) -> np.ndarray:
+    """A bare MuJoCo hinge turned by a position servo (30 rad/s) behind a 0.2 s lag of ``dyntype``."""
+    xml = (f'<mujoco><option integrator="RK4" gravity="0 0 0" timestep="{h}"/><worldbody><body>'
+           '<joint name="j" type="hinge" axis="0 0 1" armature="0.1"/><geom type="box" size="0.1 0.2 0.3" '
+           f'mass="1"/></body></worldbody><actuator><general joint="j" dyntype="{dyntype}" dynprm="0.2" '
+           'gaintype="fixed" gainprm="30" biastype="affine" biasprm="0 -30 -3"/></actuator></mujoco>')
+    m = mujoco.MjModel.from_xml_string(xml)
+    d = mujoco.MjData(m)
+    d.ctrl[0] = 0.5
+    for _ in range(int(round(2.0 / h))):
+        mujoco.mj_step(m, d)
+    return np.concatenate([d.qpos, d.qvel, d.act])
+
+
+def test_the_servos_exact_lag_makes_a_commanded_step_first_order():
+    # MuJoCo's RK4 applies the lag's exact update (dyntype filterexact, what a position actuator
+    # with timeconst is) to the weighted mean of its stages' rates: an O(h^2) error per step
+    # while the command and the activation differ, so the error falls only 2-fold per halving
+    # (the plain filter, the same ODE, keeps RK4's 16)
+    assert all(1.8 < r < 2.6 for r in _ratios(lambda h: _servo(h, "filterexact"), reference=0.000125))
+    assert all(14.0 < r < 22.0 for r in _ratios(lambda h: _servo(h, "filter"), reference=0.000125))
+
+    def commanded(h):  # the hinged boat with no force model, its rudder and sail told to move
+        physics = BoatPhysics.load("saoud_robot", wind=CALM, dofs=4, timestep=h, forces=ForceSwitches(
+            hydrostatics="paper", sail=False, keel=False, rudder=False, damping=False, windage=False))
+        assert {int(t) for t in physics.model.actuator_dyntype} == {int(mujoco.mjtDyn.mjDYN_FILTEREXACT)}
+        physics.set_control(np.array([0.2, 0.5]))
+        physics.step(int(round(2.0 / h)))
+        d = physics.data.ptr
+        return np.concatenate([d.qpos, d.qvel, d.act])
+
+    assert all(1.8 < r < 2.6 for r in _ratios(commanded, (0.01, 0.005, 0.0025), 0.0003125))
+
