@@ -2,7 +2,7 @@
 
 Run: python benchmarks/timestep_convergence.py [--seeds 4] [--steps-ms 2.5,5,10,20,25,50,100]
      [--boats wille_yacht,saoud_robot,viel_boat] [--worlds mujoco,paper] [--cases WORDS]
-     [--workers 2] [--full] [--csv FILE]
+     [--workers 2] [--full] [--plain-filter] [--csv FILE]
 
 Each case is a task a study reports, with the study's controller, figures of merit and control
 step (the ``CASES`` table below): per boat, the 6-DOF boat in calm water, the same with heave and
@@ -31,6 +31,12 @@ Episodes are shorter than the tasks' own where the figure allows, to keep the de
 Table 1's; the task runs 300 s), course keeping 100 s (200 s), position keeping 100 s (200 s;
 the boat enters the target area after 30-50 s), the speed trial and heading hold their own 60 s
 and 30 s. ``--full`` runs the tasks' lengths.
+
+``--plain-filter`` integrates the servos' first-order lag as MuJoCo's plain filter (``dyntype
+filter``) instead of the exact filter the boats are built with (``filterexact``, what a position
+actuator's ``timeconst`` builds): the same ODE, but MuJoCo's RK4 keeps its order with the plain
+filter and loses it with the exact one (first order while a command is followed,
+tests/test_timestep.py). It shows how large a step the boats would allow if built so.
 """
 
 from __future__ import annotations
@@ -42,6 +48,7 @@ import sys
 from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass, field
 
+import mujoco
 import numpy as np
 
 from sailmujoco import suite, sweep
@@ -165,8 +172,9 @@ def steps_for(case: Case, steps_ms) -> list[float]:
 
 
 def run(job: tuple) -> tuple:
-    """One episode: (case index, step, seed) -> (its key, {metric: value} or None, why it stopped)."""
-    index, step, seed, full = job
+    """One episode: (case index, step, seed, full length, plain filter) -> (the job, {metric: value}
+    or None, why it stopped)."""
+    index, step, seed, full, plain = job
     case = CASES[index]
     options = dict(case.options)
     if case.sea:
@@ -175,6 +183,8 @@ def run(job: tuple) -> tuple:
         env = suite.load(case.boat, case.task, case.world, seed=seed, timestep=step,
                          control_timestep=case.control_timestep,
                          time_limit=case.full_duration if full else case.duration, **options)
+        if plain and case.world == "mujoco":  # the servos' lag as MuJoCo's plain filter, RK4's order
+            env.physics.model.ptr.actuator_dyntype[:] = int(mujoco.mjtDyn.mjDYN_FILTER)
         controller = sweep.make_controller(case.controller, env, **case.controller_options)
         if hasattr(controller, "reset"):
             controller.reset(seed)
@@ -288,6 +298,8 @@ def main(argv=None) -> int:
                         "comma-separated words (e.g. '4 DOF,course_hold')")
     parser.add_argument("--workers", type=int, default=2, help="processes (1: in this one)")
     parser.add_argument("--full", action="store_true", help="the tasks' own episode lengths")
+    parser.add_argument("--plain-filter", action="store_true",
+                        help="the servos' lag as MuJoCo's plain filter (dyntype filter), not the exact one")
     parser.add_argument("--csv", help="write one row per case, step and figure here")
     args = parser.parse_args(argv)
     try:
@@ -305,7 +317,7 @@ def main(argv=None) -> int:
               if c.boat in boats and c.world in worlds
               and (not args.cases or any(word in c.name for word in args.cases.split(",")))]
     chosen = [(i, c, s) for i, c, s in chosen if len(s) >= 2]
-    jobs = [(i, step, seed, args.full) for i, _, steps in chosen for step in steps
+    jobs = [(i, step, seed, args.full, args.plain_filter) for i, _, steps in chosen for step in steps
             for seed in range(args.seeds)]
     print(f"{len(chosen)} cases, {len(jobs)} episodes on {args.workers} worker(s)", flush=True)
     if args.workers > 1:
@@ -313,7 +325,7 @@ def main(argv=None) -> int:
             done = list(pool.map(run, jobs, chunksize=1))
     else:
         done = [run(job) for job in jobs]
-    results = {(i, step, seed): (metrics, why) for (i, step, seed, _), metrics, why in done}
+    results = {(i, step, seed): (metrics, why) for (i, step, seed, _, _), metrics, why in done}
     all_rows, per_case = [], []
     for i, case, steps in chosen:
         mine = {(step, seed): results[i, step, seed] for step in steps for seed in range(args.seeds)}
