@@ -9,8 +9,12 @@ on a CPU machine), for one state of wille_yacht on a beam reach:
   display model, shadows and reflections off) with only the wind arrow added;
 * ``+ force arrows``: with the sail, keel and rudder force arrows;
 * ``+ force arrows + panel``: with the side panel too (map, numbers, colour key: what ``record`` draws);
-* ``record()``: the whole pipeline (simulation, drawing, H.264 encoding by ffmpeg), in video
-  frames per wall-clock second.
+* ``... in a child process``: the same frame drawn by :class:`sailmujoco.video.child.ChildRenderer`,
+  as ``record()`` and the Gymnasium environments draw it (the snapshot sent to the child, the
+  pixels sent back); its ratio to the line above is the cost of keeping GL out of the caller's
+  process. Starting the child (a fresh interpreter, the GL platform, the scene) is timed apart;
+* ``record()``: the whole pipeline (simulation, drawing in the child, H.264 encoding by ffmpeg),
+  in video frames per wall-clock second.
 
 Rendering on llvmpipe uses every core; on a shared machine the load average is printed with
 the result.
@@ -76,10 +80,14 @@ def main() -> None:
                  for name, forces, overlay in (("scene + wind arrow", False, False),
                                                ("+ force arrows", True, False),
                                                ("+ force arrows + panel", True, True))}
-    rates = best_rates({name: (lambda r=r: r.render(snap)) for name, r in renderers.items()},
-                       args.frames, args.repeats)
-    platform = gl_renderer_name()  # the last renderer's context is current
-    for renderer in renderers.values():
+    start = time.perf_counter()
+    child = video.ChildRenderer().open(env.physics.params, args.width, args.height, args.camera)
+    child_start = time.perf_counter() - start
+    calls = {name: (lambda r=r: r.render(snap)) for name, r in renderers.items()}
+    calls["+ force arrows + panel, in a child process"] = lambda: child.render(snap)
+    rates = best_rates(calls, args.frames, args.repeats)
+    platform = gl_renderer_name()  # the last in-process renderer's context is current
+    for renderer in [*renderers.values(), child]:
         renderer.close()
 
     with tempfile.TemporaryDirectory() as tmp:
@@ -95,6 +103,9 @@ def main() -> None:
     width = max(len(k) for k in rates)
     for name, rate in rates.items():
         print(f"  {name:{width}s}  {rate:6.1f} frames/s  ({1e3 / rate:6.1f} ms/frame)")
+    ratio = rates["+ force arrows + panel, in a child process"] / rates["+ force arrows + panel"]
+    print(f"  in a child process / in this one: {ratio:.3f}; starting the child and its scene: "
+          f"{child_start:.2f} s")
     print(f"  record(): {rec.frames} frames of {rec.sim_time:.1f} s simulated in {rec.loop_time:.1f} s "
           f"({rec.wall_time:.1f} s with loading the boat and the controller)")
 

@@ -103,18 +103,36 @@ def test_a_video_in_a_sea_draws_the_moving_elevation(boat, tmp_path, monkeypatch
     pytest.importorskip("imageio_ffmpeg")
     from sailmujoco import video
     from sailmujoco.forces.waves import elevation
+    from sailmujoco.video import recording
 
     waves = WaveConfig(spectrum="jonswap", hs=1.0, tp=4.0, direction_from=0.3, n_components=6, seed=5)
     seen = []  # (time, heights, grid) of each frame drawn
-    render = video.SceneRenderer.render
 
-    def spy(self, snap, *args, **kwargs):
-        frame = render(self, snap, *args, **kwargs)
-        x, y = self.sea.grid()
-        seen.append((snap.time, self.sea.heights().copy(), x.copy(), y.copy(), self.sea.window))
-        return frame
+    class Here:
+        """record()'s ChildRenderer, drawing in this process so that the sea can be read."""
 
-    monkeypatch.setattr(video.SceneRenderer, "render", spy)
+        def open(self, *args, **kwargs):
+            self.scene = video.SceneRenderer(*args, **kwargs)
+            self.width, self.height = self.scene.width, self.scene.height
+            return self
+
+        def render(self, snap, *args, **kwargs):
+            frame = self.scene.render(snap, *args, **kwargs)
+            x, y = self.scene.sea.grid()
+            sea = self.scene.sea
+            seen.append((snap.time, sea.heights().copy(), x.copy(), y.copy(), sea.window))
+            return frame
+
+        def close(self):
+            self.scene.close()
+
+        def __enter__(self):
+            return self
+
+        def __exit__(self, *exc):
+            self.close()
+
+    monkeypatch.setattr(recording, "ChildRenderer", Here)
     try:
         rec = video.record("wille_yacht", "beam_reach_roll", "wille_roll", tmp_path / "sea.mp4",
                            seconds=14.0, fps=0.5, width=96, height=64, overlay=False, waves=waves)

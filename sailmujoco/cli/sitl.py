@@ -105,14 +105,15 @@ def film_problem(path) -> str | None:
     path : str
         ``--video``.
     """
+    from ..video.child import ChildRenderer
     from ..video.encoding import encoder
-    from ..video.gl import RenderingUnavailable, check_rendering
+    from ..video.gl import RenderingUnavailable
 
     if not str(path).lower().endswith(".mp4"):
         return "the film is an .mp4 file"
     try:
         encoder()
-        check_rendering()
+        ChildRenderer().close()  # the process that will draw the film can render
     except (ImportError, RenderingUnavailable) as err:
         return str(err)
     return None

@@ -1,6 +1,7 @@
 """Rendering for the Gymnasium adapter: ``"rgb_array"`` frames from the video renderer
-(:class:`sailmujoco.video.SceneRenderer`, offscreen), ``"human"`` in MuJoCo's passive viewer
-(:class:`sailmujoco.viewer.window.Window`, the window of ``sailmujoco view``).
+(:class:`sailmujoco.video.SceneRenderer`, offscreen, in a child process), ``"human"`` in
+MuJoCo's passive viewer (:class:`sailmujoco.viewer.window.Window`, the window of
+``sailmujoco view``, in this process).
 """
 
 from __future__ import annotations
@@ -40,7 +41,9 @@ def _snapshot(dm_env, mujoco_world: bool):
 
 
 class FrameRenderer:
-    """``render_mode="rgb_array"``: one RGB frame of the environment's state.
+    """``render_mode="rgb_array"``: one RGB frame of the environment's state, drawn by the video
+    renderer in a child process (:class:`sailmujoco.video.child.ChildRenderer`: this process
+    loads no OpenGL library), started at the first frame and ended by :meth:`close`.
 
     Parameters
     ----------
@@ -54,18 +57,20 @@ class FrameRenderer:
 
     def __init__(self, width: int, height: int, camera: str, labels: str):
         self.width, self.height, self.camera, self.labels = width, height, camera, labels
-        self._scene = None
+        self._child = None
         self._key = None
 
     def _renderer(self, boat, dm_env, options):
-        from ..video import SceneRenderer
+        from ..video.child import ChildRenderer
 
         mujoco_world, params, sail_mode, target = _scene_args(boat, dm_env, options)
         key = (params, sail_mode, repr(target))
-        if self._scene is None or key != self._key:  # a new boat only: the GL context is costly
-            self.close()
-            self._scene = SceneRenderer(params, self.width, self.height, self.camera,
-                                        sail_mode=sail_mode, target=target, labels=self.labels)
+        if self._child is None:
+            self._child = ChildRenderer()
+        if key != self._key:  # a new boat only: the GL context is costly
+            self._key = None
+            self._child.open(params, self.width, self.height, self.camera, sail_mode=sail_mode,
+                             target=target, labels=self.labels)
             self._key = key
         return mujoco_world
 
@@ -82,13 +87,14 @@ class FrameRenderer:
             Its ``suite.load`` keywords (``boat_options`` for a paper world's boat).
         """
         mujoco_world = self._renderer(boat, dm_env, options)
-        return self._scene.render(_snapshot(dm_env, mujoco_world))
+        return self._child.render(_snapshot(dm_env, mujoco_world))
 
     def close(self) -> None:
-        """Free the GL context."""
-        if self._scene is not None:
-            self._scene.close()
-            self._scene = None
+        """End the child process and its GL context."""
+        if self._child is not None:
+            self._child.close()
+            self._child = None
+            self._key = None
 
 
 class WindowRenderer:

@@ -1,8 +1,8 @@
 """A lock-step run filmed: the boat's state kept ``FILM_RATE_HZ`` times a simulated second while
 ArduPilot flies it (a snapshot costs far less than a physics step's share of the lock-step, so the
 run keeps its speed), drawn and encoded once the run is over by the same renderer as
-``sailmujoco video`` (:class:`sailmujoco.video.scene.SceneRenderer`): the boat heeling, its sail
-and rudder, the force arrows, the sea, and the panel with its track.
+``sailmujoco video`` (:class:`sailmujoco.video.scene.SceneRenderer`, in a child process): the boat
+heeling, its sail and rudder, the force arrows, the sea, and the panel with its track.
 
 The film plays at ``PLAYBACK_FPS``: ``PLAYBACK_FPS / FILM_RATE_HZ`` times faster than the boat
 sailed (a mission of several minutes is a film of about one).
@@ -42,13 +42,12 @@ def film(snapshots, params, path, *, waves=None, labels: str = "", width: int = 
     int
         Frames written.
     """
+    from ..video.child import ChildRenderer
     from ..video.encoding import FrameWriter, partial_file
-    from ..video.scene import SceneRenderer
 
     path = Path(path)
-    renderer = SceneRenderer(params, width=width, height=height, sail_mode="sheeted", waves=waves,
-                             labels=labels)
-    with partial_file(path) as partial:
+    with ChildRenderer() as renderer, partial_file(path) as partial:
+        renderer.open(params, width=width, height=height, sail_mode="sheeted", waves=waves, labels=labels)
         frames = FrameWriter(renderer, partial, PLAYBACK_FPS, len(snapshots), quality=6,
                              progress=progress)
         try:

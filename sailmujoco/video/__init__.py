@@ -60,8 +60,13 @@ What is drawn is a display copy of the boat (:func:`display_model`), compiled fr
 parameters and given the simulated pose each frame; the simulation's own model is never touched.
 
 Rendering needs an OpenGL platform: the one ``MUJOCO_GL`` names, or EGL when it is unset,
-loaded at the first frame (:mod:`sailmujoco.gl_platform`). Mesa's EGL renders on the CPU
-(Debian packages ``libegl1 libegl-mesa0 libgl1-mesa-dri``), the NVIDIA driver's on a GPU.
+loaded at the first frame (:mod:`sailmujoco.gl_platform`). :func:`record`, the Gymnasium
+environments' ``render_mode="rgb_array"`` and the film of ``sailmujoco sitl`` load it in a child
+process that draws the frames (:class:`ChildRenderer`, :mod:`~sailmujoco.video.child`), never in
+the caller's: Mesa's EGL brings its own LLVM, and PyTorch's triton loaded after it in the same
+process crashes it. A :class:`SceneRenderer` made directly draws in the caller's process.
+Mesa's EGL renders on the CPU (Debian packages ``libegl1 libegl-mesa0 libgl1-mesa-dri``), the
+NVIDIA driver's on a GPU.
 The fallback is OSMesa: ``apt-get install libosmesa6`` and ``MUJOCO_GL=osmesa``. Without a platform,
 :class:`RenderingUnavailable` says so and names these fixes. Shadows and reflections are off.
 The mp4 is encoded by the ffmpeg binary that the ``imageio-ffmpeg`` package ships.
@@ -71,11 +76,13 @@ Modules
     ``camera``: the follow camera and the top view; ``water``: the sea of the display model;
     ``overlays``: the arrows and target circles; ``panel``: the map and the numbers beside the
     scene; ``recording``: :func:`record`,
-    :class:`Recording`, :func:`record_study_scenario`; ``gl``: the OpenGL platform and
+    :class:`Recording`, :func:`record_study_scenario`; ``child``: :class:`ChildRenderer`, a
+    ``SceneRenderer`` in a child process; ``gl``: the OpenGL platform and
     :class:`RenderingUnavailable`.
 """
 
 from .camera import FollowCamera, boom_angle, yaw_of
+from .child import ChildRenderer
 from .gl import FIX, RenderingUnavailable, check_rendering
 from .overlays import COLOURS, FORCES, MAX_ARROW, WIND_ARROW_PER_MPS
 from .panel import KNOT, MapView
@@ -102,7 +109,8 @@ from .scene import (
 from .water import SEA_ALPHA
 
 __all__ = ["CAMERAS", "COLOURS", "FIX", "FORCES", "FORCE_ARROW", "FORCE_SITES", "KNOT", "MAX_ARROW",
-           "REFERENCE_WIND", "SEA_ALPHA", "WIND_ARROW_PER_MPS", "FollowCamera", "MapView", "Recording",
+           "REFERENCE_WIND", "SEA_ALPHA", "WIND_ARROW_PER_MPS", "ChildRenderer", "FollowCamera", "MapView",
+           "Recording",
            "RenderingUnavailable", "SceneRenderer", "Snapshot", "boom_angle", "check_rendering",
            "close_outward", "display_model", "frames_between_substeps", "record",
            "record_study_scenario", "scene_of", "simulated_sea", "snapshot_observation",

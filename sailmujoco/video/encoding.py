@@ -8,6 +8,7 @@ from contextlib import contextmanager
 from pathlib import Path
 
 from ..progress import Progress
+from .child import ChildRenderer
 from .scene import SceneRenderer, Snapshot
 
 
@@ -25,7 +26,7 @@ class FrameWriter:
 
     Parameters
     ----------
-    renderer : SceneRenderer
+    renderer : SceneRenderer or ChildRenderer
         Draws each snapshot (closed with the writer).
     path : Path
         The mp4 written.
@@ -39,7 +40,7 @@ class FrameWriter:
         A progress bar.
     """
 
-    def __init__(self, renderer: SceneRenderer, path: Path, fps: float, n_frames: int,
+    def __init__(self, renderer: SceneRenderer | ChildRenderer, path: Path, fps: float, n_frames: int,
                  quality: float, progress: bool):
         self.renderer, self.fps, self.n_frames = renderer, fps, n_frames
         self.count = 0

@@ -24,10 +24,10 @@ from pathlib import Path
 from ..boat.catalogue import boat_label
 from ..errors import ControllerFailed, act
 from .camera import ELEVATION_DEG
+from .child import ChildRenderer
 from .encoding import FrameWriter, encoder, partial_file
-from .gl import import_gl
 from .panel import measured_of
-from .scene import CAMERAS, SceneRenderer, Snapshot, snapshot_observation, snapshot_physics
+from .scene import CAMERAS, Snapshot, snapshot_observation, snapshot_physics
 
 
 @dataclass
@@ -224,15 +224,17 @@ def _load_run(boat: str, task: str, world: str, controller, seed: int, seconds, 
     return env, policy, name, float(seconds) if seconds is not None else float(env.task.duration)
 
 
-def _scene_renderer(boat: str, task: str, world: str, name: str, env, options: dict, waves, **kwargs):
-    """(whether it is the MuJoCo world, the run's :class:`SceneRenderer`): its boat, target,
-    labels and sea (``waves``, else the simulation's); ``kwargs`` its size and camera."""
+def _open_scene(renderer: ChildRenderer, boat: str, task: str, world: str, name: str, env, options: dict,
+                waves, **kwargs) -> bool:
+    """Open the run's scene in ``renderer``: its boat, target, labels and sea (``waves``, else the
+    simulation's); ``kwargs`` its size and camera. Returns whether it is the MuJoCo world."""
     from ..options import wave_config
 
     mujoco_world, params, sail_mode, target = scene_of(boat, env, options)
     sea = wave_config(waves) if waves is not None else simulated_sea(env.physics)
-    return mujoco_world, SceneRenderer(params, sail_mode=sail_mode, target=target, waves=sea,
-                                       labels=f"{boat_label(boat)} · {task} · {name} ({world})", **kwargs)
+    renderer.open(params, sail_mode=sail_mode, target=target, waves=sea,
+                  labels=f"{boat_label(boat)} · {task} · {name} ({world})", **kwargs)
+    return mujoco_world
 
 
 def _sail(env, policy, name: str, frames: FrameWriter,
@@ -354,21 +356,22 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     fps, width, height = check_arguments(
         camera=camera, fps=fps, seconds=seconds, width=width, height=height, follow_distance=follow_distance,
         follow_bearing_deg=follow_bearing_deg, quality=quality, options=options)
-    import_gl(), encoder()  # fail before loading anything
+    encoder()
     start_wall = time.perf_counter()
-    env, policy, name, duration = _load_run(boat, task, world, controller, seed, seconds, controller_options,
-                                            options, waves)
-    mujoco_world, renderer = _scene_renderer(
-        boat, task, world, name, env, options, waves, width=width, height=height, camera=camera,
-        forces=forces, overlay=overlay, follow_distance=follow_distance,
-        follow_bearing_deg=follow_bearing_deg, follow_elevation_deg=follow_elevation_deg,
-        follow_lag=follow_lag, top_center=top_center, top_extent=top_extent)
-    return _film(env, policy, name, renderer, Path(out_path), mujoco_world=mujoco_world, fps=fps,
-                 n_frames=max(1, round(duration * fps)), quality=quality, progress=progress, still=still,
-                 start_wall=start_wall)
+    with ChildRenderer() as renderer:  # fails here, before anything is loaded, where nothing can render
+        env, policy, name, duration = _load_run(boat, task, world, controller, seed, seconds,
+                                                controller_options, options, waves)
+        mujoco_world = _open_scene(
+            renderer, boat, task, world, name, env, options, waves, width=width, height=height,
+            camera=camera, forces=forces, overlay=overlay, follow_distance=follow_distance,
+            follow_bearing_deg=follow_bearing_deg, follow_elevation_deg=follow_elevation_deg,
+            follow_lag=follow_lag, top_center=top_center, top_extent=top_extent)
+        return _film(env, policy, name, renderer, Path(out_path), mujoco_world=mujoco_world, fps=fps,
+                     n_frames=max(1, round(duration * fps)), quality=quality, progress=progress,
+                     still=still, start_wall=start_wall)
 
 
-def _film(env, policy, name: str, renderer: SceneRenderer, out_path: Path, *, mujoco_world: bool, fps: float,
+def _film(env, policy, name: str, renderer: ChildRenderer, out_path: Path, *, mujoco_world: bool, fps: float,
           n_frames: int, quality: float, progress: bool, still, start_wall: float) -> Recording:
     """Run the episode into ``out_path`` (written under a hidden name, renamed when complete);
     its :class:`Recording`. A controller's failure ends the video there; the video is kept and

@@ -1,0 +1,166 @@
+"""Frames are drawn in a child process: the caller's process maps no GL library and no LLVM.
+
+Mesa's EGL (llvmpipe) loads Mesa's LLVM into the process that renders, with RTLD_GLOBAL, and
+PyTorch's triton imported after it binds its own LLVM calls to Mesa's copy and crashes the
+process. So record(), the Gymnasium environments' "rgb_array" frames and the sitl film draw in a
+child process (sailmujoco.video.ChildRenderer). The checks read /proc/self/maps (the shared
+libraries a process has mapped) and /proc/self/task/*/children (its living and unreaped
+children) in a fresh interpreter; the GL platform is whatever MUJOCO_GL names, else EGL.
+"""
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import textwrap
+
+import numpy as np
+import pytest
+
+from sailmujoco import suite, video
+
+# the GL libraries and the LLVM that a GL driver brings (Mesa's libLLVM-NN, its DRI drivers)
+LOADED_BY_GL = ("libEGL", "libGL.", "libGLX", "libGLdispatch", "libOSMesa", "libLLVM", "_dri.so",
+                "libgallium")
+
+SCRIPT = textwrap.dedent("""
+    import gc, glob, json, os
+    import gymnasium
+    import sailmujoco.gym
+    from sailmujoco import video
+
+    def mapped():
+        return sorted({line.split()[-1] for line in open("/proc/self/maps")
+                       if any(name in line for name in NAMES)})
+
+    def children():
+        return sorted(int(pid) for path in glob.glob("/proc/self/task/*/children")
+                      for pid in open(path).read().split())
+
+    seen = {"before": children()}
+    env = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", render_mode="rgb_array",
+                         render_width=64, render_height=48)
+    env.reset(seed=0)
+    frame = env.render()
+    seen.update(frame_shape=list(frame.shape), frame_spread=float(frame.std()),
+                after_frame=mapped(), children_while_open=children())
+    env.close()
+    seen["children_after_close"] = children()
+
+    forgotten = gymnasium.make("sailmujoco/SaoudRobot-HeadingHold-v0", render_mode="rgb_array",
+                               render_width=64, render_height=48)
+    forgotten.reset(seed=0)
+    forgotten.render()
+    seen["children_of_a_forgotten_env"] = children()
+    del forgotten
+    gc.collect()
+    seen["children_after_it_is_collected"] = children()
+
+    rec = video.record("saoud_robot", "heading_hold", "pid", "out.mp4", seconds=0.4, fps=5,
+                       width=64, height=48)
+    seen.update(recorded=rec.frames, after_record=mapped(), children_after_record=children())
+
+    video.check_rendering()  # the control: drawing in this process maps its GL library here
+    seen["after_drawing_here"] = mapped()
+    print(json.dumps(seen))
+""").replace("NAMES", repr(LOADED_BY_GL))
+
+
+@pytest.fixture(scope="module")
+def seen(tmp_path_factory) -> dict:
+    env = {k: v for k, v in os.environ.items() if k != "PYOPENGL_PLATFORM"}
+    result = subprocess.run([sys.executable, "-c", SCRIPT], env=env, cwd=tmp_path_factory.mktemp("child"),
+                            capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr[-3000:]
+    return json.loads(result.stdout.strip().splitlines()[-1])
+
+
+def test_a_gymnasium_frame_maps_no_gl_library_and_no_llvm_here(seen):
+    assert seen["frame_shape"] == [48, 64, 3] and seen["frame_spread"] > 1.0  # a picture
+    assert seen["after_frame"] == [], seen["after_frame"]
+
+
+def test_a_recorded_video_maps_no_gl_library_and_no_llvm_here(seen):
+    assert seen["recorded"] == 2  # 0.4 s at 5 frames a second
+    assert seen["after_record"] == [], seen["after_record"]
+
+
+def test_the_check_would_see_a_gl_library_drawn_here(seen):
+    assert any("libEGL" in path or "libOSMesa" in path or "libGL" in path
+               for path in seen["after_drawing_here"]), seen["after_drawing_here"]
+
+
+def test_closing_the_environment_ends_and_reaps_its_renderer(seen):
+    assert seen["before"] == []
+    assert len(seen["children_while_open"]) == 1
+    assert seen["children_after_close"] == []  # a zombie would still be listed
+
+
+def test_an_environment_never_closed_ends_its_renderer_when_collected(seen):
+    assert len(seen["children_of_a_forgotten_env"]) == 1
+    assert seen["children_after_it_is_collected"] == []
+    assert seen["children_after_record"] == []
+
+
+# ----------------------------------------------------------------------------- same pixels
+def _snapshots(n: int) -> list:
+    env = suite.load("saoud_robot", "heading_hold", seed=0, time_limit=5.0)
+    env.reset()
+    snaps = []
+    for step in range(n):
+        env.step(np.array([0.2 * (-1) ** step, 0.5]))
+        snaps.append(video.snapshot_physics(env.physics, env.task.references(env.physics)))
+    return env.physics.params, snaps
+
+
+def test_the_child_draws_the_pixels_this_process_draws():
+    """The same renderer fed the same snapshots in the same order: the same frames, bit for bit
+    (panel, track and the follow camera's lag included)."""
+    params, snaps = _snapshots(4)
+    with video.SceneRenderer(params, 96, 64, "follow") as here:
+        expected = [here.render(snap) for snap in snaps]
+        expected.append(here.render(snaps[-1], note="stopped"))
+    with video.ChildRenderer().open(params, 96, 64, "follow") as child:
+        drawn = [child.render(snap) for snap in snaps]
+        drawn.append(child.render(snaps[-1], note="stopped"))
+    assert (child.width, child.height) == (96, 64)
+    for want, got in zip(expected, drawn, strict=True):
+        assert got.dtype == np.uint8 and got.shape == (64, 96, 3)
+        np.testing.assert_array_equal(got, want)
+    assert not np.array_equal(drawn[0], drawn[-2])  # the boat moved: frames that differ
+
+
+# ----------------------------------------------------------------------------- errors, one line
+def test_a_bad_argument_comes_back_as_its_own_error_in_one_line():
+    params, snaps = _snapshots(1)
+    with video.ChildRenderer() as child:
+        with pytest.raises(ValueError, match="unknown camera 'drone'") as err:
+            child.open(params, 64, 48, "drone")
+        assert "\n" not in str(err.value)
+        with pytest.raises(RuntimeError, match=r"needs open\(\) first"):
+            child.render(snaps[0])
+        assert child.open(params, 64, 48, "top").render(snaps[0]).shape == (48, 64, 3)  # still serving
+
+
+def test_a_renderer_that_dies_is_named_in_one_line_and_reaped():
+    params, snaps = _snapshots(1)
+    child = video.ChildRenderer().open(params, 64, 48)
+    os.kill(child.pid, signal.SIGKILL)
+    with pytest.raises(RuntimeError) as err:
+        child.render(snaps[0])
+    message = str(err.value)
+    assert "\n" not in message and f"renderer's process (pid {child.pid}) was killed by SIGKILL" in message
+    assert not os.path.exists(f"/proc/{child.pid}")  # waited for: no zombie
+    with pytest.raises(RuntimeError, match="closed"):
+        child.render(snaps[0])
+    child.close()  # closing again is harmless
+
+
+def test_no_gl_platform_is_one_line_naming_the_fixes(monkeypatch):
+    monkeypatch.setenv("MUJOCO_GL", "no-such-platform")
+    with pytest.raises(video.RenderingUnavailable) as err:
+        video.ChildRenderer()
+    message = str(err.value)
+    assert "\n" not in message and "MUJOCO_GL='no-such-platform'" in message
+    assert "MUJOCO_GL=egl" in message and "libosmesa6" in message
