@@ -2,16 +2,21 @@
 
 MuJoCo's Python bindings and dm_control each pick an OpenGL platform when they are imported,
 from the environment variable ``MUJOCO_GL``; dm_control, with the variable unset, even calls
-``glfw.init()`` then and falls back to EGL. Loading Mesa's EGL maps Mesa's own LLVM into the
-process, and a process that then loads PyTorch's triton (with another LLVM) crashes with a
-segmentation fault. So sailmujoco loads no GL library until a caller asks for pixels:
+``glfw.init()`` then and falls back to EGL, and with ``MUJOCO_GL=egl`` it initialises an EGL
+display at import. Initialising Mesa's EGL maps Mesa's own LLVM into the process, and a
+process that then loads PyTorch's triton (with another LLVM) crashes with a segmentation fault.
+So importing sailmujoco initialises no GL platform, and the frames of videos and of the
+Gymnasium environments are drawn in a child process (:mod:`sailmujoco.video.child`):
 
-- ``MUJOCO_GL`` set by the user: MuJoCo and dm_control use that platform, as they always do.
-- ``MUJOCO_GL`` unset: :func:`import_dm_control_mujoco` imports dm_control with its renderer
-  left unchosen (the variable is set to ``disable`` for that import only and then removed), and
-  the first render (:func:`use_platform`, or dm_control's ``Physics.render``) loads
-  :data:`DEFAULT`, EGL: Mesa's llvmpipe on a CPU machine, the NVIDIA driver on a GPU. EGL
-  needs no display, so the same default works on a laptop, a headless server and a cluster.
+- :func:`import_dm_control_mujoco` imports dm_control with its renderer left unchosen (the
+  variable is set to ``disable`` for that import only, then put back as it was found);
+  dm_control's first ``Physics.render`` loads :func:`requested`'s platform.
+- ``MUJOCO_GL`` set by the user: that platform renders. MuJoCo's own import loads its library
+  (``libEGL``, which loads no driver and no LLVM until a display is initialised).
+- ``MUJOCO_GL`` unset: the first render (:func:`use_platform`, or dm_control's
+  ``Physics.render``) loads :data:`DEFAULT`, EGL: Mesa's llvmpipe on a CPU machine, the NVIDIA
+  driver on a GPU. EGL needs no display, so the same default works on a laptop, a headless
+  server and a cluster.
 
 The choice is process-wide, like MuJoCo's and dm_control's own, and is owned here.
 """
@@ -33,24 +38,28 @@ def requested() -> str:
 
 
 def import_dm_control_mujoco():
-    """Import ``dm_control.mujoco`` without loading a GL library.
+    """Import ``dm_control.mujoco`` without initialising a GL platform.
 
-    With ``MUJOCO_GL`` set, or dm_control's renderer already imported, dm_control chooses as it
-    always does. Otherwise its renderer is imported with no platform and replaced by one that
-    loads :func:`requested` when ``Physics.render`` first makes a context; the environment is
-    left as it was found.
+    dm_control's renderer is imported with no platform and replaced by one that loads
+    :func:`requested` when ``Physics.render`` first makes a context; ``MUJOCO_GL`` is left as
+    it was found. Where dm_control's renderer was imported before (by the caller), it keeps the
+    platform it chose.
 
     Returns
     -------
     module
         ``dm_control.mujoco``.
     """
-    if "dm_control._render" not in sys.modules and "MUJOCO_GL" not in os.environ:
+    if "dm_control._render" not in sys.modules:
+        found = os.environ.get("MUJOCO_GL")
         os.environ["MUJOCO_GL"] = "disable"
         try:
             from dm_control import _render
         finally:
-            del os.environ["MUJOCO_GL"]
+            if found is None:
+                del os.environ["MUJOCO_GL"]
+            else:
+                os.environ["MUJOCO_GL"] = found
         _render.BACKEND = None
         _render.Renderer = _deferred_dm_control_context
     return importlib.import_module("dm_control.mujoco")
