@@ -12,7 +12,10 @@ on a CPU machine), for one state of wille_yacht on a beam reach:
 * ``... in a child process``: the same frame drawn by :class:`sailmujoco.video.child.ChildRenderer`,
   as ``record()`` and the Gymnasium environments draw it (the snapshot sent to the child, the
   pixels sent back); its ratio to the line above is the cost of keeping GL out of the caller's
-  process. Starting the child (a fresh interpreter, the GL platform, the scene) is timed apart;
+  process. Starting the child (a fresh interpreter, the GL platform, the scene) is timed apart,
+  and so is the round trip alone (the snapshot out, the frame's bytes back, over the same kind of
+  socket pair with the same calls, to a child that draws nothing), which llvmpipe's frame-to-frame
+  spread on a shared machine would hide;
 * ``record()``: the whole pipeline (simulation, drawing in the child, H.264 encoding by ffmpeg),
   in video frames per wall-clock second.
 
@@ -25,11 +28,32 @@ from __future__ import annotations
 import argparse
 import math
 import os
+import socket
+import subprocess
+import sys
 import tempfile
 import time
+from multiprocessing.connection import Connection
 from pathlib import Path
 
+import numpy as np
+
 from sailmujoco import suite, sweep, video
+
+ECHO = """
+import sys
+from multiprocessing.connection import Connection
+import numpy as np
+conn = Connection(int(sys.argv[1]))
+frame = np.full(tuple(int(n) for n in sys.argv[2:]), 7, np.uint8)
+while True:
+    try:
+        conn.recv()
+    except EOFError:
+        break
+    conn.send(("ok", frame.shape))
+    conn.send_bytes(frame.reshape(-1))
+"""
 
 
 def best_rates(calls: dict, frames: int, repeats: int) -> dict:
@@ -46,6 +70,29 @@ def best_rates(calls: dict, frames: int, repeats: int) -> dict:
                 fn()
             best[name] = min(best[name], time.perf_counter() - start)
     return {name: frames / seconds for name, seconds in best.items()}
+
+
+def round_trip_s(snap, width: int, height: int, frames: int, repeats: int) -> float:
+    """Seconds of one frame's round trip with nothing drawn: ``snap`` sent to a child process,
+    ``height x width x 3`` bytes back, as ``ChildRenderer.render`` does it; the best of
+    ``repeats`` runs of ``frames``."""
+    ours, theirs = socket.socketpair()
+    with theirs:
+        command = [sys.executable, "-c", ECHO, str(theirs.fileno()), str(height), str(width), "3"]
+        child = subprocess.Popen(command, pass_fds=(theirs.fileno(),))
+    conn = Connection(ours.detach())
+    best = math.inf
+    for _ in range(repeats):
+        start = time.perf_counter()
+        for _ in range(frames):
+            conn.send(("render", snap, None, None))
+            frame = np.empty(conn.recv()[1], np.uint8)
+            conn.recv_bytes_into(frame.reshape(-1))
+        best = min(best, (time.perf_counter() - start) / frames)
+    conn.close()
+    child.wait()
+    assert frame.shape == (height, width, 3) and frame[0, 0, 0] == 7
+    return best
 
 
 def gl_renderer_name() -> str:
@@ -104,8 +151,10 @@ def main() -> None:
     for name, rate in rates.items():
         print(f"  {name:{width}s}  {rate:6.1f} frames/s  ({1e3 / rate:6.1f} ms/frame)")
     ratio = rates["+ force arrows + panel, in a child process"] / rates["+ force arrows + panel"]
+    trip = round_trip_s(snap, args.width, args.height, 10 * args.frames, args.repeats)
     print(f"  in a child process / in this one: {ratio:.3f}; starting the child and its scene: "
-          f"{child_start:.2f} s")
+          f"{child_start:.2f} s; the round trip alone: {1e3 * trip:.2f} ms/frame "
+          f"({trip * rates['+ force arrows + panel']:.1%} of a frame drawn here)")
     print(f"  record(): {rec.frames} frames of {rec.sim_time:.1f} s simulated in {rec.loop_time:.1f} s "
           f"({rec.wall_time:.1f} s with loading the boat and the controller)")
 
