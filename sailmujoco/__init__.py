@@ -4,7 +4,9 @@ The data flow runs one way (see ``../STYLE`` in the README):
 params -> mjcf -> forces -> physics -> tasks -> controllers -> studies.
 
 Importing sailmujoco changes nothing in the process: no environment variable is set and no
-OpenGL library is loaded until something is rendered (:mod:`sailmujoco.gl_platform`).
+OpenGL platform is initialised until something is rendered (:mod:`sailmujoco.gl_platform`);
+videos and the Gymnasium environments' frames are drawn in a child process
+(:mod:`sailmujoco.video.child`).
 """
 
 __version__ = "0.1.0"

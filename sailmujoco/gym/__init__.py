@@ -112,7 +112,10 @@ Rendering
     ``render_mode="rgb_array"``: :meth:`SailGymEnv.render` returns the frame of the videos'
     renderer (:mod:`sailmujoco.video`: the boat, the wind and force arrows, the text box),
     ``render_width`` x ``render_height`` pixels, from ``camera``, offscreen (EGL, or the
-    platform ``MUJOCO_GL`` names, loaded at the first frame; Mesa's EGL renders on the CPU);
+    platform ``MUJOCO_GL`` names; Mesa's EGL renders on the CPU), drawn in a child process
+    started at the first frame and ended by :meth:`SailGymEnv.close`
+    (:class:`sailmujoco.video.ChildRenderer`: the GL driver, and the LLVM that Mesa's brings
+    and that would crash PyTorch's triton, stay out of this process);
     ``metadata["render_fps"]`` is one frame per control step, so
     ``gymnasium.wrappers.RecordVideo`` writes a real-time video (it needs the ``moviepy``
     package). ``render_mode="human"``: every step is drawn in MuJoCo's viewer
