@@ -178,3 +178,36 @@ def test_no_gl_platform_is_one_line_naming_the_fixes(monkeypatch):
     message = str(err.value)
     assert "\n" not in message and "MUJOCO_GL='no-such-platform'" in message
     assert "MUJOCO_GL=egl" in message and "libosmesa6" in message
+
+
+FORK = textwrap.dedent("""
+    import os, sys
+    from sailmujoco import suite, video
+
+    env = suite.load("saoud_robot", "heading_hold", seed=0, time_limit=1.0)
+    env.reset()
+    snap = video.snapshot_physics(env.physics)
+    child = video.ChildRenderer().open(env.physics.params, 32, 24)
+    first = child.render(snap)
+    pid = os.fork()
+    if pid == 0:  # the forked copy: refused; its exit runs the finalizers, which leave the child alone
+        try:
+            child.render(snap)
+        except RuntimeError as err:
+            print("fork:", err, flush=True)
+        sys.exit(0)
+    os.waitpid(pid, 0)
+    again = child.render(snap)  # the maker still draws
+    print("maker:", bool((again == first).all()), flush=True)
+    child.close()
+""")
+
+
+def test_a_forked_copy_cannot_use_the_makers_renderer_and_the_maker_keeps_drawing():
+    """A forked copy shares the socket: were it to draw, its messages and the maker's would
+    interleave; at its exit it must not close the maker's child either."""
+    result = subprocess.run([sys.executable, "-c", FORK], capture_output=True, text=True, timeout=600)
+    assert result.returncode == 0, result.stderr[-3000:]
+    lines = result.stdout.strip().splitlines()
+    assert lines[0].startswith("fork: this ChildRenderer belongs to the process that made it"), lines
+    assert lines[1] == "maker: True", lines

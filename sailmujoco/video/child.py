@@ -63,8 +63,8 @@ class ChildRenderer:
         with theirs:
             command = [sys.executable, "-c", _BOOT, str(theirs.fileno()), json.dumps(sys.path)]
             process = subprocess.Popen(command, pass_fds=(theirs.fileno(),), stdin=subprocess.DEVNULL)
-        self._process, self._conn = process, Connection(ours.detach())
-        self._finalizer = weakref.finalize(self, _stop, process, self._conn, os.getpid())
+        self._process, self._conn, self._owner = process, Connection(ours.detach()), os.getpid()
+        self._finalizer = weakref.finalize(self, _stop, process, self._conn, self._owner)
         self.pid = process.pid
         self.width = self.height = None
         try:
@@ -125,6 +125,9 @@ class ChildRenderer:
         the frame whose shape it gives, received after it), raising its error."""
         if not self._finalizer.alive:
             raise RuntimeError("this ChildRenderer is closed")
+        if os.getpid() != self._owner:
+            raise RuntimeError("this ChildRenderer belongs to the process that made it, not to one forked "
+                               "from it: make the environment or the renderer in this process")
         try:
             if message is not None:
                 self._conn.send(message)
@@ -166,7 +169,7 @@ def _stop(process: subprocess.Popen, conn: Connection, owner: int) -> None:
     try:
         conn.send(("close",))
         if conn.poll(_WAIT_S):
-            conn.recv()
+            conn.recv_bytes()  # its answer, or one it owed before (a Ctrl-C came between)
     except (EOFError, OSError):
         pass
     conn.close()
