@@ -154,25 +154,26 @@ def solve(a, b):
     return x
 
 
-def elementwise(function, values) -> np.ndarray:
+def elementwise(function, *values) -> np.ndarray:
     """``function`` (a scalar function of ``math``, or of the C library through it) applied to
-    each element of ``values``: numpy's ufunc with the CPU's SIMD kernel left out.
+    each element of ``values`` (broadcast against each other): numpy's ufunc with the CPU's SIMD
+    kernel left out.
 
     Parameters
     ----------
     function : callable
-        A function of one float returning a float (``math.exp``, ``math.sin``, a lambda).
-    values : array_like
-        The arguments, of any shape.
+        A function of floats returning a float (``math.exp``, ``math.hypot``, a lambda).
+    *values : array_like
+        Its arguments, of shapes that broadcast.
 
     Returns
     -------
     numpy.ndarray
-        float64, the shape of ``values``.
+        float64, the broadcast shape.
     """
-    values = np.asarray(values, dtype=np.float64)
-    return np.fromiter(map(function, values.ravel().tolist()), dtype=np.float64,
-                       count=values.size).reshape(values.shape)
+    arrays = np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in values))
+    return np.fromiter(map(function, *(a.ravel().tolist() for a in arrays)), dtype=np.float64,
+                       count=arrays[0].size).reshape(arrays[0].shape)
 
 
 def power(base, exponent) -> np.ndarray:
@@ -189,9 +190,7 @@ def power(base, exponent) -> np.ndarray:
     numpy.ndarray
         float64.
     """
-    b, e = np.broadcast_arrays(np.asarray(base, dtype=np.float64), np.asarray(exponent, dtype=np.float64))
-    return np.fromiter(map(math.pow, b.ravel().tolist(), e.ravel().tolist()), dtype=np.float64,
-                       count=b.size).reshape(b.shape)
+    return elementwise(math.pow, base, exponent)
 
 
 def gauss_legendre(n: int) -> tuple[np.ndarray, np.ndarray]:

@@ -20,6 +20,8 @@ import math
 
 import numpy as np
 
+from sailmujoco.jit.ordered import elementwise
+
 from ..kit import run_episode
 
 FITTED_JOB = "assumptions_fitted"  # the first pass's job list
@@ -90,7 +92,7 @@ def figure_of_merit(name: str, metrics: dict, trajectory) -> float:
     if metric != "late_distance":
         return float(metrics[metric])
     late = trajectory[trajectory["t"] >= trajectory["t"].iloc[-1] / 2]
-    return float(np.mean(np.hypot(late["x"], late["y"])))  # the target is the origin
+    return float(np.mean(elementwise(math.hypot, late["x"], late["y"])))  # the target is the origin
 
 
 def fitted_run(job: dict) -> dict:

@@ -18,6 +18,7 @@ import numpy as np
 
 from sailmujoco import suite, sweep
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.jit.ordered import mat_t_vec
 
 BOAT = "wille_yacht"
 
@@ -144,7 +145,7 @@ def _row(obs, sail, physics) -> dict:
            "p_deg_s": math.degrees(float(obs["roll_rate"])), "u": float(ts["u"]),
            "heading_deg": math.degrees(math.remainder(float(obs["heading"]), 2 * math.pi)),
            "rudder_deg": math.degrees(float(ts["rudder"])), "sail_deg": math.degrees(float(ts["sail"])),
-           "wind_ce": float(np.hypot(*ts["true_wind"])), "active": float(sail.active)}
+           "wind_ce": math.hypot(*ts["true_wind"]), "active": float(sail.active)}
     if physics is not None:  # roll moments about CO (N m, positive heeling to starboard)
         for term in MOMENT_TERMS:
             row[f"K_{term}"] = float(ts[f"{term}_wrench"][3])
@@ -153,7 +154,7 @@ def _row(obs, sail, physics) -> dict:
             body = 1  # the hull: the root of the boat's kinematic tree
             rot = d.xmat[body].reshape(3, 3)
             moment = np.cross(d.subtree_com[body] - d.xpos[body], m.body_subtreemass[body] * m.opt.gravity)
-            row["K_restoring"] += float((rot.T @ moment)[0])
+            row["K_restoring"] += float(mat_t_vec(rot, moment)[0])
     return row
 
 

@@ -84,8 +84,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
                     f"{n} seeds with the band of its 95 % interval; dotted: the wind turns "
                     f"(∠v_w^B = {', '.join(f'{x:g}°' for x in ANGLES_DEG)})")
     text.paragraph(f"Data: `timeseries.csv` (every run on every seed, 10 Hz), `segments.csv` (segment "
-                   f"means, one row per trial and seed). {'Smoke run: l_φ = 0.1 m only. ' if smoke else ''}"
-                   f"Wall time {a.wall_s:.0f} s.")
+                   f"means, one row per trial and seed).{' Smoke run: l_φ = 0.1 m only.' if smoke else ''}")
     return text.text()
 
 

@@ -61,8 +61,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     text.paragraph(f"Data: `fig7.csv` (per angle, the means over the seeds), `fig7_seeds.csv` (per angle "
                    f"and seed, every law and check and that seed's vel_max), `vel_max_grid.csv` (every "
                    f"fixed-sail run, with its seed), `sweep-velmax-*/` (the sweep engine's store). "
-                   f"{'Smoke run: reduced grid. ' if smoke else ''}"
-                   f"Wall time {a.wall_s:.0f} s.")
+                   f"{'Smoke run: reduced grid.' if smoke else ''}")
     return text.text()
 
 

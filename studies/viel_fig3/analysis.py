@@ -15,6 +15,7 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco import stats
+from sailmujoco.jit.ordered import elementwise
 from sailmujoco.study import Results
 
 from ..kit.seeds import decide, paired
@@ -163,7 +164,7 @@ def sweep_rows(key: str, records: list[dict]) -> list[dict]:
                   "min_distance"):
             value = m.get(k)
             row[k] = float(value) if isinstance(value, (int, float)) else float("nan")
-        row.update(after_entry(t, np.hypot(x, y), row["entered_at"]))
+        row.update(after_entry(t, elementwise(math.hypot, x, y), row["entered_at"]))
         rows.append(row)
     return rows
 
@@ -330,7 +331,7 @@ def write_tables(analysis: Analysis, out: Path) -> None:
         capability.drop(columns=["kind"]).to_csv(out / "heading_hold_check.csv", index=False, float_format="%.4g")
     traj = [pd.DataFrame({"world": r["world"], "case": r["case"], "seed": r["seed"], "t": r["trajectory"]["t"],
                           "x": r["trajectory"]["x"], "y": r["trajectory"]["y"],
-                          "distance": np.hypot(r["trajectory"]["x"], r["trajectory"]["y"])})
+                          "distance": elementwise(math.hypot, r["trajectory"]["x"], r["trajectory"]["y"])})
             for _, r in main.iterrows()]
     pd.concat(traj).to_csv(out / "trajectories.csv", index=False, float_format="%.3f")
 

@@ -9,6 +9,7 @@ import numpy as np
 import pandas as pd
 
 from sailmujoco.figures import legend_below, wind_arrow
+from sailmujoco.jit.ordered import elementwise
 from sailmujoco.tasks.position import CASES as WIND_CASES
 
 from ..kit import save_figure, setup_matplotlib
@@ -80,7 +81,7 @@ def _distances(runs: list) -> tuple[np.ndarray, np.ndarray]:
     """The runs' distances to the target on their common times (up to the shortest run)."""
     n = min(len(r["trajectory"]["t"]) for r in runs)
     t = np.asarray(runs[0]["trajectory"]["t"][:n], dtype=float)
-    d = np.array([np.hypot(np.asarray(r["trajectory"]["x"][:n]), np.asarray(r["trajectory"]["y"][:n]))
+    d = np.array([elementwise(math.hypot, np.asarray(r["trajectory"]["x"][:n]), np.asarray(r["trajectory"]["y"][:n]))
                   for r in runs])
     return t, d
 
@@ -133,7 +134,7 @@ def figure_world(out: Path, key: str, runs: dict, start) -> Path:
     ax.set_xlabel("time [s]")
     ax.set_ylabel("distance to target [m]")
     ax.set_title(f"distance to the target p_T: mean over {n} seeds, 95 % band"
-                 + (f"\n(axis cut at {limit:.0f} m: the approach starts at {np.hypot(*start):.0f} m)"
+                 + (f"\n(axis cut at {limit:.0f} m: the approach starts at {math.hypot(*start):.0f} m)"
                     if top > limit else ""))
     ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     legend_below(fig, first, ncol=6)

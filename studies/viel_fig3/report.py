@@ -414,18 +414,15 @@ def _choices(r: Report, a: Analysis) -> None:
 
 def _durations(r: Report, a: Analysis) -> None:
     main, variants, grid, capability = a.main, a.variants, a.grid, a.capability
-    per_world = {key: float(main[main["world"] == key]["wall_time"].mean()) for key in WORLDS}
     bad = int((pd.concat([grid, main[main["world"] != "paper"]])["status"] != "ok").sum())
     switches = len(variants) - int((variants["variant"] == "baseline").sum()) + len(capability)
     cost = a.cost
     r.section(
         "Durations",
-        f"Simulations {'(smoke) ' if a.smoke else ''}{a.seconds:.0f} s wall. {len(grid)} paper-world runs, "
+        f"Simulations{' (smoke)' if a.smoke else ''}: {len(grid)} paper-world runs, "
         f"{len(main[main['world'] != 'paper'])} 6-DOF runs from the task start, {switches} switch runs: "
-        f"{cost['total']:.0f} simulated seconds, weighted. One {a.duration:g} s run: paper world "
-        f"{per_world['paper']:.1f} s, viel_boat {per_world['viel_boat']:.1f} s, wille_yacht "
-        f"{per_world['wille_yacht']:.1f} s, saoud_robot {per_world['saoud_robot']:.1f} s (wall per run on a "
-        "shared machine: includes waiting for a core)." + (f" Failed or stopped sweep runs: {bad}." if bad else ""))
+        f"{cost['total']:.0f} simulated seconds, weighted (the wall times are in the study's log)."
+        + (f" Failed or stopped sweep runs: {bad}." if bad else ""))
     r.paragraph(
         "Files: `summary.csv` (every world, case and seed), `per_case.csv` (means over seeds with their "
         "interval ends), `claims.csv` (pass counts with Wilson intervals and verdicts), `trajectories.csv` "

@@ -14,6 +14,7 @@ import numpy as np
 
 from sailmujoco import frames, suite, sweep
 from sailmujoco.boat.catalogue import get_boat
+from sailmujoco.jit.ordered import elementwise
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.tasks.environment import SailEnvironment
@@ -127,7 +128,7 @@ def simulate(spec: dict) -> dict:
                                               "mean_distance_after_entry", "final_distance",
                                               "min_distance")},
            "trajectory": {"t": t, "x": x, "y": y}, "wall_time": clock()}
-    out.update(after_entry(np.array(t), np.hypot(np.array(x), np.array(y)), out["entered_at"], d_t))
+    out.update(after_entry(np.array(t), elementwise(math.hypot, x, y), out["entered_at"], d_t))
     out.update(behaviour(np.array(t), samples, out["entered_at"], math.radians(float(env.action_spec().maximum[0]))))
     out.update(drift_after_stop(np.array(t), np.array(x), np.array(y), samples, out["stopped_at"],
                                 task.wind().direction_from))

@@ -64,7 +64,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
         f"{n_main} headline runs ({len(HEADLINE_LAWS)} laws in {len(WORLDS)} worlds on each of N = {len(a.seeds)} "
         f"seeds){'' if smoke else f' and {len(a.results) - n_main} switches on seed {SWITCH_SEED}'}. They cost "
         f"{a.cost:.0f} simulated seconds (a 6-DOF second counts {COST['mujoco']:g}, a paper-world second "
-        f"{COST['paper']:g}); wall time {a.seconds:.0f} s. Distances are the displacement from the start over "
+        f"{COST['paper']:g}). Distances are the displacement from the start over "
         "the whole run. Every run's numbers, seed by seed, are in table2.csv; each case over its seeds in "
         "table2_intervals.csv.")
     text.figure(FIG_INTERVALS, f"Table 2 over {len(a.seeds)} seeds: means with 95 % intervals against the "

@@ -90,9 +90,7 @@ def report(analysis: Analysis, smoke: bool) -> str:
     n_sweep = sum(len(t) for t in a.tables.values())
     text.paragraph(
         f"Runs: {a.n_jobs} simulations plus {n_sweep} on the sweep engine; N = {len(r.seeds)} gust "
-        f"realisations for Table 1{'; smoke mode: 60 s runs, metrics over the last 50 s' if smoke else ''}; "
-        f"wall time {a.seconds:.0f} s ({a.simulation_seconds:.0f} s of simulation, the Fig. 8 sweeps run "
-        "beside the others).")
+        f"realisations for Table 1{'; smoke mode: 60 s runs, metrics over the last 50 s' if smoke else ''}.")
     text.section("Roll reductions, law on against law off on the same gusts", _reduction_text(r))
     text.table(_reduction_rows(r), ["world", "law off → law on", "roll cut [deg]", "the law cuts the roll",
                                     "reduction", f"reduction ≥ {100 * REDUCTION_BOUND:.0f} %", "paper"])
