@@ -64,7 +64,9 @@ def _run(tmp_path, name, env_extra):
            if k not in ("NUMBA_CPU_NAME", "NUMBA_CPU_FEATURES", "NPY_DISABLE_CPU_FEATURES",
                         "OPENBLAS_CORETYPE", "NUMBA_DISABLE_JIT")}
     env.update(NUMBA_CACHE_DIR=str(tmp_path / f"numba-{name}"), SAILMUJOCO_QUIET="1", **env_extra)
-    return subprocess.Popen([sys.executable, "-c", _RUN, pickle.dumps(CASES).hex()], env=env,
+    # run from the test's own folder: from the repository root, "-c" would import the source tree's
+    # sailmujoco, which lacks the controllers an install (pip install .) puts inside it
+    return subprocess.Popen([sys.executable, "-c", _RUN, pickle.dumps(CASES).hex()], env=env, cwd=tmp_path,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE)
 
 
