@@ -324,7 +324,11 @@ def test_the_command_line_run_ends_on_ctrl_c_or_sigterm_with_its_table_and_film(
     out = tmp_path / "run"
     command = [sys.executable, "-m", "sailmujoco", "sitl", "saoud_robot", "--port", str(port), "--hold",
                "--heading", "135", "--out", str(out), "--video", str(out / "film.mp4")]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    # Ctrl-C as in a user's shell: the command gets SIGINT's default disposition, whatever this
+    # test process holds at the moment (the sweep engine ignores SIGINT while it starts workers,
+    # and a child inherits an ignored signal ignored)
+    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     sock = socket.socket(socket.AF_INET, socket.SOCK_DGRAM)
     sock.settimeout(0.5)
     try:
