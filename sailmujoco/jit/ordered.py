@@ -77,13 +77,7 @@ def mat_t_vec(m, v):
     numpy.ndarray, shape (c,)
         sum_i m[i, j] v[i], in the order i = 0 .. r - 1.
     """
-    out = np.empty(m.shape[1])
-    for j in range(m.shape[1]):
-        s = 0.0
-        for i in range(m.shape[0]):
-            s += m[i, j] * v[i]
-        out[j] = s
-    return out
+    return mat_vec(m.T, v)  # the same sums: row j of m.T is column j of m
 
 
 @kernel(inline=True)
