@@ -38,6 +38,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from numba.extending import register_jitable
 
 from sailmujoco.frames import wrap_angle
 from sailmujoco.reference.viel_model import action_from_viel
@@ -49,6 +50,7 @@ GO_DIRECT, GO_ROUND, TACK = "direct", "go_round", "tack"
 UPWIND_STOP, UPWIND_DRIVE = "upwind_v>0", "upwind_v<=0"
 
 
+@register_jitable
 def _sign(x: float) -> float:
     """np.sign on a float: -1, 0 or 1, NaN for NaN."""
     return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else (0.0 if x == 0.0 else math.nan))
@@ -145,6 +147,7 @@ def viel_view(observation: dict, target=None) -> VielView:
 # --- the laws, Viel signs ---------------------------------------------------------------------
 
 
+@register_jitable
 def rudder_law(theta: float, phi: float, theta_bar: float, rudder_max: float, epsilon_theta: float) -> float:
     """delta_r [rad] (Viel sign: positive turns clockwise), eqs. 10-11.
 
@@ -170,6 +173,7 @@ def rudder_law(theta: float, phi: float, theta_bar: float, rudder_max: float, ep
     return rudder_max * _sign(math.sin(e))  # Viel eq. 11
 
 
+@register_jitable
 def sail_limit(psi_aw: float, sail_max: float) -> float:
     """delta_s,M = min(|pi - |psi_aw||, delta_s,max) [rad], eq. 12 (the luffing angle).
 
@@ -183,6 +187,7 @@ def sail_limit(psi_aw: float, sail_max: float) -> float:
     return min(abs(math.pi - abs(psi_aw)), sail_max)  # Viel eq. 12
 
 
+@register_jitable
 def optimal_sail(psi_tw: float, theta_bar: float) -> float:
     """delta_s^opt = (pi/2) (cos(psi_tw - theta_bar) + 1) / 2 [rad], eq. 15.
 
@@ -196,6 +201,7 @@ def optimal_sail(psi_tw: float, theta_bar: float) -> float:
     return 0.5 * math.pi * (math.cos(psi_tw - theta_bar) + 1.0) / 2.0  # Viel eq. 15
 
 
+@register_jitable
 def adaptive_sail(sail_previous: float, vdot_star: float, vdot: float, psi_aw: float, psi_tw: float,
                   theta_bar: float, k_s: float, dt: float, epsilon_sail: float, sail_max: float) -> float:
     """delta_s [rad] (Viel sign), eqs. 13-14, 16-17.
@@ -236,6 +242,7 @@ def adaptive_sail(sail_previous: float, vdot_star: float, vdot: float, psi_aw: f
     return side * min(star, limit)  # Viel eq. 17 (slow down)
 
 
+@register_jitable
 def desired_acceleration(v: float, u: float, theta: float, theta_tilde: float, distance: float,
                          k_v: float, k_p: float) -> float:
     """vdot* = -k_v (v - v0) + k_p d_ST [m/s^2], v0 = max(0, u tan(theta - theta_tilde)), eq. 18.
@@ -261,6 +268,7 @@ def desired_acceleration(v: float, u: float, theta: float, theta_tilde: float, d
     return -k_v * (v - v0) + k_p * distance  # Viel eq. 18
 
 
+@register_jitable
 def go_round(theta_star: float, alpha: float, psi_tw: float, distance: float, d_T: float,
              d_M: float) -> tuple[float, bool]:
     """Step 2: (theta*, turned) — turn theta* by +-pi/2 in the pre-arrival area when the direct
@@ -288,6 +296,7 @@ def go_round(theta_star: float, alpha: float, psi_tw: float, distance: float, d_
     return theta_star, False
 
 
+@register_jitable
 def tack(theta_star: float, psi_tw: float, delta: float, q: int) -> tuple[float, int, bool]:
     """Step 3: (theta_bar, q, in_dead_area). q in {-1, 1}; 0 means not chosen yet.
 

@@ -287,6 +287,14 @@ _VIEWS = tuple((i, ...) for i in range(22))  # the 0-d views of the fast path's 
 _NUMBERS = frozenset((float, np.float64))  # what the fast path takes for a Truth's number
 
 
+def builtin_tables() -> bool:
+    """Whether :data:`OBSERVATION` and :data:`TRUE_STATE` hold just the built-in readers, in their
+    order (no measurement added or replaced at run time): then the observation's fast paths, and
+    the compiled closed loops (:mod:`sailmujoco.loop`), which write these readers out, apply."""
+    return (TRUE_STATE == _BUILTIN_STATE and OBSERVATION == _BUILTIN_OBSERVATION
+            and tuple(TRUE_STATE) == _STATE_KEYS and tuple(OBSERVATION) == _OBSERVATION_KEYS)
+
+
 def observe(truth: Truth) -> dict:
     """The observation of a world's truth: each key of :data:`OBSERVATION`, then
     ``true_state`` (each key of :data:`TRUE_STATE`, then the world's wrenches).
@@ -303,8 +311,7 @@ def observe(truth: Truth) -> dict:
     dict
         The observation, ``true_state`` nested.
     """
-    if (TRUE_STATE == _BUILTIN_STATE and OBSERVATION == _BUILTIN_OBSERVATION
-            and tuple(TRUE_STATE) == _STATE_KEYS and tuple(OBSERVATION) == _OBSERVATION_KEYS):
+    if builtin_tables():
         observation = _observe_builtin(truth)
         if observation is not None:
             return observation
