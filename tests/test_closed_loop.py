@@ -15,6 +15,10 @@ import numpy as np
 import pytest
 
 from sailmujoco import suite
+from sailmujoco.forces.wind import WindConfig
+from sailmujoco.physics import BoatPhysics
+from sailmujoco.tasks.environment import SailEnvironment
+from sailmujoco.tasks.position import PositionKeeping
 from sailmujoco.controllers.factories import Bounded
 from sailmujoco.controllers.viel import VielController
 from sailmujoco.loop import episode
@@ -24,9 +28,15 @@ from sailmujoco.sweep.runs import execute
 GAINS = {"d_M": 14.0, "d_T": 7.0, "k_s": 5.0, "k_p": 1.0, "k_v": 8.0}
 
 
-def _viel_pair(case=1, seed=0, start=(-30.0, 40.0), duration=30.0, params=None, target=None):
-    env = suite.load("wille_yacht", "position_keeping", "paper", seed=seed, time_limit=duration,
-                     control_timestep=0.01, case=case, start=start)
+def _viel_pair(case=1, seed=0, start=(-30.0, 40.0), duration=30.0, params=None, target=None, boat="wille_yacht",
+               world="paper", wind=None):
+    if wind is None:
+        env = suite.load(boat, "position_keeping", world, seed=seed, time_limit=duration, control_timestep=0.01,
+                         case=case, start=start)
+    else:  # a MuJoCo boat in a wind of the test's own (gusts, wander), built as the studies build theirs
+        physics = BoatPhysics.load(boat, sail_mode="actuated", wind=wind)
+        env = SailEnvironment(physics, PositionKeeping(seed=seed, case=case, start=start), time_limit=duration,
+                              control_timestep=0.01, legacy_step=False)
     if params:
         env.physics.world.params = dataclasses.replace(env.physics.world.params, **params)
     if target is None:
@@ -47,11 +57,16 @@ def _python_steps(env, controller, timestep, rewards):
 
 def _outcome(env, controller, timestep, rewards):
     """Everything the episode leaves, as exact bytes and reprs."""
-    law, world, task = controller.controller, env.physics.world, env.task
+    law, physics, task = controller.controller, env.physics, env.task
     records = [{k: (np.asarray(v).tobytes() if isinstance(v, np.ndarray) else repr(v)) for k, v in r.items()}
                for r in task._records]
-    return {"records": records, "final_rewards": repr(rewards[-1:]), "state": world._state.tobytes(),
-            "time": repr(world.time), "action": world._action.tobytes(), "sail": repr(law.sail), "q": law.q,
+    if isinstance(physics, BoatPhysics):
+        d = physics.data.ptr
+        state = (d.qpos.tobytes(), d.qvel.tobytes(), d.act.tobytes(), d.ctrl.tobytes(), repr(d.time),
+                 repr(physics.stop_reason))
+    else:
+        state = (physics.world._state.tobytes(), repr(physics.world.time), physics.world._action.tobytes())
+    return {"records": records, "rewards": repr(rewards), "state": state, "sail": repr(law.sail), "q": law.q,
             "v_previous": repr(law.v_previous), "info": repr(law.info), "metrics": repr(task.metrics()),
             "steps": env._step_count, "last": timestep.last(), "reward": repr(timestep.reward),
             "observation": repr(timestep.observation)}
@@ -67,14 +82,12 @@ def _python(**pair):
 def _compiled(n_steps=None, **pair):
     """The episode through the compiled loop for ``n_steps`` (all it can take by default), then Python."""
     env, controller = _viel_pair(**pair)
-    timestep = env.reset()
-    assert episode.compiled_loop(env, controller) is not None
-    if n_steps is None:
-        taken, _, timestep = episode.run_compiled(env, controller)
-    else:
-        taken = episode._viel_paper(env, controller, n_steps)[0]
-        timestep = env.after_physics()
-    rewards = [timestep.reward]
+    env.reset()
+    loop = episode.compiled_loop(env, controller)
+    assert loop is not None
+    taken, _, compiled_rewards, finish = loop(env, controller, env.steps_left() if n_steps is None else n_steps)
+    timestep = finish()
+    rewards = [*compiled_rewards[:taken - 1].tolist(), timestep.reward]
     timestep = _python_steps(env, controller, timestep, rewards)
     return _outcome(env, controller, timestep, rewards), taken
 
@@ -84,7 +97,10 @@ def _compiled(n_steps=None, **pair):
     dict(case=6, seed=3),  # speed and direction oscillating at 1 Hz (Viel case 6)
     dict(case=2, seed=1, start=(2.0, -3.0)),  # inside the target area from the start: steps 19-22
     dict(case=5, seed=2, target=(12.0, -8.0)),  # the controller's own target, not the task's
-], ids=["case1", "case6", "inside", "own_target"])
+    dict(case=1, seed=0, boat="viel_boat", world="mujoco"),  # 6-DOF MuJoCo boats
+    dict(case=6, seed=2, boat="saoud_robot", world="mujoco"),
+    dict(case=1, seed=5, boat="wille_yacht", wind=WindConfig(speed=9.0, direction_from=2.0, seed=5)),  # gusts, wander
+], ids=["case1", "case6", "inside", "own_target", "viel_boat", "saoud_robot", "yacht_gusts"])
 def test_compiled_episode_is_the_python_episode(pair):
     reference, steps = _python(**pair)
     compiled, taken = _compiled(**pair)
@@ -113,6 +129,17 @@ def test_a_world_that_fails_mid_episode_fails_in_python_words(params, stop_step)
     assert compiled == reference
 
 
+def test_a_capsize_stops_the_compiled_episode_as_the_python_one():
+    """The yacht in a 40 m/s gusty wind capsizes in step 717: the loop ends with that step, the
+    Python path gives its TimeStep (the stop's reward, the reason in the metrics)."""
+    pair = dict(boat="wille_yacht", wind=WindConfig(speed=40.0, direction_from=2.0, seed=3), seed=0)
+    reference, steps = _python(**pair)
+    compiled, taken = _compiled(**pair)
+    assert steps == taken == 717
+    assert "capsized" in compiled["metrics"]
+    assert compiled == reference
+
+
 def test_an_observation_python_rejects_is_rejected_before_any_step():
     env, controller = _viel_pair(target=(math.nan, 0.0))
     env.reset()
@@ -124,7 +151,10 @@ def test_pairs_without_a_compiled_loop_step_in_python():
     env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01)
     controller = make_controller("viel", env)
     env.reset()
-    assert episode.compiled_loop(env, controller) is None  # the MuJoCo world
+    assert episode.compiled_loop(env, controller) is not None  # the 6-DOF MuJoCo world
+    env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01, dofs=4)
+    env.reset()
+    assert episode.compiled_loop(env, make_controller("viel", env)) is None  # heave and pitch held
     env = suite.load("wille_yacht", "position_keeping", "paper", seed=0, time_limit=1.0,
                      control_timestep=0.01, sensors="typical")
     env.reset()
@@ -146,3 +176,11 @@ def test_the_sweep_runner_gives_the_same_record_either_way(monkeypatch):
     assert len(fast["trajectory"]) == int(20.0 * 3.0)
     assert repr(fast["metrics"]) == repr(slow["metrics"])
     assert repr(fast["trajectory"]) == repr(slow["trajectory"])
+
+
+def test_the_truth_names_mujocos_site_object_type():
+    import mujoco
+
+    from sailmujoco.loop import truth
+
+    assert truth._SITE == int(mujoco.mjtObj.mjOBJ_SITE)

@@ -1,8 +1,9 @@
 """MuJoCo's C functions called from compiled code, and the address of mjData.time.
 
 The compiled step (:mod:`sailmujoco.step.native`) calls ``mj_step``, ``mj_step1``, ``mj_step2``
-and ``mj_factorM`` of the C library the Python bindings loaded (the same process-wide
-callbacks) and reads the simulation time from the MjData struct. It reaches them through
+and ``mj_factorM``, the compiled closed loop (:mod:`sailmujoco.loop`) also ``mj_kinematics``,
+``mj_comPos``, ``mj_comVel``, ``mj_objectVelocity`` and ``mju_quat2Mat``, of the C library the
+Python bindings loaded (the same process-wide callbacks), and reads the simulation time from the MjData struct. It reaches them through
 symbols it names, which LLVM resolves when it loads the code: the machine code holds no address
 of this process, so numba caches it on disk like the force kernels (compiling it costs several
 seconds per process otherwise).
@@ -25,7 +26,8 @@ from numba.extending import intrinsic
 _LIB = ctypes.CDLL(str(next(Path(mujoco.__file__).parent.glob("libmujoco.so.*"))))
 
 _SYMBOLS = {f"sailmujoco_{name}": ctypes.cast(getattr(_LIB, name), ctypes.c_void_p).value
-            for name in ("mj_step", "mj_step1", "mj_step2", "mj_factorM")}
+            for name in ("mj_step", "mj_step1", "mj_step2", "mj_factorM", "mj_kinematics", "mj_comPos",
+                         "mj_comVel", "mj_objectVelocity", "mju_quat2Mat")}
 for _name, _value in _SYMBOLS.items():
     llvm.add_symbol(_name, _value)
 
@@ -46,6 +48,35 @@ mj_step = _mujoco_call("sailmujoco_mj_step")
 mj_step1 = _mujoco_call("sailmujoco_mj_step1")
 mj_step2 = _mujoco_call("sailmujoco_mj_step2")
 mj_factorM = _mujoco_call("sailmujoco_mj_factorM")
+mj_kinematics = _mujoco_call("sailmujoco_mj_kinematics")
+mj_comPos = _mujoco_call("sailmujoco_mj_comPos")
+mj_comVel = _mujoco_call("sailmujoco_mj_comVel")
+
+
+@intrinsic
+def mj_objectVelocity(typingctx, m, d, objtype, objid, res, flg_local):
+    """MuJoCo's ``mj_objectVelocity(m, d, objtype, objid, res, flg_local)`` from compiled code:
+    ``res`` a C pointer to 6 doubles (``pointer(array.ctypes.data)``), the ints int64."""
+    def codegen(context, builder, signature, args):
+        i32 = ir.IntType(32)
+        fnty = ir.FunctionType(ir.VoidType(), [cgutils.voidptr_t, cgutils.voidptr_t, i32, i32,
+                                               cgutils.voidptr_t, i32])
+        m_, d_, objtype_, objid_, res_, local_ = args
+        builder.call(cgutils.get_or_insert_function(builder.module, fnty, "sailmujoco_mj_objectVelocity"),
+                     [m_, d_, builder.trunc(objtype_, i32), builder.trunc(objid_, i32), res_,
+                      builder.trunc(local_, i32)])
+        return context.get_dummy_value()
+    return types.void(types.voidptr, types.voidptr, types.int64, types.int64, types.voidptr, types.int64), codegen
+
+
+@intrinsic
+def mju_quat2Mat(typingctx, res, quat):
+    """MuJoCo's ``mju_quat2Mat(res, quat)`` from compiled code: C pointers to 9 and 4 doubles."""
+    def codegen(context, builder, signature, args):
+        fnty = ir.FunctionType(ir.VoidType(), [cgutils.voidptr_t, cgutils.voidptr_t])
+        builder.call(cgutils.get_or_insert_function(builder.module, fnty, "sailmujoco_mju_quat2Mat"), args)
+        return context.get_dummy_value()
+    return types.void(types.voidptr, types.voidptr), codegen
 
 
 def symbol_address(symbol: str):
