@@ -85,7 +85,7 @@ def _compiled(n_steps=None, **pair):
     env.reset()
     loop = episode.compiled_loop(env, controller)
     assert loop is not None
-    taken, _, compiled_rewards, finish = loop(env, controller, env.steps_left() if n_steps is None else n_steps)
+    taken, _, compiled_rewards, _, finish = loop(env, controller, env.steps_left() if n_steps is None else n_steps)
     timestep = finish()
     rewards = [*compiled_rewards[:taken - 1].tolist(), timestep.reward]
     timestep = _python_steps(env, controller, timestep, rewards)
@@ -176,6 +176,26 @@ def test_the_sweep_runner_gives_the_same_record_either_way(monkeypatch):
     assert len(fast["trajectory"]) == int(20.0 * 3.0)
     assert repr(fast["metrics"]) == repr(slow["metrics"])
     assert repr(fast["trajectory"]) == repr(slow["trajectory"])
+
+
+@pytest.mark.parametrize("boat, world", [("wille_yacht", "paper"), ("saoud_robot", "mujoco")])
+def test_rollout_gives_the_same_rows_either_way(monkeypatch, boat, world):
+    """suite.rollout's default rows (every step's state, heel in degrees, speed over ground ...)."""
+    def frame():
+        env = suite.load(boat, "position_keeping", world, seed=2, time_limit=5.0, control_timestep=0.01, case=4)
+        controller = make_controller("viel", env)
+        covered.append(episode.compiled_loop(env, controller) is not None)
+        return suite.rollout(env, controller), env.task.metrics()
+
+    covered = []
+
+    fast, fast_metrics = frame()
+    monkeypatch.setenv("SAILMUJOCO_PYTHON_LOOP", "1")
+    slow, slow_metrics = frame()
+    assert covered == [True, True]  # the pair is one the compiled loop covers
+    assert len(fast) == 501 and list(fast.columns) == list(slow.columns)
+    assert fast.to_numpy().tobytes() == slow.to_numpy().tobytes()
+    assert repr(fast_metrics) == repr(slow_metrics)
 
 
 def test_the_truth_names_mujocos_site_object_type():

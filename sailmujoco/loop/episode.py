@@ -21,6 +21,7 @@ steps in Python as before.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 
@@ -42,8 +43,8 @@ def compiled_loop(env, controller):
     Returns
     -------
     callable or None
-        ``loop(env, controller, n_steps) -> (taken, rows, rewards, finish)``: ``finish()`` gives
-        the TimeStep of the last step taken.
+        ``loop(env, controller, n_steps) -> (taken, rows, rewards, actions, finish)``:
+        ``finish()`` gives the TimeStep of the last step taken.
     """
     import numba
 
@@ -86,7 +87,32 @@ def compiled_loop(env, controller):
     return None
 
 
-def run_compiled(env, controller, every: int = 0):
+class CompiledEpisode(NamedTuple):
+    """What :func:`run_compiled` hands back.
+
+    Parameters
+    ----------
+    steps : int
+        The control steps taken.
+    rows : numpy.ndarray, shape (steps - 1, truth.SIZE)
+        The truth (:mod:`sailmujoco.loop.truth`) of the state after each step but the last.
+    rewards : numpy.ndarray, shape (steps - 1,)
+        The reward of each of those states.
+    actions : numpy.ndarray, shape (steps, 3)
+        The command of every step (rudder, sail; ours, rad) and the controller's mode code
+        (:data:`sailmujoco.loop.viel_control.MODES`).
+    timestep : dm_env.TimeStep
+        The TimeStep of the last step (the Python path's own), from which the caller goes on.
+    """
+
+    steps: int
+    rows: np.ndarray
+    rewards: np.ndarray
+    actions: np.ndarray
+    timestep: object
+
+
+def run_compiled(env, controller) -> CompiledEpisode | None:
     """Run the episode of ``env`` (just reset) under ``controller`` by its compiled loop.
 
     Parameters
@@ -95,26 +121,20 @@ def run_compiled(env, controller, every: int = 0):
         The environment, reset, before its first step.
     controller : callable
         Its controller, reset.
-    every : int
-        Keep the trajectory sample of every ``every``-th step (0: none), as
-        :func:`sailmujoco.sweep.runs.execute` keeps them.
 
     Returns
     -------
-    tuple or None
-        None when no compiled loop covers the pair (nothing has been touched); else (steps,
-        samples, timestep): the control steps taken, the trajectory samples of steps 1 ..
-        steps - 1, and the TimeStep of the last step taken (the Python path's own), from which
-        the caller goes on.
+    CompiledEpisode or None
+        None when no compiled loop covers the pair or it could not take a step (nothing has
+        been touched: the caller steps in Python).
     """
     loop = compiled_loop(env, controller)
     if loop is None or math.isinf(env._step_limit) or env.steps_left() < MIN_STEPS:
         return None
-    taken, rows, _, finish = loop(env, controller, env.steps_left())
+    taken, rows, rewards, actions, finish = loop(env, controller, env.steps_left())
     if taken == 0:
         return None
-    samples = [trajectory_sample(rows[step - 1]) for step in range(every, taken, every)] if every else []
-    return taken, samples, finish()
+    return CompiledEpisode(taken, rows[:taken - 1], rewards[:taken - 1], actions[:taken], finish())
 
 
 def trajectory_sample(row) -> dict:
@@ -124,6 +144,19 @@ def trajectory_sample(row) -> dict:
     return {"t": float(row[T.TIME]), "x": float(row[T.X]), "y": float(row[T.Y]),
             "heading": float(row[T.HEADING]), "heel": float(row[T.HEEL]), "pitch": float(row[T.PITCH]),
             "u": float(row[T.U])}
+
+
+def rollout_row(row) -> dict:
+    """``suite.rollout``'s default row of a truth row: the same values by the same operations."""
+    from . import truth as T
+
+    heel = float(row[T.HEEL])
+    return {"t": float(row[T.TIME]), "x": float(row[T.X]), "y": float(row[T.Y]),
+            "heading": float(row[T.HEADING]), "heel": heel, "heel_deg": math.degrees(heel),
+            "roll_rate": float(row[T.P]), "yaw_rate": float(row[T.R]), "u": float(row[T.U]),
+            "v": float(row[T.V]), "speed": math.hypot(row[T.EAST], row[T.NORTH]),
+            "rudder": float(row[T.RUDDER]), "sail": float(row[T.SAIL]), "awa": float(row[T.AWA]),
+            "aws": float(row[T.AWS])}
 
 
 def record(row: list) -> dict:
@@ -188,14 +221,15 @@ def _viel_world(env, controller, n_steps: int):
                                                p.sail_max, world.wind_height]])
     numbers, tables, law, bounds, task, memory = _numbers(env, controller, world.wind)
     state, action, time = np.empty(6), np.empty(4), np.empty(1)
-    rows, rewards, info = np.empty((n_steps, T.SIZE)), np.empty(n_steps), np.empty(5)
+    rows, rewards, actions, info = _buffers(n_steps)
     taken = _call(episode)(n_steps, float(world.time), world._state.copy(), world._action.copy(), packed,
-                           numbers, tables, law, bounds, task, memory, state, action, time, rows, rewards, info)
+                           numbers, tables, law, bounds, task, memory, state, action, time, rows, rewards, actions,
+                           info)
     if taken:
         world._state, world._time, world._action = state, float(time[0]), action[:2].copy()
         physics._control = action[2:].copy()
         _sync_controller_and_task(env, controller, taken, rows, memory, info)
-    return taken, rows, rewards, env.after_physics
+    return taken, rows, rewards, actions, env.after_physics
 
 
 def _mujoco_world(env, controller, n_steps: int):
@@ -214,16 +248,16 @@ def _mujoco_world(env, controller, n_steps: int):
     numbers, tables, law, bounds, task, memory = _numbers(env, controller, physics.wind)
     rudder_at, _, sail_at, _ = physics._idx.tolist()
     site = mujoco.mj_name2id(m, mujoco.mjtObj.mjOBJ_SITE, "masthead")
-    rows, rewards, info = np.empty((n_steps, T.SIZE)), np.empty(n_steps), np.empty(5)
+    rows, rewards, actions, info = _buffers(n_steps)
     outcome = np.zeros(3, dtype=np.int64)
     with native.Stepping(d._address, physics._row) as slots:
         taken = _call(episode)(n_steps, m._address, d._address, n_sub, d.qpos, d.qvel, d.ctrl, d.site_xpos, site,
                                rudder_at, sail_at, registry.REGISTRY[slots[0]], physics._diag, physics._saved,
                                physics._warnings, physics._warnings_before, bool(physics._warnings_cause_exception),
                                numbers, tables, physics.wind.current, law, bounds, task, memory, rows, rewards,
-                               info, outcome)
+                               actions, info, outcome)
     if not taken:
-        return taken, rows, rewards, None
+        return taken, rows, rewards, actions, None
     physics._status = int(outcome[2])
     _sync_controller_and_task(env, controller, taken, rows, memory, info)
     status, warned = int(outcome[0]), bool(outcome[1])
@@ -234,9 +268,16 @@ def _mujoco_world(env, controller, n_steps: int):
                              f"non-finite or out-of-range state ({physics._warnings_message()})")
     if physics.stop_reason is not None:
         physics._fresh = True  # the stop left it as the truth before the step made it
-        return taken, rows, rewards, lambda: env.stopped_step(physics.stop_reason)
+        return taken, rows, rewards, actions, lambda: env.stopped_step(physics.stop_reason)
     physics._fresh = False
-    return taken, rows, rewards, env.after_physics
+    return taken, rows, rewards, actions, env.after_physics
+
+
+def _buffers(n_steps: int) -> tuple:
+    """What a loop fills: the truth rows, rewards, actions (with modes) and the law's info."""
+    from . import truth as T
+
+    return np.empty((n_steps, T.SIZE)), np.empty(n_steps), np.empty((n_steps, 3)), np.empty(5)
 
 
 _ENTRIES: dict = {}

@@ -33,8 +33,8 @@ from .viel_control import OK, viel_command
 
 @kernel
 def episode(n_steps, m_address, d_address, n_sub, qpos, qvel, ctrl, site_xpos, site, rudder_at, sail_at, row,
-            diag, saved, warnings, warnings_before, warnings_stop, wind, tables, current, law, bounds, task, memory, rows, rewards, info,
-            outcome):
+            diag, saved, warnings, warnings_before, warnings_stop, wind, tables, current, law, bounds, task, memory,
+            rows, rewards, actions, info, outcome):
     """Up to ``n_steps`` control steps of the closed loop on a 6-DOF MuJoCo boat; see the module.
 
     Parameters
@@ -75,6 +75,8 @@ def episode(n_steps, m_address, d_address, n_sub, qpos, qvel, ctrl, site_xpos, s
         Row k: the truth of the state after step k.
     rewards : numpy.ndarray, shape (n_steps,)
         Entry k: the reward of the state after step k.
+    actions : numpy.ndarray, shape (n_steps, 3)
+        Row k: the command of step k (rudder, sail; ours, rad) and the controller's mode code.
     outcome : numpy.ndarray of int64, shape (3,)
         Receives the physics' stop status of the last step taken (STATUS_OK if none), whether a
         new warning stopped it (1/0), and the force kernel's status at the last truth.
@@ -99,6 +101,7 @@ def episode(n_steps, m_address, d_address, n_sub, qpos, qvel, ctrl, site_xpos, s
             rewards[k - 1] = position_reward(truth, task)
         if viel_command(truth, task[0], task[1], law, bounds, memory, info, command) != OK:
             break
+        actions[k, 0], actions[k, 1], actions[k, 2] = command[0], command[1], info[0]
         ctrl[0], ctrl[1] = command[0], command[1]
         warnings_before[:] = warnings
         status, _, warned = _rk4_one(m_address, d_address, n_sub, row, saved)

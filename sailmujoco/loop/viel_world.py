@@ -31,7 +31,7 @@ from .viel_control import OK, viel_command
 
 @kernel
 def episode(n_steps, t0, state0, action0, world, wind, tables, law, bounds, task, memory, state_out,
-            action_out, time_out, rows, rewards, info):
+            action_out, time_out, rows, rewards, actions, info):
     """Up to ``n_steps`` control steps of the closed loop from (t0, state0); see the module.
 
     Parameters
@@ -72,6 +72,8 @@ def episode(n_steps, t0, state0, action0, world, wind, tables, law, bounds, task
         Row k: the truth of the state after step k.
     rewards : numpy.ndarray, shape (n_steps,)
         Entry k: the reward of the state after step k.
+    actions : numpy.ndarray, shape (n_steps, 3)
+        Row k: the command of step k (rudder, sail; ours, rad) and the controller's mode code.
     info : numpy.ndarray, shape (5,)
         Receives the controller's info of its last call (:data:`sailmujoco.loop.viel_control.INFO`).
 
@@ -104,6 +106,7 @@ def episode(n_steps, t0, state0, action0, world, wind, tables, law, bounds, task
         kept0, kept1, kept2, kept3 = memory[0], memory[1], memory[2], memory[3]
         if viel_command(truth, task[0], task[1], law, bounds, memory, info, command) != OK:
             break
+        actions[k, 0], actions[k, 1], actions[k, 2] = command[0], command[1], info[0]
         a0 = min(max(command[0], -rudder_max), rudder_max)  # VielWorld._checked_action
         a1 = min(max(command[1], -sail_max), sail_max)
         new = state.copy()

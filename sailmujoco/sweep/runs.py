@@ -12,7 +12,7 @@ import traceback
 from pathlib import Path
 
 from .. import __version__
-from ..loop.episode import run_compiled
+from ..loop.episode import run_compiled, trajectory_sample
 from ..progress import Progress
 from .controllers import make_controller
 from .engine import Engine
@@ -184,11 +184,13 @@ def execute(run: dict) -> dict:
         rate = run.get("trajectory_rate")
         every = max(1, int(round(1.0 / (rate * env.control_timestep())))) if rate else 0
         step = 0
-        compiled = None if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1" else run_compiled(env, controller, every)
+        compiled = None if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1" else run_compiled(env, controller)
         if compiled is not None:  # the same steps, bit for bit, in one native call (sailmujoco.loop)
-            step, trajectory, timestep = compiled
-            if every and step % every == 0:
-                trajectory.append(_trajectory_sample(timestep.observation))
+            step, timestep = compiled.steps, compiled.timestep
+            if every:
+                trajectory = [trajectory_sample(compiled.rows[k - 1]) for k in range(every, step, every)]
+                if step % every == 0:
+                    trajectory.append(_trajectory_sample(timestep.observation))
         while not timestep.last():
             timestep = env.step(controller(timestep))
             step += 1

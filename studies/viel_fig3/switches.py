@@ -9,12 +9,16 @@ the measures of :mod:`.measures`.
 from __future__ import annotations
 
 import math
+import os
 
 import numpy as np
 
 from sailmujoco import frames, suite, sweep
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.jit.ordered import elementwise
+from sailmujoco.loop import episode
+from sailmujoco.loop import truth as T
+from sailmujoco.loop.viel_control import MODES
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.tasks.environment import SailEnvironment
@@ -60,6 +64,27 @@ class StartedPositionKeeping(PositionKeeping):
         if self.heading_deg is not None:
             yaw = float(frames.yaw_from_heading(math.radians(self.heading_deg)))
             physics.place(tuple(self.start), yaw, self.surge)
+
+
+def _episode(env, policy, sample, sample_row, every: int) -> None:
+    """``suite.rollout(env, policy, record=sample)``, by the compiled closed loop where one covers
+    the pair (:mod:`sailmujoco.loop`: the same steps to the bit): ``sample_row`` is then fed the
+    same numbers from the steps' truth rows and commands, ``sample`` the last step's TimeStep."""
+    if hasattr(policy, "reset"):
+        policy.reset(env.task.seed)
+    timestep = env.reset()
+    sample(0, timestep, None)
+    compiled = None if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1" else episode.run_compiled(env, policy)
+    step = 0
+    if compiled is not None:
+        for k in range(every, compiled.steps, every):
+            sample_row(compiled.rows[k - 1], compiled.actions[k - 1])
+        timestep, step = compiled.timestep, compiled.steps
+        sample(step, timestep, compiled.actions[-1, :2].copy())
+    while not timestep.last():
+        action = policy(timestep)
+        timestep, step = env.step(action), step + 1
+        sample(step, timestep, action)
 
 
 def simulate(spec: dict) -> dict:
@@ -121,7 +146,19 @@ def simulate(spec: dict) -> dict:
         samples["heel"].append(float(o["heel"]))
         samples["mode"].append(policy.info.get("mode", ""))
 
-    suite.rollout(env, policy, record=sample)
+    def sample_row(row, command):  # the same, from a compiled step's truth row and command
+        t.append(float(row[T.TIME]))
+        x.append(float(row[T.X]))
+        y.append(float(row[T.Y]))
+        samples["surge"].append(float(row[T.U]))
+        samples["sway"].append(float(row[T.V]))
+        samples["sail"].append(float(command[1]))
+        samples["awa"].append(float(row[T.AWA]))
+        samples["rudder"].append(float(command[0]))
+        samples["heel"].append(float(row[T.HEEL]))
+        samples["mode"].append(MODES[int(command[2])])
+
+    _episode(env, policy, sample, sample_row, every)
     metrics = env.task.metrics()
     out = {**spec, "d_T": d_t, "d_M": d_m, "status": "stopped" if metrics.get("stopped") else "ok",
            **{k: float(metrics[k]) for k in ("entered_at", "max_distance_after_entry",
