@@ -72,7 +72,7 @@ def compiled_loop(env, controller):
         return None
     if (not task.sensors.perfect or not task.actuators.perfect or task._servos is not None
             or task._instruments is not None or not task.include_true_state or env._flat_observation
-            or env._reset_next_step or not observation.builtin_tables()
+            or not observation.builtin_tables()
             or getattr(physics, "stop_reason", None)):
         return None
     if type(physics) is VielPhysics:
@@ -129,7 +129,7 @@ def run_compiled(env, controller) -> CompiledEpisode | None:
         been touched: the caller steps in Python).
     """
     loop = compiled_loop(env, controller)
-    if loop is None or math.isinf(env._step_limit) or env.steps_left() < MIN_STEPS:
+    if loop is None or env._reset_next_step or math.isinf(env._step_limit) or env.steps_left() < MIN_STEPS:
         return None
     taken, rows, rewards, actions, finish = loop(env, controller, env.steps_left())
     if taken == 0:
