@@ -64,6 +64,18 @@ class Bounded:
         """
         return np.clip(self.controller(timestep), self.low, self.high)
 
+    def compiled_episode(self, env):
+        """The wrapped controller's compiled episode (:mod:`sailmujoco.loop.episode`) with this
+        clip, or None if it offers none.
+
+        Parameters
+        ----------
+        env : sailmujoco.tasks.environment.SailEnvironment
+            The environment, reset.
+        """
+        offer = getattr(self.controller, "compiled_episode", None)
+        return None if offer is None else offer(env, self.low, self.high)
+
     def __getattr__(self, name):
         # only for attributes not found on self; before __init__ or __setstate__ has set
         # ``controller`` (copy and pickle build the object bare) there is nothing to forward to

@@ -25,8 +25,8 @@ as keywords next to the task's options::
 from __future__ import annotations
 
 import inspect
-import os
 import math
+import os
 
 import numpy as np
 

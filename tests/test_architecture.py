@@ -42,7 +42,7 @@ WORLD_TYPES = {"BoatPhysics", "PaperPhysics", "VielPhysics", "Wille4DOF", "VielW
 PHYSICS_NAMES = {"physics", "boat"}  # names that hold a physics object
 PHYSICS_ATTRIBUTES = {"physics", "_physics"}  # x.physics, env.physics, self._physics
 # the physics' own modules: BoatPhysics and its parts (mixins) and the compiled step
-PHYSICS_MODULES = {"sailmujoco/physics.py", "sailmujoco/step/native.py"}
+PHYSICS_MODULES = {"sailmujoco/physics.py", "sailmujoco/step/native.py", "sailmujoco/step/closed_loop.py"}
 
 
 def _modules() -> dict[str, tuple[Path, bool]]:

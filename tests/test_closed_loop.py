@@ -13,30 +13,31 @@ import math
 
 import numpy as np
 import pytest
+from sailmujoco.controllers import viel_loop
+from sailmujoco.controllers.factories import Bounded
+from sailmujoco.controllers.viel import VielController
 
 from sailmujoco import suite
 from sailmujoco.forces.wind import WindConfig
-from sailmujoco.physics import BoatPhysics
-from sailmujoco.tasks.environment import SailEnvironment
-from sailmujoco.tasks.position import PositionKeeping
-from sailmujoco.controllers.factories import Bounded
-from sailmujoco.controllers.viel import VielController
 from sailmujoco.loop import episode
+from sailmujoco.physics import BoatPhysics
 from sailmujoco.sweep.controllers import make_controller
 from sailmujoco.sweep.runs import execute
+from sailmujoco.tasks.environment import SailEnvironment
+from sailmujoco.tasks.position import PositionKeeping
 
 GAINS = {"d_M": 14.0, "d_T": 7.0, "k_s": 5.0, "k_p": 1.0, "k_v": 8.0}
 
 
-def _viel_pair(case=1, seed=0, start=(-30.0, 40.0), duration=30.0, params=None, target=None, boat="wille_yacht",
-               world="paper", wind=None):
+def _viel_pair(case=1, seed=0, start=(-30.0, 40.0), duration=30.0, params=None, target=None,
+               boat="wille_yacht", world="paper", wind=None):
     if wind is None:
-        env = suite.load(boat, "position_keeping", world, seed=seed, time_limit=duration, control_timestep=0.01,
-                         case=case, start=start)
+        env = suite.load(boat, "position_keeping", world, seed=seed, time_limit=duration,
+                         control_timestep=0.01, case=case, start=start)
     else:  # a MuJoCo boat in a wind of the test's own (gusts, wander), built as the studies build theirs
         physics = BoatPhysics.load(boat, sail_mode="actuated", wind=wind)
-        env = SailEnvironment(physics, PositionKeeping(seed=seed, case=case, start=start), time_limit=duration,
-                              control_timestep=0.01, legacy_step=False)
+        env = SailEnvironment(physics, PositionKeeping(seed=seed, case=case, start=start),
+                              time_limit=duration, control_timestep=0.01, legacy_step=False)
     if params:
         env.physics.world.params = dataclasses.replace(env.physics.world.params, **params)
     if target is None:
@@ -83,13 +84,12 @@ def _compiled(n_steps=None, **pair):
     """The episode through the compiled loop for ``n_steps`` (all it can take by default), then Python."""
     env, controller = _viel_pair(**pair)
     env.reset()
-    loop = episode.compiled_loop(env, controller)
-    assert loop is not None
-    taken, _, compiled_rewards, _, finish = loop(env, controller, env.steps_left() if n_steps is None else n_steps)
-    timestep = finish()
-    rewards = [*compiled_rewards[:taken - 1].tolist(), timestep.reward]
-    timestep = _python_steps(env, controller, timestep, rewards)
-    return _outcome(env, controller, timestep, rewards), taken
+    law, low, high = controller.controller, controller.low, controller.high
+    compiled = viel_loop.compiled_episode(law, env, low, high, n_steps)
+    assert compiled is not None
+    rewards = [*compiled.rewards.tolist(), compiled.timestep.reward]
+    timestep = _python_steps(env, controller, compiled.timestep, rewards)
+    return _outcome(env, controller, timestep, rewards), compiled.steps
 
 
 @pytest.mark.parametrize("pair", [
@@ -99,7 +99,8 @@ def _compiled(n_steps=None, **pair):
     dict(case=5, seed=2, target=(12.0, -8.0)),  # the controller's own target, not the task's
     dict(case=1, seed=0, boat="viel_boat", world="mujoco"),  # 6-DOF MuJoCo boats
     dict(case=6, seed=2, boat="saoud_robot", world="mujoco"),
-    dict(case=1, seed=5, boat="wille_yacht", wind=WindConfig(speed=9.0, direction_from=2.0, seed=5)),  # gusts, wander
+    dict(case=1, seed=5, boat="wille_yacht",  # gusts and wander
+         wind=WindConfig(speed=9.0, direction_from=2.0, seed=5)),
 ], ids=["case1", "case6", "inside", "own_target", "viel_boat", "saoud_robot", "yacht_gusts"])
 def test_compiled_episode_is_the_python_episode(pair):
     reference, steps = _python(**pair)
@@ -143,25 +144,27 @@ def test_a_capsize_stops_the_compiled_episode_as_the_python_one():
 def test_an_observation_python_rejects_is_rejected_before_any_step():
     env, controller = _viel_pair(target=(math.nan, 0.0))
     env.reset()
-    assert episode.run_compiled(env, controller) is None
+    assert episode.run_compiled(env, controller) is None  # viel_view raises on the first step
     assert env._step_count == 0 and env.physics.world.time == 0.0 and env.task._records == []
 
 
 def test_pairs_without_a_compiled_loop_step_in_python():
+    def offered(env, controller):
+        env.reset()
+        compiled = episode.run_compiled(env, controller)
+        untouched = env.task.metrics()["duration"] == 0.0 and env.physics.time() == 0.0
+        return compiled is not None, untouched
+
     env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01)
-    controller = make_controller("viel", env)
-    env.reset()
-    assert episode.compiled_loop(env, controller) is not None  # the 6-DOF MuJoCo world
-    env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01, dofs=4)
-    env.reset()
-    assert episode.compiled_loop(env, make_controller("viel", env)) is None  # heave and pitch held
-    env = suite.load("wille_yacht", "position_keeping", "paper", seed=0, time_limit=1.0,
-                     control_timestep=0.01, sensors="typical")
-    env.reset()
-    assert episode.compiled_loop(env, make_controller("viel", env)) is None  # instruments with noise
-    env = suite.load("wille_yacht", "position_keeping", "paper", seed=0, time_limit=1.0, control_timestep=0.01)
-    env.reset()
-    assert episode.compiled_loop(env, make_controller("pid", env)) is None  # another controller
+    assert offered(env, make_controller("viel", env))[0]  # the 6-DOF MuJoCo world: covered
+    for options in ({"dofs": 4}, {"sensors": "typical"}, {"actuators": "typical"}):  # heave and pitch held,
+        env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01,
+                         **options)  # instruments with noise, servos
+        assert offered(env, make_controller("viel", env)) == (False, True), options
+    env = suite.load("saoud_robot", "heading_hold", seed=0, time_limit=1.0, control_timestep=0.01)
+    assert offered(env, make_controller("viel", env)) == (False, True)  # another task
+    env = suite.load("saoud_robot", "position_keeping", seed=0, time_limit=1.0, control_timestep=0.01)
+    assert offered(env, make_controller("pid", env)) == (False, True)  # a controller that offers none
 
 
 def test_the_sweep_runner_gives_the_same_record_either_way(monkeypatch):
@@ -182,9 +185,11 @@ def test_the_sweep_runner_gives_the_same_record_either_way(monkeypatch):
 def test_rollout_gives_the_same_rows_either_way(monkeypatch, boat, world):
     """suite.rollout's default rows (every step's state, heel in degrees, speed over ground ...)."""
     def frame():
-        env = suite.load(boat, "position_keeping", world, seed=2, time_limit=5.0, control_timestep=0.01, case=4)
+        env = suite.load(boat, "position_keeping", world, seed=2, time_limit=5.0, control_timestep=0.01,
+                         case=4)
         controller = make_controller("viel", env)
-        covered.append(episode.compiled_loop(env, controller) is not None)
+        offer = controller.compiled_episode
+        controller.compiled_episode = lambda env: covered.append(offer(env)) or covered[-1]
         return suite.rollout(env, controller), env.task.metrics()
 
     covered = []
@@ -192,7 +197,7 @@ def test_rollout_gives_the_same_rows_either_way(monkeypatch, boat, world):
     fast, fast_metrics = frame()
     monkeypatch.setenv("SAILMUJOCO_PYTHON_LOOP", "1")
     slow, slow_metrics = frame()
-    assert covered == [True, True]  # the pair is one the compiled loop covers
+    assert len(covered) == 1 and covered[0] is not None  # only the first run took the compiled loop
     assert len(fast) == 501 and list(fast.columns) == list(slow.columns)
     assert fast.to_numpy().tobytes() == slow.to_numpy().tobytes()
     assert repr(fast_metrics) == repr(slow_metrics)

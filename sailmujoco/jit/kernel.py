@@ -25,10 +25,12 @@ from . import notice
 
 _PACKAGE = Path(__file__).resolve().parents[1]
 # Every file whose code is compiled into a cached kernel: the kernels and the step (step/), the
-# paper worlds' kernels (which call forces/), this decorator's flags, frames.wrap_angle (inlined
-# where it is called) and hull_grid.py (its grid size is frozen into the sea's scratch size).
+# paper worlds' kernels (which call forces/), the compiled closed loop's pieces (loop/), this
+# decorator's flags, frames.wrap_angle (inlined where it is called) and hull_grid.py (its grid
+# size is frozen into the sea's scratch size).
 _SOURCES = sorted([*(_PACKAGE / "step").glob("*.py"), *(_PACKAGE / "forces").glob("*.py"),
-                   *(_PACKAGE / "reference").glob("*.py"), _PACKAGE / "jit" / "kernel.py",
+                   *(_PACKAGE / "reference").glob("*.py"), *(_PACKAGE / "loop").glob("*.py"),
+                   _PACKAGE / "jit" / "kernel.py",
                    _PACKAGE / "jit" / "ordered.py",
                    _PACKAGE / "frames.py", _PACKAGE / "boat" / "hull_grid.py"])
 
@@ -57,21 +59,36 @@ _clear_stale_cache()
 notice.install()
 
 
-def clear_stale_cache(module_file: str) -> None:
-    """For kernels outside the package's own modules (a controller's): empty the cache beside
-    ``module_file`` when it, or any package kernel its kernels may call, has changed.
+def clear_stale_cache(module_file: str, *also) -> None:
+    """For kernels outside the package's own modules (a controller's): empty their cache when
+    their module, any file in ``also``, or any package kernel they may call has changed.
 
     Parameters
     ----------
     module_file : str
         The path of the module whose kernels are cached (its ``__file__``). Its numba cache
-        files (``*.nbi``, ``*.nbc``) in the ``__pycache__`` folder beside it are deleted unless
-        the stamp there matches the SHA-256 digest of the package's kernel sources and this
-        file; the new digest is then written as the stamp. On a read-only install nothing is
-        done (numba caches elsewhere).
+        files (``<module>.*.nbi``, ``.nbc``) in the ``__pycache__`` folder beside it are deleted
+        unless that module's stamp there (``sailmujoco-kernels-<module>.stamp``) matches the
+        SHA-256 digest of the package's kernel sources, this file and ``also``; the new digest is
+        then written as the stamp. On a read-only install nothing is done (numba caches elsewhere).
+    *also : str or pathlib.Path
+        Other files the module's kernels compile in (a law whose functions they inline).
     """
     module = Path(module_file).resolve()
-    _clear_stale_cache((*_SOURCES, module), {module.parent / "__pycache__"})
+    sources = (*_SOURCES, module, *(Path(p).resolve() for p in also))
+    digest = hashlib.sha256(b"".join(p.read_bytes() for p in sources)).hexdigest()
+    cache_dir = module.parent / "__pycache__"
+    stamp = cache_dir / f"sailmujoco-kernels-{module.stem}.stamp"
+    try:
+        if stamp.exists() and stamp.read_text() == digest:
+            return
+        if cache_dir.exists():
+            for f in [*cache_dir.glob(f"{module.stem}.*.nbi"), *cache_dir.glob(f"{module.stem}.*.nbc")]:
+                f.unlink(missing_ok=True)
+        cache_dir.mkdir(exist_ok=True)
+        stamp.write_text(digest)
+    except OSError:  # read-only install: numba falls back to its own cache location
+        pass
 
 
 def kernel(fn=None, *, inline: bool = False):

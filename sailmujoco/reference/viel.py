@@ -273,6 +273,50 @@ class VielWorld:
         self._state, self._time, self._action = new, self._time + dt, applied
         return new.copy()
 
+    def loop_ready(self) -> bool:
+        """Whether a compiled closed loop can step this world: RK4 (:func:`advance`) in the wind
+        of :class:`~sailmujoco.forces.wind.WindField` itself (not a subclass's)."""
+        return self.integrator == "rk4" and type(self.wind) is WindField
+
+    def loop_arguments(self, dt: float, seconds: float) -> tuple:
+        """What a compiled closed loop (:mod:`sailmujoco.loop.worlds`) steps this world with.
+
+        Parameters
+        ----------
+        dt : float
+            The control step, s (each one integrated as :meth:`step` integrates it).
+        seconds : float
+            The time the loop may cover, s: the wind's wander is drawn for it up front (the same
+            values as drawn on the way).
+
+        Returns
+        -------
+        tuple
+            (time s, state (6,), applied action (2,), numbers: the packed parameters, then
+            ``dt``, its RK4 steps, delta_r,max, delta_s,max and the wind's height).
+        """
+        self.wind.ensure(self._time + seconds + 1.0)
+        p = self.params
+        steps = float(steps_for(dt, self.max_step))
+        numbers = np.concatenate([self._packed(),
+                                  [float(dt), steps, p.rudder_max, p.sail_max, self.wind_height]])
+        return float(self._time), self._state.copy(), self._action.copy(), numbers
+
+    def loop_ended(self, state, time: float, action) -> None:
+        """Take the state, time and applied action a compiled closed loop reached.
+
+        Parameters
+        ----------
+        state : numpy.ndarray, shape (6,)
+            Viel's state (x, y, theta wrapped, v, u, omega).
+        time : float
+            Time, s.
+        action : numpy.ndarray, shape (2,)
+            The applied (saturated) action, ours, rad.
+        """
+        self._state, self._time = np.array(state, dtype=np.float64), float(time)
+        self._action = np.array(action, dtype=np.float64)
+
     # -- accessors ----------------------------------------------------------------------------
     @property
     def time(self) -> float:

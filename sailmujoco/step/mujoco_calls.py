@@ -3,10 +3,10 @@
 The compiled step (:mod:`sailmujoco.step.native`) calls ``mj_step``, ``mj_step1``, ``mj_step2``
 and ``mj_factorM``, the compiled closed loop (:mod:`sailmujoco.loop`) also ``mj_kinematics``,
 ``mj_comPos``, ``mj_comVel``, ``mj_objectVelocity`` and ``mju_quat2Mat``, of the C library the
-Python bindings loaded (the same process-wide callbacks), and reads the simulation time from the MjData struct. It reaches them through
-symbols it names, which LLVM resolves when it loads the code: the machine code holds no address
-of this process, so numba caches it on disk like the force kernels (compiling it costs several
-seconds per process otherwise).
+Python bindings loaded (the same process-wide callbacks), and reads the simulation time from the
+MjData struct. It reaches them through symbols it names, which LLVM resolves when it loads the
+code: the machine code holds no address of this process, so numba caches it on disk like the
+force kernels (compiling it costs several seconds per process otherwise).
 """
 
 from __future__ import annotations
@@ -66,7 +66,8 @@ def mj_objectVelocity(typingctx, m, d, objtype, objid, res, flg_local):
                      [m_, d_, builder.trunc(objtype_, i32), builder.trunc(objid_, i32), res_,
                       builder.trunc(local_, i32)])
         return context.get_dummy_value()
-    return types.void(types.voidptr, types.voidptr, types.int64, types.int64, types.voidptr, types.int64), codegen
+    signature = types.void(types.voidptr, types.voidptr, types.int64, types.int64, types.voidptr, types.int64)
+    return signature, codegen
 
 
 @intrinsic

@@ -448,3 +448,4 @@ def _forces_4dof(row, t, add_mass):
         for k in range(csr4.shape[0]):
             mass_csr[csr4[k, 2]] += added[csr4[k, 0], csr4[k, 1]]
     return status
+

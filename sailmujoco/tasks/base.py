@@ -208,6 +208,27 @@ class SailTask(control.Task):
             action = np.array([rudder.step(float(action[0])), command])
         physics.set_control(action)
 
+    def measures_truth(self) -> bool:
+        """Whether the observation is the world's truth through the built-in measurement, with
+        nothing between a command and the world: perfect instruments and actuators, the
+        ``true_state`` handed out, no measurement added at run time. A compiled closed loop
+        (:mod:`sailmujoco.loop`) writes out only that path."""
+        from ..measurement.observation import builtin_tables
+
+        return (self.sensors.perfect and self.actuators.perfect and self._servos is None
+                and self._instruments is None and self.include_true_state and builtin_tables())
+
+    def add_records(self, records) -> None:
+        """Append the per-step records of steps a compiled closed loop took (:meth:`record`'s).
+
+        Parameters
+        ----------
+        records : iterable of dict
+            The records, in step order.
+        """
+        self._records.extend(records)
+        self._measured = None
+
     def after_step(self, physics):
         """Append this step's :meth:`record`.
 

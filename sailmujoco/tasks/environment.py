@@ -96,6 +96,27 @@ class SailEnvironment(control.Environment):
             return 1
         return max(math.ceil(self._step_limit) - self._step_count, 0)
 
+    def compiled_steps(self) -> int:
+        """The control steps a compiled closed loop (:mod:`sailmujoco.loop`) may take now: those
+        left of an episode under way with a time limit and dict observations; 0 otherwise."""
+        if self._reset_next_step or self._flat_observation or math.isinf(self._step_limit):
+            return 0
+        return self.steps_left()
+
+    def sub_steps(self) -> int:
+        """Physics sub-steps per control step."""
+        return self._n_sub_steps
+
+    def count_steps(self, n: int) -> None:
+        """Count ``n`` control steps a compiled closed loop took (the TimeSteps it did not make).
+
+        Parameters
+        ----------
+        n : int
+            The steps, >= 0.
+        """
+        self._step_count += n
+
     def max_steps(self) -> int | None:
         """Control steps of a whole episode (the time limit over the control step), or None
         without a time limit."""

@@ -239,6 +239,23 @@ class VielPhysics:
         """Simulated time, s."""
         return self.world.time
 
+    def closed_loop_ready(self) -> bool:
+        """Whether a compiled closed loop can step this world (:mod:`sailmujoco.loop.worlds`):
+        the world's own say (:meth:`sailmujoco.reference.viel.VielWorld.loop_ready`), not stopped."""
+        ready = getattr(self.world, "loop_ready", None)
+        return ready is not None and ready() and not self.stop_reason
+
+    def closed_loop_arguments(self, n_sub_steps: int, seconds: float) -> tuple:
+        """:meth:`sailmujoco.reference.viel.VielWorld.loop_arguments` for a control step of
+        ``n_sub_steps`` sub-steps (as :meth:`step` holds the control over them)."""
+        return self.world.loop_arguments(n_sub_steps * self._dt, seconds)
+
+    def closed_loop_ended(self, state, time: float, action, command) -> None:
+        """Take the state a compiled closed loop reached: the world's state, time and applied
+        action, and the command it was last given (``set_control``'s)."""
+        self.world.loop_ended(state, time, action)
+        self._control = np.array(command, dtype=np.float64)
+
     def timestep(self):
         """The sub-step, s."""
         return self._dt

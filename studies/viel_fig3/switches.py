@@ -12,13 +12,13 @@ import math
 import os
 
 import numpy as np
+from sailmujoco.controllers.viel_loop import MODES
 
-from sailmujoco import frames, suite, sweep
+from sailmujoco import frames, sweep
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.jit.ordered import elementwise
 from sailmujoco.loop import episode
 from sailmujoco.loop import truth as T
-from sailmujoco.loop.viel_control import MODES
 from sailmujoco.physics import BoatPhysics, ForceSwitches
 from sailmujoco.reference.viel import VielParams, VielWorld
 from sailmujoco.tasks.environment import SailEnvironment
@@ -64,6 +64,39 @@ class StartedPositionKeeping(PositionKeeping):
         if self.heading_deg is not None:
             yaw = float(frames.yaw_from_heading(math.radians(self.heading_deg)))
             physics.place(tuple(self.start), yaw, self.surge)
+
+
+class _Samples:
+    """What a switching run keeps every ``every`` steps after the start: time, position, and the
+    series of :func:`.measures.behaviour` (surge, sway, AWA, rudder, heel, sail, the mode)."""
+
+    def __init__(self, policy, every: int):
+        self.policy, self.every = policy, every
+        self.t, self.x, self.y = [], [], []
+        self.series = {"surge": [], "sway": [], "awa": [], "rudder": [], "heel": [], "sail": [], "mode": []}
+
+    def sample(self, step, timestep, action) -> None:
+        """From a TimeStep and the action that led to it (``suite.rollout``'s ``record``)."""
+        if step == 0 or step % self.every:
+            return
+        o = timestep.observation
+        self._keep(o["true_state"]["time"], o["position"][0], o["position"][1], o["true_state"]["u"],
+                   o["true_state"]["v"], action[1], o["apparent_wind_angle"], action[0], o["heel"],
+                   self.policy.info.get("mode", ""))
+
+    def sample_row(self, row, command) -> None:
+        """The same from a compiled step's truth row and command (with its mode code)."""
+        self._keep(row[T.TIME], row[T.X], row[T.Y], row[T.U], row[T.V], command[1], row[T.AWA], command[0],
+                   row[T.HEEL], MODES[int(command[2])])
+
+    def _keep(self, t, x, y, surge, sway, sail, awa, rudder, heel, mode) -> None:
+        self.t.append(float(t))
+        self.x.append(float(x))
+        self.y.append(float(y))
+        for key, value in (("surge", surge), ("sway", sway), ("sail", sail), ("awa", awa), ("rudder", rudder),
+                           ("heel", heel)):
+            self.series[key].append(float(value))
+        self.series["mode"].append(mode)
 
 
 def _episode(env, policy, sample, sample_row, every: int) -> None:
@@ -128,45 +161,18 @@ def simulate(spec: dict) -> dict:
                           legacy_step=False)
     policy = sweep.make_controller("viel", env, **{**PAPER_GAINS, "d_T": d_t, "d_M": d_m})
     every = max(1, int(round(1.0 / (TRAJECTORY_RATE * s["dt"]))))
-    t, x, y = [], [], []
-    samples = {"surge": [], "sway": [], "awa": [], "rudder": [], "heel": [], "sail": [], "mode": []}
-
-    def sample(step, timestep, action):  # every `every` steps after the start, into the lists above
-        if step == 0 or step % every:
-            return
-        o = timestep.observation
-        t.append(float(o["true_state"]["time"]))
-        x.append(float(o["position"][0]))
-        y.append(float(o["position"][1]))
-        samples["surge"].append(float(o["true_state"]["u"]))
-        samples["sway"].append(float(o["true_state"]["v"]))
-        samples["sail"].append(float(action[1]))
-        samples["awa"].append(float(o["apparent_wind_angle"]))
-        samples["rudder"].append(float(action[0]))
-        samples["heel"].append(float(o["heel"]))
-        samples["mode"].append(policy.info.get("mode", ""))
-
-    def sample_row(row, command):  # the same, from a compiled step's truth row and command
-        t.append(float(row[T.TIME]))
-        x.append(float(row[T.X]))
-        y.append(float(row[T.Y]))
-        samples["surge"].append(float(row[T.U]))
-        samples["sway"].append(float(row[T.V]))
-        samples["sail"].append(float(command[1]))
-        samples["awa"].append(float(row[T.AWA]))
-        samples["rudder"].append(float(command[0]))
-        samples["heel"].append(float(row[T.HEEL]))
-        samples["mode"].append(MODES[int(command[2])])
-
-    _episode(env, policy, sample, sample_row, every)
+    samples = _Samples(policy, every)
+    _episode(env, policy, samples.sample, samples.sample_row, every)
     metrics = env.task.metrics()
     out = {**spec, "d_T": d_t, "d_M": d_m, "status": "stopped" if metrics.get("stopped") else "ok",
            **{k: float(metrics[k]) for k in ("entered_at", "max_distance_after_entry",
                                               "mean_distance_after_entry", "final_distance",
                                               "min_distance")},
-           "trajectory": {"t": t, "x": x, "y": y}, "wall_time": clock()}
+           "trajectory": {"t": samples.t, "x": samples.x, "y": samples.y}, "wall_time": clock()}
+    t, x, y = samples.t, samples.x, samples.y
     out.update(after_entry(np.array(t), elementwise(math.hypot, x, y), out["entered_at"], d_t))
-    out.update(behaviour(np.array(t), samples, out["entered_at"], math.radians(float(env.action_spec().maximum[0]))))
-    out.update(drift_after_stop(np.array(t), np.array(x), np.array(y), samples, out["stopped_at"],
+    out.update(behaviour(np.array(t), samples.series, out["entered_at"],
+                         math.radians(float(env.action_spec().maximum[0]))))
+    out.update(drift_after_stop(np.array(t), np.array(x), np.array(y), samples.series, out["stopped_at"],
                                 task.wind().direction_from))
     return out
