@@ -2,9 +2,10 @@
 
 Run: python benchmarks/closed_loop_speed.py [--repeats N] [--seconds S]
 
-The pair the compiled loop covers (``sailmujoco.loop``): Viel's position keeping in Viel's
-3-DOF world at the paper's 0.01 s control period (``studies/viel_fig3``'s paper column), wind
-case 5, ``S`` simulated seconds. Measured in one run, interleaved round by round (medians):
+The pairs a compiled loop covers (``controllers/viel_loop.py``): Viel's position keeping at the
+paper's 0.01 s control period (``studies/viel_fig3``), wind case 5, ``S`` simulated seconds, in
+Viel's 3-DOF world and on viel_boat in 6 DOF. Measured in one run, interleaved round by round
+(medians):
 
 * ``bare``: ``mujoco.mj_step`` of Viel's boat's 6-DOF model, 2 steps of 5 ms per control step
   (the 6-DOF boat's physics alone for the same period), as ``paper_world_speed.py``;
@@ -32,9 +33,12 @@ from sailmujoco.sweep.runs import execute
 DT = 0.01  # s, Viel's control period
 
 
-def episode(seconds: float) -> dict:
+WORLDS = (("Viel's 3-DOF world", "wille_yacht", "paper"), ("viel_boat, 6 DOF", "viel_boat", "mujoco"))
+
+
+def episode(seconds: float, boat: str, world: str) -> dict:
     """The sweep runner's run of the pair, ``seconds`` long."""
-    return {"run_id": "bench", "boat": "wille_yacht", "task": "position_keeping", "world": "paper", "seed": 0,
+    return {"run_id": "bench", "boat": boat, "task": "position_keeping", "world": world, "seed": 0,
             "duration": seconds, "boat_options": {}, "env_options": {"control_timestep": DT},
             "task_options": {"case": 5}, "controller": "viel",
             "controller_options": {"d_M": 14.0, "d_T": 7.0, "k_s": 5.0, "k_p": 1.0, "k_v": 8.0}}
@@ -71,25 +75,29 @@ def main() -> None:
     parser.add_argument("--repeats", type=int, default=5)
     parser.add_argument("--seconds", type=float, default=60.0)
     args = parser.parse_args()
-    run = episode(args.seconds)
     steps = int(round(args.seconds / DT))
-    timed_episode(run, python=False)  # compile (or load) the kernels
-    timed_episode(run, python=True)
-    bare, python, compiled = [], [], []
+    runs = [episode(args.seconds, boat, world) for _, boat, world in WORLDS]
+    for run in runs:  # compile (or load) the kernels
+        timed_episode(run, python=False)
+        timed_episode(run, python=True)
+    bare = []
+    python, compiled = [[] for _ in runs], [[] for _ in runs]
     for _ in range(args.repeats):
         bare.append(bare_seconds(2 * steps) / steps)
-        seconds, slow = timed_episode(run, python=True)
-        python.append(seconds / steps)
-        seconds, fast = timed_episode(run, python=False)
-        compiled.append(seconds / steps)
-        assert repr(slow) == repr(fast), "the compiled loop gave other metrics than the Python path"
+        for i, run in enumerate(runs):
+            seconds, slow = timed_episode(run, python=True)
+            python[i].append(seconds / steps)
+            seconds, fast = timed_episode(run, python=False)
+            compiled[i].append(seconds / steps)
+            assert repr(slow) == repr(fast), "the compiled loop gave other metrics than the Python path"
     b = statistics.median(bare)
-    print(f"{'per control step (0.01 s)':<28}{'us':>10}{'ratio':>8}")
-    for name, values in (("bare 2 mj_step (viel_boat)", bare), ("python path", python),
-                         ("compiled loop", compiled)):
-        value = statistics.median(values)
-        print(f"{name:<28}{value * 1e6:>10.1f}{value / b:>8.2f}")
-    print(f"(Viel position keeping in Viel's world, case 5, {args.seconds:g} s episodes, median of "
+    print(f"{'per control step (0.01 s)':<40}{'us':>10}{'ratio':>8}")
+    print(f"{'bare: 2 mj_step of viel_boat':<40}{b * 1e6:>10.1f}{1.0:>8.2f}")
+    for (name, _, _), slow, fast in zip(WORLDS, python, compiled, strict=True):
+        for path, values in (("python path", slow), ("compiled loop", fast)):
+            value = statistics.median(values)
+            print(f"{name + ': ' + path:<40}{value * 1e6:>10.1f}{value / b:>8.2f}")
+    print(f"(Viel position keeping, case 5, {args.seconds:g} s episodes through the sweep runner, median of "
           f"{args.repeats} interleaved rounds; numpy {np.__version__}, mujoco {mujoco.__version__})")
 
 

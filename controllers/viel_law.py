@@ -44,7 +44,13 @@ UPWIND_STOP, UPWIND_DRIVE = "upwind_v>0", "upwind_v<=0"
 
 @register_jitable
 def sign(x: float) -> float:
-    """np.sign on a float: -1, 0 or 1, NaN for NaN."""
+    """np.sign on a float: -1, 0 or 1, NaN for NaN.
+
+    Parameters
+    ----------
+    x : float
+        The number.
+    """
     return 1.0 if x > 0.0 else (-1.0 if x < 0.0 else (0.0 if x == 0.0 else math.nan))
 
 

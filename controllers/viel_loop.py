@@ -62,12 +62,31 @@ BOAT_OK = 0  # sailmujoco.forces.boat.STATUS_OK
 def viel_command(truth, target_x, target_y, law, bounds, memory, info, command):
     """The clipped command [rudder, sail] (ours, rad) for the state of ``truth`` into ``command``.
 
-    ``target_x``, ``target_y``: the task's target (``target_position``); ``law``: own target or
-    not (1/0), x_T, y_T, d_M, d_T, k_s, k_p, k_v, epsilon_sail, epsilon_theta, delta, rudder_max,
-    sail_max, dt; ``bounds``: low rudder, low sail, high rudder, high sail; ``memory``: last sail
-    (Viel sign), previous speed known (1/0), previous speed, q; ``info``: mode code, theta_bar,
-    vdot*, vdot, distance. Returns OK; REJECTED where ``viel_view`` raises (nothing changed);
-    NON_FINITE_COMMAND where the task's action check raises (``memory`` put back).
+    Parameters
+    ----------
+    truth : numpy.ndarray
+        The truth of the state (:mod:`sailmujoco.loop.truth`).
+    target_x, target_y : float
+        The task's target (``target_position``), m.
+    law : numpy.ndarray, shape (14,)
+        The controller's numbers: own target or not (1/0), x_T, y_T (m), d_M, d_T (m), k_s, k_p,
+        k_v, epsilon_sail, epsilon_theta, delta, rudder_max, sail_max (rad), dt (s).
+    bounds : numpy.ndarray, shape (4,)
+        The clip of the command: low rudder, low sail, high rudder, high sail (rad).
+    memory : numpy.ndarray, shape (4,)
+        The controller's memory, updated: last sail (Viel sign), previous speed known (1/0),
+        the previous speed, the tack q.
+    info : numpy.ndarray, shape (5,)
+        Receives the controller's ``info`` of its last call: mode code (:data:`MODES`),
+        theta_bar, vdot*, vdot, distance.
+    command : numpy.ndarray, shape (2,)
+        Receives the command.
+
+    Returns
+    -------
+    int
+        OK; REJECTED where ``viel_view`` raises (nothing changed); NON_FINITE_COMMAND where the
+        task's action check raises (``memory`` put back).
     """
     own_target, x_T, y_T, d_M, d_T = law[0] != 0.0, law[1], law[2], law[3], law[4]
     k_s, k_p, k_v, epsilon_sail, epsilon_theta, delta = law[5], law[6], law[7], law[8], law[9], law[10]
@@ -121,11 +140,53 @@ def viel_command(truth, target_x, target_y, law, bounds, memory, info, command):
 @kernel
 def paper_episode(n_steps, t0, state, applied, world, wind, tables, law, bounds, task, memory, command,
                   time_out, rows, rewards, actions, info):
-    """Up to ``n_steps`` control steps in Viel's world from (t0, state) with the applied action
-    ``applied``; ``state``, ``applied``, ``command`` (the last clipped command) and ``time_out``
-    are left as the last step taken left them. Row k of ``rows``, ``rewards`` and ``actions``:
-    the truth and reward of the state after step k, step k's command and mode. Returns the steps
-    taken (see the module: it stops before a step the Python path would refuse)."""
+    """Up to ``n_steps`` control steps in Viel's world.
+
+    Parameters
+    ----------
+    n_steps : int
+        Control steps to take at most.
+    t0 : float
+        Time of the start, s.
+    state : numpy.ndarray, shape (6,)
+        Viel's state at the start; the last step's on return.
+    applied : numpy.ndarray, shape (2,)
+        The world's applied action at the start; the last step's on return (ours, rad).
+    world : numpy.ndarray
+        :meth:`sailmujoco.reference.viel.VielWorld.loop_arguments`' numbers.
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`sailmujoco.loop.episode.wind_arguments`).
+    tables : tuple of numpy.ndarray
+        The wind's tables (the same).
+    law : numpy.ndarray, shape (14,)
+        The controller's numbers: own target or not (1/0), x_T, y_T (m), d_M, d_T (m), k_s, k_p,
+        k_v, epsilon_sail, epsilon_theta, delta, rudder_max, sail_max (rad), dt (s).
+    bounds : numpy.ndarray, shape (4,)
+        The clip of the command: low rudder, low sail, high rudder, high sail (rad).
+    memory : numpy.ndarray, shape (4,)
+        The controller's memory, updated: last sail (Viel sign), previous speed known (1/0),
+        the previous speed, the tack q.
+    info : numpy.ndarray, shape (5,)
+        Receives the controller's ``info`` of its last call: mode code (:data:`MODES`),
+        theta_bar, vdot*, vdot, distance.
+    task : numpy.ndarray, shape (4,)
+        The task's numbers (:func:`sailmujoco.loop.position_task.task_numbers`).
+    rows : numpy.ndarray, shape (n_steps, truth.SIZE)
+        Row k: the truth of the state after step k.
+    rewards : numpy.ndarray, shape (n_steps,)
+        Entry k: the reward of the state after step k.
+    actions : numpy.ndarray, shape (n_steps, 3)
+        Row k: step k's command (ours, rad) and mode code.
+    command : numpy.ndarray, shape (2,)
+        Receives the last step's command.
+    time_out : numpy.ndarray, shape (1,)
+        Receives the time after the last step, s.
+
+    Returns
+    -------
+    int
+        The steps taken: it stops before a step the Python path would refuse (the module).
+    """
     w, forces, work, truth = np.zeros(3), np.empty(9), np.empty((7, 9)), np.empty(T.SIZE)
     next_command, z, taken, t = np.empty(2), world[world.shape[0] - 1], 0, t0
     for k in range(n_steps):
@@ -152,11 +213,48 @@ def paper_episode(n_steps, t0, state, applied, world, wind, tables, law, bounds,
 @kernel
 def boat_episode(n_steps, h, n_sub, wind, tables, law, bounds, task, memory, rows, rewards, actions, info,
                  outcome):
-    """Up to ``n_steps`` control steps of a 6-DOF boat; ``h``: its
-    :class:`sailmujoco.step.closed_loop.LoopHandles`. Rows as :func:`paper_episode`'s; ``outcome``
-    receives the stop status of the last step taken, whether a warning stopped it (1/0) and the
-    force kernel's status at the last measurement. Returns the steps taken (the last one possibly
-    stopped)."""
+    """Up to ``n_steps`` control steps of a 6-DOF boat.
+
+    Parameters
+    ----------
+    n_steps : int
+        Control steps to take at most.
+    h : sailmujoco.step.closed_loop.LoopHandles
+        The boat's arrays, while it is in the step registry.
+    n_sub : int
+        Physics sub-steps per control step.
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`sailmujoco.loop.episode.wind_arguments`).
+    tables : tuple of numpy.ndarray
+        The wind's tables (the same).
+    law : numpy.ndarray, shape (14,)
+        The controller's numbers: own target or not (1/0), x_T, y_T (m), d_M, d_T (m), k_s, k_p,
+        k_v, epsilon_sail, epsilon_theta, delta, rudder_max, sail_max (rad), dt (s).
+    bounds : numpy.ndarray, shape (4,)
+        The clip of the command: low rudder, low sail, high rudder, high sail (rad).
+    memory : numpy.ndarray, shape (4,)
+        The controller's memory, updated: last sail (Viel sign), previous speed known (1/0),
+        the previous speed, the tack q.
+    info : numpy.ndarray, shape (5,)
+        Receives the controller's ``info`` of its last call: mode code (:data:`MODES`),
+        theta_bar, vdot*, vdot, distance.
+    task : numpy.ndarray, shape (4,)
+        The task's numbers (:func:`sailmujoco.loop.position_task.task_numbers`).
+    rows : numpy.ndarray, shape (n_steps, truth.SIZE)
+        Row k: the truth of the state after step k.
+    rewards : numpy.ndarray, shape (n_steps,)
+        Entry k: the reward of the state after step k.
+    actions : numpy.ndarray, shape (n_steps, 3)
+        Row k: step k's command (ours, rad) and mode code.
+    outcome : numpy.ndarray of int64, shape (3,)
+        Receives the stop status of the last step taken, whether a new warning stopped it (1/0),
+        and the force kernel's status at the last measurement.
+
+    Returns
+    -------
+    int
+        The steps taken, the last one possibly stopped (``outcome``).
+    """
     m, d = pointer(h.m_address), pointer(h.d_address)
     scratch, truth, command = np.empty((4, 9)), np.empty(T.SIZE), np.empty(2)
     outcome[0], outcome[1], taken = BOAT_OK, 0, 0

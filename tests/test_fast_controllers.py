@@ -14,7 +14,7 @@ import struct
 
 import numpy as np
 import pytest
-from sailmujoco.controllers import factories, saoud_solver, viel
+from sailmujoco.controllers import factories, saoud_solver, viel, viel_law
 from sailmujoco.controllers.pid import PIDHeading
 from sailmujoco.controllers.sail_laws import keep_side_at_dead_run
 from sailmujoco.controllers.saoud import SaoudSail, optimal_sail, sail_angle_from_saoud
@@ -211,7 +211,8 @@ def test_viel_actions(world, monkeypatch):
         a = fast(timestep)
         with monkeypatch.context() as patch:  # the readable reference only
             patch.setattr(viel, "viel_view", ref_viel_view)
-            patch.setattr(viel, "_sign", ref_sign)
+            patch.setattr(viel, "sign", ref_sign)
+            patch.setattr(viel_law, "sign", ref_sign)
             b = reference(timestep)
         assert [bits(x) for x in a] == [bits(x) for x in b], (a, b)
         modes.add(fast.info["mode"])

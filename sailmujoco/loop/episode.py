@@ -82,7 +82,13 @@ def run_compiled(env, controller) -> CompiledEpisode | None:
 
 def buffers(n_steps: int) -> tuple:
     """What a compiled episode fills: the truth rows, rewards, actions (with modes), and 5 numbers
-    of the controller's last call."""
+    of the controller's last call.
+
+    Parameters
+    ----------
+    n_steps : int
+        The control steps the episode may take.
+    """
     return np.empty((n_steps, T.SIZE)), np.empty(n_steps), np.empty((n_steps, 3)), np.empty(5)
 
 
@@ -109,7 +115,13 @@ def finish(env, taken: int, rows, rewards, actions, stop_reason: str | None = No
 
 def record(row: list) -> dict:
     """:func:`sailmujoco.measurement.observation.record` of a truth row (as a list of floats):
-    the same values by the same operations."""
+    the same values by the same operations.
+
+    Parameters
+    ----------
+    row : sequence of float
+        The truth of a state (:mod:`sailmujoco.loop.truth`).
+    """
     east, north = row[T.EAST], row[T.NORTH]
     return {"t": row[T.TIME], "position": np.array([row[T.X], row[T.Y]]), "heading": row[T.HEADING],
             "heel": row[T.HEEL], "roll_rate": row[T.P], "surge": row[T.U], "course": math.atan2(north, east),
@@ -117,14 +129,26 @@ def record(row: list) -> dict:
 
 
 def trajectory_sample(row) -> dict:
-    """The sweep runner's trajectory sample (``sweep.runs._trajectory_sample``) of a truth row."""
+    """The sweep runner's trajectory sample (``sweep.runs._trajectory_sample``) of a truth row.
+
+    Parameters
+    ----------
+    row : sequence of float
+        The truth of a state (:mod:`sailmujoco.loop.truth`).
+    """
     return {"t": float(row[T.TIME]), "x": float(row[T.X]), "y": float(row[T.Y]),
             "heading": float(row[T.HEADING]), "heel": float(row[T.HEEL]), "pitch": float(row[T.PITCH]),
             "u": float(row[T.U])}
 
 
 def rollout_row(row) -> dict:
-    """``suite.rollout``'s default row of a truth row: the same values by the same operations."""
+    """``suite.rollout``'s default row of a truth row: the same values by the same operations.
+
+    Parameters
+    ----------
+    row : sequence of float
+        The truth of a state (:mod:`sailmujoco.loop.truth`).
+    """
     heel = float(row[T.HEEL])
     return {"t": float(row[T.TIME]), "x": float(row[T.X]), "y": float(row[T.Y]),
             "heading": float(row[T.HEADING]), "heel": heel, "heel_deg": math.degrees(heel),
@@ -137,7 +161,13 @@ def rollout_row(row) -> dict:
 def wind_arguments(wind) -> tuple:
     """A :class:`~sailmujoco.forces.wind.WindField` as the loops read it: (numbers, tables), the
     numbers U_m10, mean bearing, direction oscillation, its frequency, the wander's time step,
-    the tables its oscillation, gust frequency, phase, amplitude, log_z and wander."""
+    the tables its oscillation, gust frequency, phase, amplitude, log_z and wander.
+
+    Parameters
+    ----------
+    wind : sailmujoco.forces.wind.WindField
+        The wind, its wander drawn for the whole run.
+    """
     from ..forces.wind import WANDER_DT
 
     c = wind.config

@@ -54,18 +54,53 @@ _SITE = 6  # mujoco.mjtObj.mjOBJ_SITE (checked in tests/test_closed_loop.py)
 @kernel(inline=True)
 def direction_from(t, wind, wander):
     """:meth:`sailmujoco.forces.wind.WindField.direction_from`: the compass bearing the wind
-    comes from at ``t`` (rad, not wrapped). ``wind``: U_m10, mean bearing, direction
-    oscillation, its frequency, the wander's time step (the loops' wind numbers)."""
+    comes from at ``t`` (rad, not wrapped).
+
+    Parameters
+    ----------
+    t : float
+        Time, s.
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`sailmujoco.loop.episode.wind_arguments`): U_m10 (m/s),
+        mean bearing (rad), direction oscillation (rad), its frequency (Hz), the wander's step (s).
+    wander : numpy.ndarray
+        The wander (rad) at multiples of the wander's step.
+    """
     return (wind[1] + wander_angle(t, wind[4], wander)
             + wind[2] * math.sin(2.0 * math.pi * wind[3] * t))
 
 
 @kernel(inline=True)
 def viel_truth(state, t, applied0, applied1, packed, z, wind, tables, w, forces, out):
-    """Viel's world's truth at (t, state) with the applied action (ours, rad) into ``out``;
-    ``packed``: the world's parameters (``pack_parameters``), ``z`` the wind's height (m).
+    """Viel's world's truth at (t, state) with the applied action into ``out``.
 
-    Returns False where the world's force terms fail their domain check (the Python path raises).
+    Parameters
+    ----------
+    state : numpy.ndarray, shape (6,)
+        Viel's state (x, y, theta, v, u, omega).
+    t : float
+        Time, s.
+    applied0, applied1 : float
+        The world's applied rudder and sail angles (ours, rad).
+    packed : numpy.ndarray
+        The world's parameters (``pack_parameters``).
+    z : float
+        The wind's height, m.
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`direction_from`).
+    tables : tuple of numpy.ndarray
+        The wind's tables (:func:`sailmujoco.loop.episode.wind_arguments`).
+    w : numpy.ndarray, shape (3,)
+        Scratch for the wind velocity.
+    forces : numpy.ndarray, shape (9,)
+        Receives the world's force terms.
+    out : numpy.ndarray, shape (SIZE,)
+        Receives the truth.
+
+    Returns
+    -------
+    bool
+        False where the world's force terms fail their domain check (the Python path raises).
     """
     oscillation, frequency, phase, amplitude, log_z, wander = tables
     x, y, theta, v, u, omega = state[0], state[1], state[2], state[3], state[4], state[5]
@@ -97,9 +132,35 @@ def mujoco_truth(m, d, qpos, qvel, site_xpos, site, rudder_at, sail_at, row, dia
     """A 6-DOF MuJoCo boat's truth now into ``out``; its kinematics and force terms brought up
     to the state on the way (``BoatPhysics._ensure_fresh``).
 
-    ``m``, ``d``: the MjModel and MjData C pointers; ``qpos`` ... ``site_xpos``: MjData's arrays;
-    ``row``: the boat's registry row; ``diag``: the force kernel's diagnostics (the row's);
-    ``scratch``: (4, 9) work space. Returns the force kernel's status at this state.
+    Parameters
+    ----------
+    m, d : void pointer
+        The boat's MjModel and MjData.
+    qpos, qvel, site_xpos : numpy.ndarray
+        MjData's arrays.
+    site : int
+        The masthead site's id.
+    rudder_at, sail_at : int
+        The rudder's and the sail's qpos addresses.
+    row : numpy.ndarray of int64
+        The boat's registry row (its force kernel's arrays).
+    diag : numpy.ndarray
+        The force kernel's diagnostics (the row's).
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`direction_from`).
+    tables : tuple of numpy.ndarray
+        The wind's tables (:func:`sailmujoco.loop.episode.wind_arguments`).
+    current : numpy.ndarray, shape (3,)
+        The water current (ENU, m/s).
+    scratch : numpy.ndarray, shape (4, 9)
+        Work space.
+    out : numpy.ndarray, shape (SIZE,)
+        Receives the truth.
+
+    Returns
+    -------
+    int
+        The force kernel's status at this state.
     """
     oscillation, frequency, phase, amplitude, log_z, wander = tables
     flat, vel, air, w = scratch[0], scratch[1], scratch[2], scratch[3]

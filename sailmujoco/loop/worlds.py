@@ -21,12 +21,31 @@ from ..step.native import rk4_steps
 
 @kernel(inline=True)
 def viel_step(state, t, command, world, wind, tables, work, applied):
-    """One control step of Viel's world from (t, state) under ``command`` (ours, rad).
+    """One control step of Viel's world from (t, state) under ``command``.
 
-    ``world``: :meth:`sailmujoco.reference.viel.VielWorld.loop_arguments`' numbers; ``wind``,
-    ``tables``: the loop's wind numbers and tables (:mod:`sailmujoco.loop.truth`); ``work``:
-    (7, 9) scratch. On success ``state`` holds the new state and ``applied`` the saturated
-    action; returns the integrator's status (``state`` untouched unless STATUS_OK).
+    Parameters
+    ----------
+    state : numpy.ndarray, shape (6,)
+        Viel's state; the new one on success (untouched otherwise).
+    t : float
+        Time, s.
+    command : numpy.ndarray, shape (2,)
+        The command (ours, rad).
+    world : numpy.ndarray
+        :meth:`sailmujoco.reference.viel.VielWorld.loop_arguments`' numbers.
+    wind : numpy.ndarray, shape (5,)
+        The loops' wind numbers (:func:`sailmujoco.loop.truth.direction_from`).
+    tables : tuple of numpy.ndarray
+        The wind's tables (:func:`sailmujoco.loop.episode.wind_arguments`).
+    work : numpy.ndarray, shape (7, 9)
+        Scratch of the world's RK4 kernel.
+    applied : numpy.ndarray, shape (2,)
+        Receives the saturated action on success.
+
+    Returns
+    -------
+    int
+        The integrator's status (STATUS_OK when the step was taken).
     """
     oscillation, frequency, phase, amplitude, log_z, wander = tables
     n = world.shape[0]
@@ -47,8 +66,31 @@ def viel_step(state, t, command, world, wind, tables, work, applied):
 
 @kernel(inline=True)
 def mujoco_step(m_address, d_address, n_sub, ctrl, row, saved, warnings, warnings_before, command):
-    """One control step of a 6-DOF boat under ``command`` (ours, rad; the clipped action):
-    ``(status, warned)`` as :func:`sailmujoco.step.native.rk4_steps` gives them."""
+    """One control step of a 6-DOF boat under ``command``.
+
+    Parameters
+    ----------
+    m_address, d_address : int
+        The boat's MjModel and MjData.
+    n_sub : int
+        Physics sub-steps per control step.
+    ctrl : numpy.ndarray
+        MjData's ``ctrl``.
+    row : numpy.ndarray of int64
+        The boat's slot of the step registry.
+    saved : numpy.ndarray
+        Scratch for the state before a sub-step.
+    warnings, warnings_before : numpy.ndarray
+        MuJoCo's warning counts, and their copy made here before the step.
+    command : numpy.ndarray, shape (2,)
+        The command (ours, rad; the clipped action).
+
+    Returns
+    -------
+    tuple of (int, bool)
+        The stop status and whether MuJoCo counted a new warning
+        (:func:`sailmujoco.step.native.rk4_steps`).
+    """
     ctrl[0], ctrl[1] = command[0], command[1]
     warnings_before[:] = warnings
     status, _, warned = rk4_steps(m_address, d_address, n_sub, row, saved)

@@ -94,7 +94,13 @@ def closed_loop_ended(physics, status: int, warned: bool, force_status: int) -> 
 def closed_loop_ready(physics) -> bool:
     """Whether a compiled closed loop can step this boat (:func:`closed_loop`): 6 DOF, RK4 by the
     compiled step, an actuated sail and a rudder, a :class:`~sailmujoco.forces.wind.WindField`,
-    not stopped."""
+    not stopped.
+
+    Parameters
+    ----------
+    physics : BoatPhysics
+        The boat.
+    """
     from ..forces.wind import WindField
 
     rk4 = physics.model.ptr.opt.integrator == mujoco.mjtIntegrator.mjINT_RK4

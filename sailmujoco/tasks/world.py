@@ -247,12 +247,31 @@ class VielPhysics:
 
     def closed_loop_arguments(self, n_sub_steps: int, seconds: float) -> tuple:
         """:meth:`sailmujoco.reference.viel.VielWorld.loop_arguments` for a control step of
-        ``n_sub_steps`` sub-steps (as :meth:`step` holds the control over them)."""
+        ``n_sub_steps`` sub-steps (as :meth:`step` holds the control over them).
+
+        Parameters
+        ----------
+        n_sub_steps : int
+            Sub-steps per control step.
+        seconds : float
+            The time the loop may cover, s.
+        """
         return self.world.loop_arguments(n_sub_steps * self._dt, seconds)
 
     def closed_loop_ended(self, state, time: float, action, command) -> None:
-        """Take the state a compiled closed loop reached: the world's state, time and applied
-        action, and the command it was last given (``set_control``'s)."""
+        """Take the state a compiled closed loop reached.
+
+        Parameters
+        ----------
+        state : numpy.ndarray, shape (6,)
+            Viel's state.
+        time : float
+            Time, s.
+        action : numpy.ndarray, shape (2,)
+            The world's applied (saturated) action, ours, rad.
+        command : numpy.ndarray, shape (2,)
+            The command it was last given (``set_control``'s), ours, rad.
+        """
         self.world.loop_ended(state, time, action)
         self._control = np.array(command, dtype=np.float64)
 
