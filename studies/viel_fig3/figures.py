@@ -65,6 +65,7 @@ def _trajectory_panel(ax, runs, case: int, start, title: str | None = None):
     ax.plot(start[0], start[1], "o", color="black", ms=5, label="start")
     ax.plot([], [], "s", color="gray", ms=4, label="end")
     ax.plot(0, 0, "+", color="black", ms=8)
+    span *= 1.3  # room in the corners for the wind's arrow and words (figures.wind_arrow)
     ax.set_xlim(-span, span)
     ax.set_ylim(-span, span)
     ax.set_aspect("equal")
