@@ -12,6 +12,7 @@ blows *towards*, rudder/sail positive with the trailing edge to starboard):
 The controller that applies them is :class:`controllers.viel.VielController`. The functions are
 plain Python; ``register_jitable`` lets the compiled closed loop (:mod:`controllers.viel_loop`)
 compile the very same source.
+
 Readings of garbled or inconsistent text (each marked where it is used):
 
 * Eqs. 13-14 mix ``sign(delta_s)`` in the rate with ``|delta_s|`` in the update, and the
@@ -31,6 +32,7 @@ Readings of garbled or inconsistent text (each marked where it is used):
 * "this strategy is maintained only if v >= 0" (end of step 4) is read as the two cases
   (19-20) for v > 0 and (21-22) for v <= 0 as printed.
 """
+
 from __future__ import annotations
 
 import math
