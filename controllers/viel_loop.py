@@ -25,6 +25,7 @@ from pathlib import Path
 
 import numpy as np
 
+from sailmujoco.forces.boat import STATUS_OK as BOAT_OK
 from sailmujoco.frames import wrap_angle
 from sailmujoco.jit.kernel import clear_stale_cache, kernel
 from sailmujoco.loop import truth as T
@@ -55,7 +56,6 @@ MODES = (viel_law.GO_DIRECT, viel_law.GO_ROUND, viel_law.TACK, viel_law.UPWIND_S
          viel_law.UPWIND_DRIVE)
 _DIRECT, _ROUND, _TACK, _STOP, _DRIVE = range(5)
 OK, REJECTED, NON_FINITE_COMMAND = 0, 1, 2  # viel_command's outcomes
-BOAT_OK = 0  # sailmujoco.forces.boat.STATUS_OK
 
 
 @kernel(inline=True)

@@ -26,7 +26,6 @@ from __future__ import annotations
 
 import inspect
 import math
-import os
 
 import numpy as np
 
@@ -306,7 +305,7 @@ def rollout(env, controller, record=None):
     step = 0
     keep(step, timestep, None)
     compiled = None
-    if record is row and not timestep.last() and os.environ.get("SAILMUJOCO_PYTHON_LOOP") != "1":
+    if record is row and not timestep.last():
         compiled = run_compiled(env, controller)  # the same steps, bit for bit, in one native call
     if compiled is not None:
         rows.extend(rollout_row(truth) for truth in compiled.rows)

@@ -202,10 +202,3 @@ def test_rollout_gives_the_same_rows_either_way(monkeypatch, boat, world):
     assert fast.to_numpy().tobytes() == slow.to_numpy().tobytes()
     assert repr(fast_metrics) == repr(slow_metrics)
 
-
-def test_the_truth_names_mujocos_site_object_type():
-    import mujoco
-
-    from sailmujoco.loop import truth
-
-    assert truth._SITE == int(mujoco.mjtObj.mjOBJ_SITE)

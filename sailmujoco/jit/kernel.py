@@ -35,19 +35,22 @@ _SOURCES = sorted([*(_PACKAGE / "step").glob("*.py"), *(_PACKAGE / "forces").glo
                    _PACKAGE / "frames.py", _PACKAGE / "boat" / "hull_grid.py"])
 
 
-def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None) -> None:
+def _clear_stale_cache(sources=tuple(_SOURCES), cache_dirs=None, module: str = "") -> None:
     """Empty each cache directory (default: those of ``sources``) unless ``sources`` are those
-    its kernels were built from."""
+    its kernels were built from; with ``module``, only that module's cache files, under a stamp
+    of its own."""
     digest = hashlib.sha256(b"".join(p.read_bytes() for p in sources)).hexdigest()
     if cache_dirs is None:
         cache_dirs = {p.parent / "__pycache__" for p in sources}
+    stamp_name = f"sailmujoco-kernels-{module}.stamp" if module else "sailmujoco-kernels.stamp"
+    files = f"{module}.*" if module else "*"
     for cache_dir in cache_dirs:
-        stamp = cache_dir / "sailmujoco-kernels.stamp"
+        stamp = cache_dir / stamp_name
         try:
             if stamp.exists() and stamp.read_text() == digest:
                 continue
             if cache_dir.exists():
-                for f in [*cache_dir.glob("*.nbi"), *cache_dir.glob("*.nbc")]:
+                for f in [*cache_dir.glob(f"{files}.nbi"), *cache_dir.glob(f"{files}.nbc")]:
                     f.unlink(missing_ok=True)
             cache_dir.mkdir(exist_ok=True)
             stamp.write_text(digest)
@@ -76,19 +79,7 @@ def clear_stale_cache(module_file: str, *also) -> None:
     """
     module = Path(module_file).resolve()
     sources = (*_SOURCES, module, *(Path(p).resolve() for p in also))
-    digest = hashlib.sha256(b"".join(p.read_bytes() for p in sources)).hexdigest()
-    cache_dir = module.parent / "__pycache__"
-    stamp = cache_dir / f"sailmujoco-kernels-{module.stem}.stamp"
-    try:
-        if stamp.exists() and stamp.read_text() == digest:
-            return
-        if cache_dir.exists():
-            for f in [*cache_dir.glob(f"{module.stem}.*.nbi"), *cache_dir.glob(f"{module.stem}.*.nbc")]:
-                f.unlink(missing_ok=True)
-        cache_dir.mkdir(exist_ok=True)
-        stamp.write_text(digest)
-    except OSError:  # read-only install: numba falls back to its own cache location
-        pass
+    _clear_stale_cache(sources, {module.parent / "__pycache__"}, module.stem)
 
 
 def kernel(fn=None, *, inline: bool = False):

@@ -24,6 +24,7 @@ The pieces a compiled episode is built from: :mod:`sailmujoco.loop.truth` (each 
 from __future__ import annotations
 
 import math
+import os
 from typing import NamedTuple
 
 import numpy as np
@@ -71,9 +72,12 @@ def run_compiled(env, controller) -> CompiledEpisode | None:
     Returns
     -------
     CompiledEpisode or None
-        None when the controller offers no compiled loop for the pair, or it could not take a
-        step (nothing has been touched: the caller steps in Python).
+        None when the controller offers no compiled loop for the pair, it could not take a step,
+        or ``SAILMUJOCO_PYTHON_LOOP=1`` is set (nothing has been touched: the caller steps in
+        Python).
     """
+    if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1":  # the Python path everywhere, to compare
+        return None
     offer = getattr(controller, "compiled_episode", None)
     if offer is None or not hasattr(env, "compiled_steps") or env.compiled_steps() < MIN_STEPS:
         return None

@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import math
 
+import mujoco
 import numba
 import numpy as np
 
@@ -48,7 +49,7 @@ from ..step.registry import R_FIRST, kernel_forces
 SIZE = 30
 
 _D_WIND, _D_FLOW = kernels.D_WIND_X, kernels.D_SAIL_FLOW_X
-_SITE = 6  # mujoco.mjtObj.mjOBJ_SITE (checked in tests/test_closed_loop.py)
+_SITE = int(mujoco.mjtObj.mjOBJ_SITE)  # a constant of the compiled code
 
 
 @kernel(inline=True)

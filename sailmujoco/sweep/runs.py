@@ -184,7 +184,7 @@ def execute(run: dict) -> dict:
         rate = run.get("trajectory_rate")
         every = max(1, int(round(1.0 / (rate * env.control_timestep())))) if rate else 0
         step = 0
-        compiled = None if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1" else run_compiled(env, controller)
+        compiled = run_compiled(env, controller)
         if compiled is not None:  # the same steps, bit for bit, in one native call (sailmujoco.loop)
             step, timestep = compiled.steps, compiled.timestep
             if every:

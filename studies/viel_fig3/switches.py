@@ -9,7 +9,6 @@ the measures of :mod:`.measures`.
 from __future__ import annotations
 
 import math
-import os
 
 import numpy as np
 from sailmujoco.controllers.viel_loop import MODES
@@ -107,7 +106,7 @@ def _episode(env, policy, sample, sample_row, every: int) -> None:
         policy.reset(env.task.seed)
     timestep = env.reset()
     sample(0, timestep, None)
-    compiled = None if os.environ.get("SAILMUJOCO_PYTHON_LOOP") == "1" else episode.run_compiled(env, policy)
+    compiled = episode.run_compiled(env, policy)
     step = 0
     if compiled is not None:
         for k in range(every, compiled.steps, every):
