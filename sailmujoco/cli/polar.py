@@ -11,6 +11,7 @@ from pathlib import Path
 
 from ..boat.catalogue import boat_label, get_boat
 from ..design.polar import (
+    DEFAULT_TWA,
     STEADY_WINDOW_S,
     best_vmg,
     finished_points,
@@ -20,6 +21,8 @@ from ..design.polar import (
     sweep_table,
 )
 from ..design.polar_compare import comparison_markdown, comparison_table, plot_comparison, ratio_summary
+from ..design.reference_compare import plot_reference, polar_axes, reference_markdown, reference_table
+from ..design.reference_polar import REFERENCE_HEIGHT, read_reference_polar
 from ..options import World, choices
 from ..sweep import controller_label
 from .arguments import (
@@ -29,9 +32,12 @@ from .arguments import (
     HelpFormatter,
     controller_options,
     floats,
+    number,
     out_folder,
     setting,
 )
+
+POSITIVE_METRES = number(0.0, low_open=True, unit="m")
 
 DESCRIPTION = f"""\
 The steady speed of BOAT at every true wind speed x true wind angle, each point a heading_hold
@@ -40,7 +46,8 @@ last {STEADY_WINDOW_S:g} s. Writes polar_<controller>.png and .csv into --out, a
 and downwind. 'best' is the brute-force polar: every fixed sail angle, the fastest kept.
 With --seeds N each point is sailed N times (the seed draws the start heading and, with
 --gusts, the gusts): its speed is the mean with its 95 % interval, each seed's row is kept in
-polar_<controller>_seeds.csv, and --compare's ratios are paired by seed."""
+polar_<controller>_seeds.csv, and --compare's ratios are paired by seed. With --reference the
+polar is held against a published one: reference.png, reference.csv and reference.md."""
 
 
 def add_parser(subparsers) -> argparse.ArgumentParser:
@@ -74,10 +81,17 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                                           "('best' = brute-force fixed-sail vel_max)")
     parser.add_argument("--world", default="mujoco", choices=choices(World),
                         help="mujoco: the 6-DOF boat; paper: the paper's reduced model")
-    parser.add_argument("--tws", type=floats, default=[2.0, 4.0, 6.0],
-                        help="true wind speeds, m/s: '2,4,6' or 'start:stop:step'")
-    parser.add_argument("--twa", type=floats, default=[float(a) for a in range(30, 181, 15)],
-                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step'")
+    parser.add_argument("--tws", type=floats,
+                        help="true wind speeds at 10 m, m/s: '2,4,6' or 'start:stop:step' (default 2,4,6; "
+                             "with --reference: the file's)")
+    parser.add_argument("--twa", type=floats,
+                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step' (default "
+                             "30:180:15; with --reference: the file's below the spinnaker, and the beat)")
+    parser.add_argument("--reference", metavar="FILE",
+                        help="a reference polar (CSV: tws_kn, twa_deg, boat_speed_kn[, point]) to hold ours "
+                             "against, or 'orc:eleven_metre' (ORC's 11:Metre polar, shipped)")
+    parser.add_argument("--reference-height", type=POSITIVE_METRES, default=REFERENCE_HEIGHT, metavar="M",
+                        help="the height of the reference's wind speeds, m (ORC: 10)")
     parser.add_argument("--seconds", type=POSITIVE_SECONDS, default=60.0,
                         help="simulated seconds per point")
     parser.add_argument("--duration", dest="seconds", type=POSITIVE_SECONDS, default=argparse.SUPPRESS,
@@ -113,6 +127,11 @@ def run_cli(args) -> int:
         when; the CSVs written so far are kept).
     """
     get_boat(args.boat)  # an unknown boat fails here, with the list of known ones
+    reference = read_reference_polar(args.reference, args.reference_height) if args.reference else None
+    tws, twa = ((polar_axes(reference)) if reference is not None
+                else ([2.0, 4.0, 6.0], [float(a) for a in DEFAULT_TWA]))
+    args.tws = args.tws or tws
+    args.twa = args.twa or twa
     if args.option and args.controller == "best":
         raise ValueError("--option: 'best' is every fixed sail angle and takes no options")
     own = {} if args.controller == "best" else controller_options(args)  # checked before any run
@@ -122,7 +141,7 @@ def run_cli(args) -> int:
     frames, points, kept = {}, {}, []
     seeds = tuple(range(args.seeds))
     for name in names:
-        print(f"polar {args.boat} / {name}: TWS {args.tws} m/s x TWA {args.twa} deg "
+        print(f"polar {args.boat} / {name}: TWS {_listed(args.tws)} m/s x TWA {_listed(args.twa)} deg "
               f"({args.world}, {args.seconds:g} s per point"
               + (f", {len(seeds)} seeds{', gusts' if args.gusts else ''}" if len(seeds) > 1 else "") + ")")
         table, spec = sweep_table(args.boat, name, out, tws=args.tws, twa=args.twa,
@@ -156,7 +175,27 @@ def run_cli(args) -> int:
     print(f"wrote {png} and {out / f'polar_{controller_label(args.controller)}.csv'}")
     if len(frames) > 1:
         _write_comparison(args, frames, points, out)
+    if reference is not None:
+        _write_reference(args, main_frame, reference, out)
     return 0
+
+
+def _write_reference(args, frame, reference, out: Path) -> None:
+    """reference.png, reference.csv and reference.md: our polar against ``reference``."""
+    table = reference_table(frame, reference)
+    table.to_csv(out / "reference.csv", index=False)
+    plot_reference(frame, reference, out / "reference.png",
+                   f"{boat_label(args.boat)} ({args.controller}, {args.world}) against {reference.name}")
+    text = (f"# {boat_label(args.boat)} against {reference.name}\n\n"
+            f"`sailmujoco polar {args.boat} --controller {args.controller} --reference {args.reference}`"
+            f" ({args.world}, {args.seconds:g} s per point; the reference's wind at "
+            f"{args.reference_height:g} m, ours at 10 m)\n\n" + reference_markdown(table, reference.name)
+            + "\nThe reference:\n\n" + "".join(f"> {line}\n" for line in reference.source.splitlines()))
+    (out / "reference.md").write_text(text, encoding="utf-8")
+    outside = int((abs(table["ratio"] - 1.0) > 0.10).sum())
+    print(f"  against {reference.name}: ours / reference {table['ratio'].min():.2f}-"
+          f"{table['ratio'].max():.2f} over {len(table)} points, {outside} more than 10 % off")
+    print(f"wrote {out / 'reference.png'}, {out / 'reference.md'} and {out / 'reference.csv'}")
 
 
 def _write_comparison(args, frames: dict, points: dict, out: Path) -> None:
@@ -173,3 +212,7 @@ def _write_comparison(args, frames: dict, points: dict, out: Path) -> None:
     (out / "compare.md").write_text(comparison_markdown(table, summary, command, settings),
                                     encoding="utf-8")
     print(f"wrote {compare}, {out / 'compare.md'} and {out / 'compare.csv'}")
+
+
+def _listed(values) -> str:
+    return "[" + ", ".join(f"{v:.4g}" for v in values) + "]"
