@@ -89,7 +89,8 @@ def reference_markdown(table: pd.DataFrame, name: str, band: float = 0.10) -> st
     band : float
         The relative miss a point is flagged beyond.
     """
-    lines = [f"| point | TWS (as in {name}) | TWA ours / ref [deg] | ours [kn] | reference [kn] | ours / ref |",
+    lines = [f"| point | TWS (as in {name}) | TWA ours / ref [deg] | ours [kn] | reference [kn] "
+             "| ours / ref |",
              "|---|---|---|---|---|---|"]
     for _, r in table.iterrows():
         what = "speed" if r["point"] == "fixed" else "beat VMG"
