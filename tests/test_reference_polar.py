@@ -76,8 +76,8 @@ def test_a_missing_file_is_refused_in_one_line(tmp_path):
 
 
 def test_the_comparison_ratios_and_the_beat_as_a_vmg_optimum(tmp_path):
-    """The reference at 10 kn, ours beside it, the ratios by hand. Ours at 60 and 90 deg; the beat is ours' best
-    v cos(TWA) over our upwind angles against the file's beat row's VMG."""
+    """The reference at 10 kn, ours beside it, the ratios by hand. Ours at 60 and 90 deg; the beat
+    is ours' best v cos(TWA) over our upwind angles against the file's beat row's VMG."""
     path = tmp_path / "ref.csv"
     path.write_text("tws_kn,twa_deg,boat_speed_kn,point\n10,60,6,fixed\n10,90,8,fixed\n10,120,9,fixed\n"
                     "10,40,5,beat\n")
