@@ -29,22 +29,18 @@ vertical_damping     "world", "body"         --   heave and pitch damping on the
                                                   motion; "body": on body w and q
 restoring_axes       "horizontal", "body"    --   the papers' restoring moments about level
                                                   axes; "body": about body axes
-resistance           "dsyhs", "friction"     --   ITTC friction plus the Delft series'
-                                                  residuary resistance; "friction": Wille
-                                                  eq. 15 alone
+resistance           "dsyhs", "friction"     --   friction plus the Delft series' residuary
+                                                  resistance; "friction": Wille eq. 15 alone
 foils                "finite", "paper"       --   finite-wing lift slope and 3-D post-stall;
                                                   "paper": Saoud's sail polynomial and Wille
                                                   eq. 23 on the 2-D table
 keel_downwash        True, False             --   the keel's downwash at the rudder
 windage              True, False             --   air drag of topsides and mast
 wave_hull            True, False             --   in a sea, the waves' forces on the hull
-                                                  (their pressure, diffraction and the
-                                                  damping relative to the water); False:
-                                                  the hull in still water, the sea at the
-                                                  foils alone
-wave_foil_flow       True, False             --   in a sea, the waves' orbital velocity in the
-                                                  keel's and rudder's flow; False: the foils
-                                                  in still water (or the current)
+                                                  (pressure, diffraction, relative damping);
+                                                  False: still water at the hull alone
+wave_foil_flow       True, False             --   in a sea, the orbital velocity at keel and
+                                                  rudder; False: still water (or the current)
 wave_diffraction     True, False             --   in a sea, the hull's added mass times the
                                                   water's acceleration (long-wave diffraction)
 wave_damping         "relative", "absolute"  --   in a sea, heave and pitch damping on the
@@ -55,6 +51,8 @@ wave_pressure_decay  True, False             --   in a sea, the wave's pressure 
                                                   hydrostatic to the local surface
 wave_reflection      True, False             --   in a sea, short waves' mean reflection
                                                   force on the hull's side (Faltinsen)
+rig_interaction      "lumped_vortex", "none" --   with a headsail: the sails in each other's
+                                                  flow; "none": each alone, the rig their sum
 boat_options         a mapping               SI   keyword arguments of the boat's parameter
                                                   factory (e.g. ``{"l_phi": 0.1}``)
 waves                None, a ``WaveConfig``  SI   the sea (:mod:`sailmujoco.forces.waves`);
@@ -102,6 +100,7 @@ RestoringAxes = Literal["horizontal", "body"]  # paper restoring moments about l
 Resistance = Literal["friction", "dsyhs"]  # ITTC friction only (Wille eq. 15) / + DSYHS residuary
 Foils = Literal["paper", "finite"]  # the papers' foil coefficients / finite-wing slope and stall
 WaveDamping = Literal["relative", "absolute"]  # in a sea: damping on motion relative to the water / own
+RigInteraction = Literal["lumped_vortex", "none"]  # with a headsail: the sails' mutual flow / each alone
 
 
 # ---- the sea state ----------------------------------------------------------------------
@@ -343,6 +342,8 @@ class ForceSwitches:
     wave_damping : {"relative", "absolute"}
         In a sea, heave and pitch damping on the motion relative to the water, or on the
         hull's own.
+    rig_interaction : {"lumped_vortex", "none"}
+        With a headsail, the sails in each other's flow or each alone (forces/headsail.py).
     """
 
     hydrostatics: Hydrostatics = "geometric"
@@ -365,6 +366,7 @@ class ForceSwitches:
     wave_damping: WaveDamping = "relative"
     wave_pressure_decay: bool = True
     wave_reflection: bool = True
+    rig_interaction: RigInteraction = "lumped_vortex"
 
     def __post_init__(self):
         _check_fields(self)
@@ -378,7 +380,7 @@ class PhysicsOptions(ForceSwitches):
 
     Parameters
     ----------
-    hydrostatics, sail, keel, rudder, damping, added_mass, sail_tangential
+    hydrostatics, sail, keel, rudder, damping, added_mass, sail_tangential, rig_interaction
         As :class:`ForceSwitches`.
     added_mass_coupling, vertical_damping, restoring_axes, resistance, foils, keel_downwash, windage
         As :class:`ForceSwitches`.

@@ -160,11 +160,19 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
     else:
         from .reference.wille import Wille4DOF
 
-        world_physics = PaperPhysics(Wille4DOF(params=params, wind=wind, switches=switches,
+        world_physics = PaperPhysics(Wille4DOF(params=_one_sail(params), wind=wind, switches=switches,
                                                model=settings.paper_model, **step))
     return SailEnvironment(world_physics, the_task, time_limit=time_limit or the_task.duration,
                            control_timestep=control_timestep, flat_observation=flat_observation,
                            legacy_step=False)
+
+
+def _one_sail(params: BoatParams) -> BoatParams:
+    """``params``, refused in one line where it carries a headsail (the paper world has the main alone)."""
+    if params.headsail is not None and params.headsail.area > 0.0:
+        raise ValueError(f"boat {params.name!r} carries a headsail, and Wille's 4-DOF paper world has the "
+                         f"main alone: sail it in the 'mujoco' world")
+    return params
 
 
 def _split(task: str, physics, options: dict) -> tuple[PhysicsOptions, dict, BoatParams | None]:

@@ -14,7 +14,7 @@ from sailmujoco.boat import file as boat_file
 from sailmujoco.boat import hull, mjcf
 from sailmujoco.boat.catalogue import get_boat
 from sailmujoco.boat.fitted_file import FITTED
-from sailmujoco.boat.schema import KEYS, SECTION_TYPES
+from sailmujoco.boat.schema import KEYS, OPTIONAL_KEYS, SECTION_TYPES
 from sailmujoco.cli.main import main
 from sailmujoco.constants import GRAVITY
 from sailmujoco.design.check import check_boat
@@ -40,10 +40,10 @@ def _qpos(boat, steps=200):
 
 
 def test_the_schema_covers_every_field_of_the_parameter_types():
-    nested = {"hull", "keel", "rudder", "sail", "sources", "sensors", "actuators"}  # sections of their own
+    nested = {"hull", "keel", "rudder", "sail", "headsail", "sources", "sensors", "actuators"}  # own sections
     for section, kind in SECTION_TYPES.items():
         names = {f.name for f in dataclasses.fields(kind)} - (nested if section == "boat" else set())
-        assert names == {k.name for k in KEYS[section]}, section
+        assert names == {k.name for k in {**KEYS, **OPTIONAL_KEYS}[section]}, section
 
 
 @pytest.mark.parametrize("name", BOATS)

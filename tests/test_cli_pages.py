@@ -101,7 +101,7 @@ def test_help_shows_defaults(capsys):
         main(["polar", "--help"])
     out = " ".join(capsys.readouterr().out.split())
     assert "seconds per point (default: 60)" in out
-    assert "(default: 2,4,6)" in out and "(default: saoud)" in out
+    assert "(default: 2,4,6; with --reference: the file's)" in out and "(default: saoud)" in out
 
 
 def test_sweep_help_lists_every_key_and_namespace_of_a_sweep_file(capsys):

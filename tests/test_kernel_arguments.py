@@ -94,6 +94,6 @@ def test_every_force_switch_has_one_slot_in_p():
         sail_tangential=False, added_mass_coupling="kirchhoff", vertical_damping="body",
         restoring_axes="body", resistance="friction", foils="paper", keel_downwash=False,
         windage=False, wave_hull=False, wave_foil_flow=False, wave_diffraction=False,
-        wave_damping="absolute", wave_pressure_decay=False, wave_reflection=False))
+        wave_damping="absolute", wave_pressure_decay=False, wave_reflection=False, rig_interaction="none"))
     changed = set(np.flatnonzero(on != off))
     assert changed == set(slots)  # every switch moves its slot, and nothing else

@@ -21,8 +21,8 @@ DEFAULTS = dict(sail_mode="actuated", dofs=6, paper_model="paper", hydrostatics=
                 sail_tangential=True, added_mass_coupling="impulse", vertical_damping="world",
                 restoring_axes="horizontal", resistance="dsyhs", foils="finite",
                 keel_downwash=True, windage=True, wave_hull=True, wave_foil_flow=True, wave_diffraction=True,
-                wave_damping="relative", wave_pressure_decay=True, wave_reflection=True, boat_options={},
-                waves=None, timestep=None)
+                wave_damping="relative", wave_pressure_decay=True, wave_reflection=True,
+                rig_interaction="lumped_vortex", boat_options={}, waves=None, timestep=None)
 
 
 # ---- one definition of each set of choices --------------------------------------------------
@@ -31,7 +31,7 @@ def test_each_choice_set_is_one_literal():
     assert options.choices(options.World) == ("mujoco", "paper")
     assert options.choices(options.Dofs) == (6, 4)
     literals = [v for v in vars(options).values() if typing.get_origin(v) is typing.Literal]
-    assert len(literals) == 12  # with the sea's spectra (WaveConfig.spectrum)
+    assert len(literals) == 13  # with the sea's spectra (WaveConfig.spectrum)
     assert options.SPECTRA == options.choices(options.Spectrum)
     assert options.literal_fields(PhysicsOptions) == {
         "hydrostatics": options.choices(options.Hydrostatics),
@@ -41,6 +41,7 @@ def test_each_choice_set_is_one_literal():
         "resistance": options.choices(options.Resistance),
         "foils": options.choices(options.Foils),
         "wave_damping": options.choices(options.WaveDamping),
+        "rig_interaction": options.choices(options.RigInteraction),
         "sail_mode": options.choices(options.SailMode),
         "dofs": options.choices(options.Dofs),
         "paper_model": options.choices(options.PaperModel)}

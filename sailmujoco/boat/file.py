@@ -18,7 +18,7 @@ from pathlib import Path
 from .catalogue import BUILT_IN, get_boat
 from .fitted_file import FITTED, fitted_lines
 from .params import BoatParams
-from .schema import KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key
+from .schema import KEYS, OPTIONAL_KEYS, SECTION_MEANING, SECTION_TYPES, SOURCES, Key
 from .sources import SOURCES as BUILT_IN_SOURCES
 
 __all__ = ["boat_toml", "name_clash", "write_boat"]
@@ -60,6 +60,14 @@ def boat_toml(params: BoatParams, name: str | None = None) -> str:
             value = name if key.name == "name" else getattr(holder, key.name)
             lines += _key_lines(section, key, value,
                                 _source(params, section, key.name, value, ref_holder))
+    for section, keys in OPTIONAL_KEYS.items():
+        holder = getattr(params, section)
+        if holder is None:
+            continue
+        lines += ["", f"[{section}]  # {SECTION_MEANING[section]}"]
+        for key in keys:
+            value = getattr(holder, key.name)
+            lines += _key_lines(section, key, value, _source(params, section, key.name, value, None))
     for section in FITTED:
         lines += fitted_lines(getattr(params, section), section, params.sources)
     notes = {k: str(v) for k, v in params.sources.items() if "." not in str(k)}

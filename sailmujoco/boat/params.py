@@ -142,6 +142,81 @@ class Sail:
 
 
 @dataclass(frozen=True)
+class Headsail:
+    """A flat triangular headsail (a jib) on the forestay, ahead of the main.
+
+    Its luff runs up the forestay from the tack to the head, ``head_aft`` behind the tack and
+    ``luff_height`` above it; its foot is horizontal, from the tack to the clew. It turns about
+    the vertical through its tack by the angle delta (0: clew straight aft, positive: clew to
+    +y, port, as the main's lambda). Its sheet leads to the deck, so its load goes to the hull:
+    it has no hinge of its own. Unless a controller sheets it, delta follows the main by the
+    trim rule of :func:`sailmujoco.forces.headsail.headsail_angle`: the main's angle, held
+    between ``min_angle`` (the sheet's lead) and ``max_angle``. Its force has the main's
+    coefficients (:func:`sailmujoco.forces.sail.sail_force`) at its own aspect ratio.
+
+    Parameters
+    ----------
+    area : float
+        Sail area, m^2; 0: no headsail (the boat sails as with its main alone, bit for bit).
+    luff_height : float
+        Height of the head above the tack, m.
+    head_aft : float
+        The head's distance behind the tack (the forestay's run), m.
+    tack_x : float
+        The tack (the forestay's foot) forward of CO, m.
+    tack_height : float
+        The tack above the waterline, m.
+    min_angle : float
+        The smallest |delta| the sheet's lead allows, rad.
+    max_angle : float
+        The largest |delta|, rad.
+    """
+
+    area: float
+    luff_height: float
+    head_aft: float
+    tack_x: float
+    tack_height: float
+    min_angle: float
+    max_angle: float
+
+    def __post_init__(self):
+        for name in ("area", "head_aft", "min_angle"):
+            value = getattr(self, name)
+            if not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0.0:
+                raise ValueError(f"Headsail.{name} must be a finite number >= 0, got {value!r}")
+        _check_positive(self, ("luff_height", "max_angle"))
+        if not self.min_angle <= self.max_angle <= math.pi:
+            raise ValueError(f"Headsail angles need 0 <= min_angle <= max_angle <= pi, got "
+                             f"{self.min_angle!r}, {self.max_angle!r}")
+
+    @property
+    def foot(self) -> float:
+        """Tack to clew, m (area = foot x luff_height / 2)."""
+        return 2.0 * self.area / self.luff_height
+
+    @property
+    def aspect_ratio(self) -> float:
+        """luff_height^2 / area, -."""
+        return self.luff_height**2 / self.area if self.area > 0.0 else 0.0
+
+    @property
+    def ce_aft(self) -> float:
+        """The centroid's distance behind the tack along the foot's line, m."""
+        return (self.head_aft + self.foot) / 3.0
+
+    @property
+    def ce_height(self) -> float:
+        """The centroid above the waterline, m."""
+        return self.tack_height + self.luff_height / 3.0
+
+    @property
+    def section_chord(self) -> float:
+        """The sail's chord at its centroid's height (2/3 of the foot), m; the centroid lies at its middle."""
+        return 2.0 * self.foot / 3.0
+
+
+@dataclass(frozen=True)
 class BoatParams:
     """Everything the MJCF builder, the force models and the reduced models need.
 
@@ -200,6 +275,8 @@ class BoatParams:
     actuators : ActuatorOptions, str or dict
         The servos the commands go through (:func:`sailmujoco.boat.fitted.actuator_options`);
         default ``perfect``. A task's own ``actuators=`` overrides it.
+    headsail : Headsail or None
+        A headsail beside the main (None: the main alone).
     sources : dict
         Field -> where its number comes from (not compared).
     """
@@ -230,6 +307,7 @@ class BoatParams:
     paper_righting: str = "sin_cos"
     sensors: SensorOptions = SensorOptions()
     actuators: ActuatorOptions = ActuatorOptions()
+    headsail: Headsail | None = None
     sources: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):

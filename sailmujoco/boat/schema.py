@@ -2,9 +2,10 @@
 
 A boat file is TOML with one section per parameter type: ``[boat]`` (:class:`BoatParams`'s own
 numbers), ``[hull]`` (:class:`~sailmujoco.boat.hull.HullShape`), ``[keel]`` and ``[rudder]``
-(:class:`~sailmujoco.boat.params.Foil`), ``[sail]`` (:class:`~sailmujoco.boat.params.Sail`), the
-optional ``[sensors]`` and ``[actuators]`` (the boat as fitted, :mod:`sailmujoco.boat.fitted_file`)
-and an optional ``[sources]`` table of notes. Every number is SI, angles in radians; arrays are
+(:class:`~sailmujoco.boat.params.Foil`), ``[sail]`` (:class:`~sailmujoco.boat.params.Sail`), an
+optional ``[headsail]`` (:class:`~sailmujoco.boat.params.Headsail`), the optional ``[sensors]``
+and ``[actuators]`` (the boat as fitted, :mod:`sailmujoco.boat.fitted_file`) and an optional
+``[sources]`` table of notes. Every number is SI, angles in radians; arrays are
 TOML arrays. :func:`read_boat` refuses a bad file with one line per problem, each naming the
 file, the section and the key. Writing one: :mod:`sailmujoco.boat.file`.
 """
@@ -21,7 +22,7 @@ from ..names import nearest, unknown_message
 from ..tomlfile import read_toml
 from .fitted_file import FITTED, read_fitted
 from .hull import HullShape
-from .params import BoatParams, Foil, Sail
+from .params import BoatParams, Foil, Headsail, Sail
 
 
 @dataclass(frozen=True)
@@ -141,14 +142,29 @@ KEYS: dict[str, tuple[Key, ...]] = {
 }
 """Section -> its keys, in the order of the dataclass fields they fill."""
 
+OPTIONAL_KEYS: dict[str, tuple[Key, ...]] = {
+    "headsail": (
+        _at_least_0("area", "m^2", "sail area (0: no headsail)"),
+        _positive("luff_height", "m", "height of the head above the tack"),
+        _at_least_0("head_aft", "m", "the head behind the tack (the forestay's run, J for a masthead rig)"),
+        _real("tack_x", "m", "the tack (the forestay's foot) forward of CO"),
+        _real("tack_height", "m", "the tack above the waterline"),
+        Key("min_angle", "rad", "smallest sheeting angle |delta| (the sheet's lead)", low=0.0, high=math.pi),
+        Key("max_angle", "rad", "largest sheeting angle |delta|", low=0.0, open_low=True, high=math.pi),
+    ),
+}
+"""The sections a boat may leave out (the boat then has none of that part)."""
+
 SECTION_MEANING = {
     "boat": "the boat as a whole: mass, inertia, added mass, damping, fluids",
     "hull": "the canoe body (sailmujoco.boat.hull): parabolic planform, half-elliptic sections",
     "keel": "the keel, a fixed symmetric foil, part of the hull",
     "rudder": "the rudder, a balanced foil turning about a vertical stock through its CP",
     "sail": "the mainsail: a flat triangle on a boom turning about the mast",
+    "headsail": "a headsail on the forestay, sheeted to the deck, trimmed to follow the main",
 }
-SECTION_TYPES = {"boat": BoatParams, "hull": HullShape, "keel": Foil, "rudder": Foil, "sail": Sail}
+SECTION_TYPES = {"boat": BoatParams, "hull": HullShape, "keel": Foil, "rudder": Foil, "sail": Sail,
+                 "headsail": Headsail}
 """Section -> the dataclass it fills."""
 SOURCES = "sources"  # the optional table of notes
 
@@ -206,7 +222,7 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
     if not any(isinstance(data.get(section), dict) for section in KEYS):
         raise ValueError(f"{where} is not a boat file: it has none of the sections "
                          f"{', '.join(f'[{s}]' for s in KEYS)} (`sailmujoco boat export` writes one)")
-    known = [*KEYS, *FITTED, SOURCES]
+    known = [*KEYS, *OPTIONAL_KEYS, *FITTED, SOURCES]
     problems = [unknown_message("section", name, known, f"boat file {where}")
                 for name in data if name not in known]
     values = {}
@@ -215,6 +231,15 @@ def boat_from_dict(data: dict, where: str = "boat file") -> BoatParams:
         if not isinstance(table, dict):
             problems.append(f"{where}: missing section [{section}] ({SECTION_MEANING[section]})"
                             if table is None else f"{where}: [{section}] must be a table, got {table!r}")
+            continue
+        values[section], found = _section(table, keys, f"{where}: [{section}]")
+        problems += found
+    for section, keys in OPTIONAL_KEYS.items():
+        table = data.get(section)
+        if table is None:
+            continue
+        if not isinstance(table, dict):
+            problems.append(f"{where}: [{section}] must be a table, got {table!r}")
             continue
         values[section], found = _section(table, keys, f"{where}: [{section}]")
         problems += found
@@ -310,7 +335,7 @@ def _build(values: dict, fitted: dict, notes: dict, where: str) -> BoatParams:
     """The dataclasses from checked values and the fitted sections' figures; their own checks'
     errors name the file and section."""
     parts = {}
-    for section in ("hull", "keel", "rudder", "sail"):
+    for section in ("hull", "keel", "rudder", "sail", *(s for s in OPTIONAL_KEYS if s in values)):
         try:
             parts[section] = SECTION_TYPES[section](**values[section])
         except ValueError as err:

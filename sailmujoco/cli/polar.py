@@ -82,10 +82,10 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
     parser.add_argument("--world", default="mujoco", choices=choices(World),
                         help="mujoco: the 6-DOF boat; paper: the paper's reduced model")
     parser.add_argument("--tws", type=floats,
-                        help="true wind speeds at 10 m, m/s: '2,4,6' or 'start:stop:step' (default 2,4,6; "
+                        help="true wind speeds at 10 m, m/s: '2,4,6' or 'start:stop:step' (default: 2,4,6; "
                              "with --reference: the file's)")
     parser.add_argument("--twa", type=floats,
-                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step' (default "
+                        help="true wind angles off the bow, deg: '30,90' or 'start:stop:step' (default: "
                              "30:180:15; with --reference: the file's below the spinnaker, and the beat)")
     parser.add_argument("--reference", metavar="FILE",
                         help="a reference polar (CSV: tws_kn, twa_deg, boat_speed_kn[, point]) to hold ours "

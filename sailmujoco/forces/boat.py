@@ -45,6 +45,7 @@ from .boat_parameters import (
     P_FOIL_BLOCK,
     P_FORM_K,
     P_G,
+    P_HEADSAIL_BLOCK,
     P_HYDRO_MODE,
     P_K_HEAVE,
     P_K_PITCH,
@@ -105,6 +106,20 @@ from .finite_wing import (
     FB_SAIL_CD_MAX,
     FB_SAIL_SLOPE,
 )
+from .headsail import (
+    HB_AREA,
+    HB_CD_MAX,
+    HB_CE_AFT,
+    HB_CE_HEIGHT,
+    HB_INTERACTION,
+    HB_MAX,
+    HB_MIN,
+    HB_SLOPE,
+    HB_TACK_X,
+    HEADSAIL_BLOCK_SIZE,
+    headsail_angle,
+    interact,
+)
 from .hull_foils import hull_foil_force, point_flow
 from .hydrostatics import hull_buoyancy, paper_restoring
 from .kernel_arguments import with_parameters
@@ -152,7 +167,7 @@ P_ON_REFLECTION = switch_slot("wave_reflection")
  D_SAIL_FLOW_X, D_SAIL_FLOW_Y, D_SIZE) = range(17)
 
 STATUS_OK, STATUS_NONFINITE, STATUS_CAPSIZED = 0, 1, 2
-WORK_SIZE = 86 + SEA_SMALL_SIZE  # scratch floats handed to boat_forces
+WORK_SIZE = 86 + SEA_SMALL_SIZE + 15  # scratch floats handed to boat_forces
 
 
 @kernel
@@ -230,6 +245,9 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
     fluid = work[72:75]  # the water at a foil in a sea: current + orbital velocity
     added, water, sea_wrench = work[75:78], work[78:80], work[80:86]  # the hull in a sea
     sea_small = work[86:86 + SEA_SMALL_SIZE]
+    jib = work[86 + SEA_SMALL_SIZE:WORK_SIZE]  # the headsail: its centroid, wind, flow, force; a spare force
+    jib_point, jib_wind, jib_flow = jib[0:3], jib[3:6], jib[6:9]
+    jib_force, spare_force = jib[9:12], jib[12:15]
     zero3[:] = 0.0
     rotation_from_quat(qpos[3:7], R)
     if R[2, 2] < 0.0:
@@ -301,6 +319,16 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             z0, z1, z2, count, out = z_hull, z_mast, z_mast, 2, winds[3:9]
         wind_velocities(t, z0, z1, z2, count, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
                         gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, out)
+    hb = P_HEADSAIL_BLOCK
+    headsail = on_sail and P[hb + HB_AREA] > 0.0
+    delta, delta_rate = 0.0, 0.0
+    if headsail:  # its centroid turns by delta about the tack's vertical (forces/headsail.py)
+        delta, delta_rate = headsail_angle(lam, qvel[idx[3]], P[hb + HB_MIN], P[hb + HB_MAX])
+        jib_point[0] = P[hb + HB_TACK_X] - P[hb + HB_CE_AFT] * math.cos(delta)
+        jib_point[1], jib_point[2] = P[hb + HB_CE_AFT] * math.sin(delta), P[hb + HB_CE_HEIGHT]
+        z_jib = qpos[2] + R[2, 0] * jib_point[0] + R[2, 1] * jib_point[1] + R[2, 2] * jib_point[2]
+        wind_velocities(t, z_jib, z_jib, z_jib, 1, P[P_WIND_SPEED], P[P_WIND_FROM], oscillation, gust_f,
+                        gust_phase, gust_amp, log_z, P[P_WANDER_DT], wander, gust_cos, jib_wind)
 
     # ---- sail: turns by lambda about the mast (-z); flow at its CE (Wille eqs. 25-29) ----
     sail_hinge = 0.0
@@ -316,6 +344,20 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         diag[D_SAIL_FLOW_X], diag[D_SAIL_FLOW_Y] = flow[0], flow[1]
         # Saoud's C_N (slope 0 selects it) or the finite wing's (forces/finite_wing.py)
         slope = P[fb + FB_SAIL_SLOPE] if finite else 0.0
+        if headsail:  # its flow, the two sails' interaction, and its force (to the hull, at its CE)
+            for i in range(3):
+                wind_b[i] = R[0, i] * jib_wind[0] + R[1, i] * jib_wind[1] + R[2, i] * jib_wind[2]
+            extra[0] = delta_rate * P[hb + HB_CE_AFT] * math.sin(delta)
+            extra[1] = delta_rate * P[hb + HB_CE_AFT] * math.cos(delta)
+            point_flow(wind_b, v, w, jib_point, extra, jib_flow)
+            if P[hb + HB_INTERACTION] > 0.0:
+                interact(flow, jib_flow, lam, delta, P[P_MAST_X], P[P_CE_AFT], P[hb:hb + HEADSAIL_BLOCK_SIZE],
+                         P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL], P[P_CF_SAIL], P[P_RHO_A],
+                         P[P_SAIL_AREA], slope, P[fb + FB_SAIL_CD_MAX], chord, normal, spare_force, jib_force)
+            sail_force(jib_flow, delta, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL], P[P_CF_SAIL],
+                       P[P_RHO_A], P[hb + HB_AREA], P[hb + HB_SLOPE] if finite else 0.0, P[hb + HB_CD_MAX],
+                       chord, normal, jib_force)
+            _accumulate(terms, T_SAIL, jib_force, jib_point)
         speed, alpha, c_n, c_t = sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
                                             P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA], slope,
                                             P[fb + FB_SAIL_CD_MAX], chord, normal, force)

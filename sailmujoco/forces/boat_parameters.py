@@ -30,6 +30,7 @@ from ..options import (
 )
 from ..options import choices as literal_choices
 from .finite_wing import pack_foil_block
+from .headsail import HB_INTERACTION, HEADSAIL_BLOCK_SIZE, pack_headsail
 from .resistance import delft_hull, pack_resistance
 from .sea_kernels import (
     SB_DIFFRACTION,
@@ -71,7 +72,8 @@ P_FOIL_BLOCK, FOIL_BLOCK_SIZE = 133, 16  # forces/finite_wing.py (finite-wing fo
 P_WINDAGE_BLOCK, WINDAGE_BLOCK_SIZE = 149, 16  # forces/windage.py
 P_SEA_BLOCK, SEA_BLOCK_SIZE = 165, 10  # forces/sea_kernels.py (ramp, switches, the hull's grid)
 P_SEA_RAMP = P_SEA_BLOCK + SB_RAMP  # s, the waves' start-up ramp T_r; 0 in calm water
-P_NEW_SWITCHES = 175  # then one slot for each switch that has no slot of its own below
+P_HEADSAIL_BLOCK = 175  # forces/headsail.py (HEADSAIL_BLOCK_SIZE floats)
+P_NEW_SWITCHES = P_HEADSAIL_BLOCK + HEADSAIL_BLOCK_SIZE  # then one slot per switch with no slot below
 
 
 # The force switches' slots, one per field of ForceSwitches: (slot, the value packed as 1.0);
@@ -96,6 +98,7 @@ SWITCH_SLOTS = {
     "wave_diffraction": (P_SEA_BLOCK + SB_DIFFRACTION, True),
     "wave_damping": (P_SEA_BLOCK + SB_RELATIVE_DAMPING, "relative"),
     "wave_pressure_decay": (P_SEA_BLOCK + SB_PRESSURE_DECAY, True),
+    "rig_interaction": (P_HEADSAIL_BLOCK + HB_INTERACTION, "lumped_vortex"),
 }
 # A force added to ForceSwitches as an on/off field gets its slot here, after the blocks, in the
 # order of the fields; the force reads it as P[switch_slot(name)] (docs/architecture.md, "Add a
@@ -190,4 +193,5 @@ def pack_parameters(p: BoatParams, switches: ForceSwitches | None = None, *, win
     P[P_FOIL_BLOCK:P_FOIL_BLOCK + block.size] = block
     pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
     pack_sea_block(h, waves, P[P_SEA_BLOCK:P_SEA_BLOCK + SEA_BLOCK_SIZE])
+    pack_headsail(p, P[P_HEADSAIL_BLOCK:P_HEADSAIL_BLOCK + HEADSAIL_BLOCK_SIZE])
     return P

@@ -18,6 +18,7 @@ import numpy as np
 from . import overlays, panel, sea, water
 from .camera import DISTANCE_MASTHEADS, ELEVATION_DEG, FollowCamera, boom_angle, top_pose, yaw_of
 from .gl import import_gl, offscreen_renderer
+from .headsail import add_headsail, pose_headsail
 from .overlays import FORCES
 
 CAMERAS = ("follow", "top", "side")
@@ -197,6 +198,7 @@ def display_model(params, sail_mode: str = "actuated", width: int = 640, height:
                                      include={f"{params.name}.xml": boat.to_xml().encode()})
     deepest = params.hull.canoe_draft + max(params.keel.span, params.rudder.span)  # m, the foils' tips
     water.add_deep_water(spec, deepest + 0.25 * params.hull.length)
+    add_headsail(spec, params)
     if sea.has_sea(waves):
         sea.add_sea_surface(spec, sea.SeaLayout(waves, params.hull.length))
     model = spec.compile()
@@ -379,6 +381,7 @@ class SceneRenderer:
         d.qpos[3:7] = quat
         d.qpos[self._rudder] = snap.rudder
         d.qpos[self._sail] = snap.sail
+        pose_headsail(m, d, self.params, snap.position, snap.rotation, snap.sail)
         if self.sea is not None:
             self.sea.update(snap.time, snap.position)
         mujoco.mj_kinematics(m, d)
