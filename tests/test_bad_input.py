@@ -13,7 +13,7 @@ from sailmujoco.physics import BoatPhysics, SimulationStopped
 
 
 def test_unknown_boat():
-    known = "saoud_robot, viel_boat, wille_yacht"
+    known = "eleven_metre, saoud_robot, viel_boat, wille_yacht"
     with pytest.raises(ValueError, match=rf"unknown boat 'catamaran' .*\(accepted: {known}\)"):
         BoatPhysics.load("catamaran")
     with pytest.raises(ValueError, match="did you mean 'wille_yacht'"):

@@ -28,7 +28,7 @@ def test_list_names_every_boat_task_world_controller_and_study_on_one_line(capsy
     assert main(["list"]) == 0
     out = capsys.readouterr().out
     boats = _section(out, "boats")
-    assert set(boats) == {"wille_yacht", "saoud_robot", "viel_boat"}
+    assert set(boats) == {"wille_yacht", "saoud_robot", "viel_boat", "eleven_metre"}
     # the papers' numbers: Wille (2016a) App. A, 1600 kg; Saoud (2015) Table I, 15 kg; Viel
     # (2019) Table 1, p9 = 300 kg
     assert "1600 kg" in boats["wille_yacht"] and "Wille" in boats["wille_yacht"]

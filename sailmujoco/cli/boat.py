@@ -1,7 +1,9 @@
-"""The ``sailmujoco boat`` command: ``export`` a boat as a boat file, ``check`` a boat file.
+"""The ``sailmujoco boat`` command: ``export`` a boat as a boat file, ``make`` one from a class's
+principal dimensions, ``check`` a boat file.
 
 ::
 
+    sailmujoco boat make sailmujoco/data/eleven_metre_dimensions.toml --out my_class.toml  # each rule written
     sailmujoco boat export wille_yacht --out my_boat.toml   # every key with its unit and source
     sailmujoco boat export saoud_robot --sensors typical --actuators typical --out fitted.toml
     sailmujoco boat check my_boat.toml --out results/boat/my_boat --wind 6
@@ -20,6 +22,7 @@ from pathlib import Path
 from .arguments import HelpFormatter, file_argument, number, out_folder
 
 EXAMPLES = """examples:
+  sailmujoco boat make dimensions.toml --out my_class.toml  # LOA, LWL, beam, ... -> a boat file
   sailmujoco boat export saoud_robot --out my_boat.toml   # every key with its unit and source
   sailmujoco boat export saoud_robot --sensors typical --actuators typical --out my_boat.toml
   sailmujoco boat check my_boat.toml                      # numbers, gz.png, speeds in 6 m/s
@@ -45,12 +48,11 @@ def add_parser(sub) -> None:
                                       "'boat' in a sweep file).",
                           formatter_class=HelpFormatter, epilog=EXAMPLES)
     actions = boat.add_subparsers(dest="boat_command", required=True, metavar="ACTION",
-                                  help="export or check")
+                                  help="export, make or check")
     export = actions.add_parser("export", help="write a boat as a commented TOML boat file",
                                 formatter_class=HelpFormatter, epilog=EXAMPLES,
                                 description="Write a registered boat as a commented TOML boat file.")
-    export.add_argument("name", help="a registered boat (wille_yacht, saoud_robot, viel_boat) "
-                                     "or a boat file")
+    export.add_argument("name", help="a registered boat (sailmujoco list) or a boat file")
     export.add_argument("--out", metavar="FILE", help="the file to write (default: stdout)")
     for section, what in (("sensors", "instruments the controller reads through"),
                           ("actuators", "servos the commands go through")):
@@ -58,6 +60,16 @@ def add_parser(sub) -> None:
                             help=f"the [{section}] section's preset: the {what} (default: the "
                                  "boat's own, perfect for a built-in boat)")
     export.set_defaults(func=run_cli)
+    make = actions.add_parser("make", help="a boat file from a class's principal dimensions",
+                              formatter_class=HelpFormatter, epilog=EXAMPLES,
+                              description="Derive a boat from its principal dimensions (a TOML file with a "
+                                          "[dimensions] table: name, loa, lwl, beam, draft,\ndisplacement, "
+                                          "ballast, i, j, p, e, main_area, jib_area, optionally freeboard; "
+                                          "SI units)\nby the rules of sailmujoco.boat.principal, each rule "
+                                          "written beside its number.")
+    make.add_argument("dimensions", help="the dimensions file (.toml)")
+    make.add_argument("--out", metavar="FILE", help="the boat file to write (default: stdout)")
+    make.set_defaults(func=run_cli)
     check = actions.add_parser("check", help="validate a boat file; its displacement, draft, LCB, "
                                              "GM_t, GZ curve, periods and speeds",
                                formatter_class=HelpFormatter, epilog=EXAMPLES,
@@ -77,8 +89,8 @@ def run_cli(args) -> int:
     Parameters
     ----------
     args : argparse.Namespace
-        ``boat_command`` ("export": ``name``, ``out``, ``sensors``, ``actuators``; "check":
-        ``file``, ``out``, ``wind``).
+        ``boat_command`` ("export": ``name``, ``out``, ``sensors``, ``actuators``; "make":
+        ``dimensions``, ``out``; "check": ``file``, ``out``, ``wind``).
 
     Returns
     -------
@@ -89,10 +101,15 @@ def run_cli(args) -> int:
     from ..boat.file import boat_toml, name_clash
     from ..boat.schema import is_boat_file
 
-    if args.boat_command == "export":
-        params = get_boat(args.name)
-        fitted = {k: getattr(args, k) for k in ("sensors", "actuators") if getattr(args, k, None)}
-        text = boat_toml(params.with_(**fitted) if fitted else params)
+    if args.boat_command in ("export", "make"):
+        if args.boat_command == "make":
+            from ..boat.principal import boat_from_dimensions, read_dimensions
+
+            text = boat_toml(boat_from_dimensions(read_dimensions(args.dimensions), get_boat("wille_yacht")))
+        else:
+            params = get_boat(args.name)
+            fitted = {k: getattr(args, k) for k in ("sensors", "actuators") if getattr(args, k, None)}
+            text = boat_toml(params.with_(**fitted) if fitted else params)
         if args.out is None:
             sys.stdout.write(text)
         else:

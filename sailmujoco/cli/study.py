@@ -23,10 +23,10 @@ from ..names import unknown_message
 
 STUDY_ENTRY_POINTS = "sailmujoco.studies"
 STUDY_ORDER = ("saoud_fig3_fig4", "saoud_fig6", "saoud_fig7", "wille_course_table2",
-               "wille_roll_table1", "viel_fig3", "assumptions")
+               "wille_roll_table1", "viel_fig3", "real_boats", "assumptions")
 DONE_MARKER = "done.json"
 CODE_PACKAGES = ("sailmujoco", "sailmujoco.controllers", "sailmujoco.studies", "sailmujoco.xml")
-CODE_SUFFIXES = (".py", ".xml", ".dat")
+CODE_SUFFIXES = (".py", ".xml", ".dat", ".csv", ".toml")
 SMOKE_VIDEO_SECONDS = 5.0  # the longest film of a smoke run
 
 

@@ -1,6 +1,7 @@
 """A boat's polar held against a reference polar: the table of ratios, its markdown and its figure.
 
-The fixed-angle points are compared where both polars have the same TWS and TWA; the beat as
+The fixed-angle points are compared where both polars have the same TWS (within
+:data:`WIND_MATCH`) and TWA; the beat as
 the VMG optimum (ours: the best VMG over our own upwind angles; the reference's: its ``beat`` row).
 Points from ``SPINNAKER_FROM`` deg on are left out: ORC's polars assume a spinnaker there, and
 no boat here carries one.
@@ -18,6 +19,7 @@ from .reference_polar import KNOT, ReferencePolar
 
 SPINNAKER_FROM = 110.0  # deg, ORC's polars set a spinnaker from this TWA on
 BEAT_TWA = (36.0, 39.0, 42.0, 45.0, 48.0)  # deg, our upwind angles for the beat beside the fixed ones
+WIND_MATCH = 0.01  # m/s: our wind and the reference's are the same point within this (10 kn: 5.14)
 
 
 def polar_axes(reference: ReferencePolar) -> tuple[list, list]:
@@ -56,13 +58,14 @@ def reference_table(ours: pd.DataFrame, reference: ReferencePolar) -> pd.DataFra
     for _, ref in reference.fixed().iterrows():
         if ref["twa"] >= SPINNAKER_FROM:
             continue
-        match = ours[np.isclose(ours["tws"], ref["tws"], rtol=1e-9) & np.isclose(ours["twa"], ref["twa"])]
+        match = ours[np.isclose(ours["tws"], ref["tws"], rtol=0.0, atol=WIND_MATCH)
+                     & np.isclose(ours["twa"], ref["twa"])]
         if match.empty:
             continue
         rows.append(_row("fixed", ref, float(ref["twa"]), float(match["speed"].iloc[0]), ref["speed"]))
     vmg = best_vmg(ours)
     for _, ref in reference.optimum("beat").iterrows():
-        at = [t for t in vmg if math.isclose(t, ref["tws"], rel_tol=1e-9)]
+        at = [t for t in vmg if math.isclose(t, ref["tws"], abs_tol=WIND_MATCH)]
         if not at:
             continue
         angle, value = vmg[at[0]]["upwind"]
@@ -127,7 +130,7 @@ def plot_reference(ours: pd.DataFrame, reference: ReferencePolar, path, title: s
     ax.set_thetamax(180)
     fixed = reference.fixed()
     for tws, group in ours.groupby("tws"):
-        ref = fixed[np.isclose(fixed["tws"], tws, rtol=1e-9)].sort_values("twa")
+        ref = fixed[np.isclose(fixed["tws"], tws, rtol=0.0, atol=WIND_MATCH)].sort_values("twa")
         label = f"{ref['tws_file'].iloc[0]:g} kn" if not ref.empty else f"{tws:g} m/s"
         group = group.sort_values("twa")
         (line,) = ax.plot(np.radians(group["twa"]), group["speed"] / KNOT, "-o", ms=3,

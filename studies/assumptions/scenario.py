@@ -17,7 +17,7 @@ at least ``SWITCH_TWS_MIN`` (:func:`plane_specs`).
 
 from __future__ import annotations
 
-from sailmujoco.boat.catalogue import SAOUD_CN_POLY
+from sailmujoco.boat.viel_identification import SAOUD_CN_POLY
 from sailmujoco.study import Runs
 
 from ..kit.verdict import TOLERANCE

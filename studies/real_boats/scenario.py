@@ -1,0 +1,171 @@
+"""The 11:Metre, made from its class dimensions, held against ORC's polar of the class; the Wille
+yacht as built beside it; the canoe body's residuary resistance against the Delft tank.
+
+**The polar.** Every point is a `heading_hold` run on heading 0 in a steady wind (no gusts, no
+wander, no start jitter: one deterministic run per point, so N = 1 and no interval) from TWA off
+the starboard bow, under a fixed sail angle; the point's speed is the fastest of the sail angles
+10, 20, ... 60 deg (the `best` polar of `sailmujoco polar`), each the mean speed over the last
+20 s of 60 s. The wind speed is ORC's TWS at 10 m, which is the height of every task's wind. ORC's
+fixed angles 52, 60, 75 and 90 deg at TWS 6, 10 and 16 kn, and the beat as the best VMG over our
+upwind angles (39, 42 and 45 deg and the fixed ones) against ORC's beat; ORC's polar from 110 deg
+assumes a spinnaker, which no boat here carries, so the reaches and runs are left out.
+
+**The switches** (at TWS 6 and 16 kn, TWA 52 and 90 deg): the two sails each in its own flow
+(`rig_interaction="none"`), the main alone (`boat.headsail=False`), the hull's friction alone
+(`resistance="friction"`, no wave-making), and the papers' sail coefficients (`foils="paper"`).
+
+**The tank.** For each of the Delft Series-1 hulls (Gerritsma, Onnink & Versluis 1981), the canoe
+body of this project (parabolic planform, half-elliptic sections) of that hull's slenderness
+L/V^(1/3) and length-beam ratio L/B; its residuary resistance by the boat's own model
+(`sailmujoco.forces.resistance`, Keuning & Katgert 2008) at the tank's Froude numbers against
+the tank's measurement. The canoe body's form fixes the rest: B/T follows from the two (its block
+coefficient is 2 pi / 15), its prismatic coefficient is 8/15 = 0.533 and its LCB is midship (the
+tank's hulls: Cp 0.52-0.60, LCB 0 to 5 % of L aft).
+"""
+
+from __future__ import annotations
+
+import math
+from importlib import resources
+
+import numpy as np
+import pandas as pd
+
+from sailmujoco.boat.hull import HullShape
+from sailmujoco.constants import GRAVITY
+from sailmujoco.design import polar
+from sailmujoco.design.reference_polar import KNOT, read_reference_polar
+from sailmujoco.forces.resistance import delft_hull, pack_resistance, residuary_surge_force
+from sailmujoco.study import Runs
+
+NAME = "real_boats"
+TITLE = "Real boats: the 11:Metre made from its class dimensions against ORC's polar, and the Delft tank"
+BOAT = "eleven_metre"
+VIDEO = {"boat": BOAT, "task": "heading_hold", "controller": "fixed_sail", "seconds": 60.0,
+         "wind_speed": 10 * KNOT, "wind_from_deg": 60.0, "gusts": False, "wander": False}
+SEEDS = 1  # the polar's runs are deterministic (steady wind, fixed start): one run per point
+TWS_KN = (6.0, 10.0, 16.0)
+FIXED_TWA_DEG = (52.0, 60.0, 75.0, 90.0)
+BEAT_TWA_DEG = (39.0, 42.0, 45.0)
+SAILS_DEG = (10.0, 20.0, 30.0, 40.0, 50.0, 60.0)
+DURATION_S = 60.0
+CHECK_TWS_KN = (6.0, 16.0)
+CHECK_TWA_DEG = (52.0, 90.0)
+# case -> (boat, sweep options, what it changes)
+CASES = {
+    "as built": (BOAT, {}, "the 11:Metre as made from its dimensions"),
+    "each sail alone": (BOAT, {"env.rig_interaction": "none"}, "no interaction between the sails"),
+    "main alone": (BOAT, {"boat.headsail": False}, "no jib"),
+    "friction only": (BOAT, {"env.resistance": "friction"}, "no wave-making resistance"),
+    "paper sail": (BOAT, {"env.foils": "paper"}, "Saoud's sail C_N and the papers' foils"),
+    "wille_yacht": ("wille_yacht", {}, "the Wille yacht as built (main only)"),
+}
+TANK_FILE = "dsyhs_series1_residuary_resistance.csv"
+ORC = "orc:eleven_metre"
+
+
+def axes(case: str, smoke: bool) -> tuple[tuple, tuple, tuple, float]:
+    """(TWS kn, TWA deg, sail angles deg, duration s) sailed in ``case``.
+
+    Parameters
+    ----------
+    case : str
+        A key of :data:`CASES`.
+    smoke : bool
+        The short pass.
+    """
+    if smoke:
+        return (10.0,), (52.0, 90.0), (20.0, 40.0), 30.0
+    if case == "as built":
+        return TWS_KN, BEAT_TWA_DEG + FIXED_TWA_DEG, SAILS_DEG, DURATION_S
+    if case == "wille_yacht":
+        return TWS_KN, FIXED_TWA_DEG, SAILS_DEG, DURATION_S
+    return CHECK_TWS_KN, CHECK_TWA_DEG, SAILS_DEG, DURATION_S
+
+
+def folder(case: str) -> str:
+    """The sweep folder of ``case``.
+
+    Parameters
+    ----------
+    case : str
+        A key of :data:`CASES`.
+    """
+    return "sweep-" + case.replace(" ", "_")
+
+
+def runs(smoke: bool, seeds=(0,)) -> Runs:
+    """Every case's polar as one sweep: every TWS x TWA x sail angle.
+
+    Parameters
+    ----------
+    smoke : bool
+        The short pass (one wind, two angles, two sail angles, 30 s).
+    seeds : sequence of int
+        Unused: the runs are deterministic (one per point).
+    """
+    sweeps = []
+    for case, (boat, options, _) in CASES.items():
+        if smoke and case not in ("as built", "each sail alone"):
+            continue
+        tws, twa, sails, duration = axes(case, smoke)
+        spec = polar.polar_spec(boat, "fixed_sail", [s * KNOT for s in tws], twa, duration=duration,
+                                controller_grid={"controller.sail_deg": list(sails)}, options=dict(options))
+        spec["name"] = f"{NAME}-{folder(case)}"
+        sweeps.append((spec, folder(case)))
+    return Runs(sweeps=tuple(sweeps), label=f"{NAME} polars")
+
+
+def reference():
+    """ORC's polar of the 11:Metre (the package's copy)."""
+    return read_reference_polar(ORC)
+
+
+def tank() -> pd.DataFrame:
+    """The Delft Series-1 tank data (the package's copy, its header the source)."""
+    path = resources.files("sailmujoco.data").joinpath(TANK_FILE)
+    return pd.read_csv(path, comment="#")
+
+
+def canoe_body(l_over_volume: float, l_over_b: float, length: float = 10.0) -> HullShape:
+    """This project's canoe body of slenderness L/V^(1/3) and length-beam ratio L/B.
+
+    V = (4 pi / 15) b0 t0 L, b0 = L / (2 L/B): t0 = V / ((4 pi / 15) b0 L).
+
+    Parameters
+    ----------
+    l_over_volume, l_over_b : float
+        The two ratios.
+    length : float
+        L, m (the residuary resistance per weight at a Froude number does not depend on it).
+    """
+    volume = (length / l_over_volume) ** 3
+    half_beam = 0.5 * length / l_over_b
+    return HullShape(length=length, half_beam=half_beam,
+                     canoe_draft=volume / (4.0 * math.pi / 15.0 * half_beam * length), freeboard=0.1 * length)
+
+
+def tank_comparison(rho: float = 1025.0) -> pd.DataFrame:
+    """Per tank hull and Froude number: the tank's R_r / (rho g V) x 1000 and ours, and our hull's B/T.
+
+    Parameters
+    ----------
+    rho : float
+        Water density, kg/m^3 (it cancels).
+    """
+    data = tank()
+    rows = []
+    for (lcb, cp, lv, bt, lb), group in data.groupby(["lcb", "cp", "l_over_displ13", "b_over_t", "l_over_b"],
+                                                     sort=False):
+        h = canoe_body(lv, lb)
+        d = delft_hull(h)
+        block = pack_resistance(d, rho, GRAVITY)
+        weight = rho * GRAVITY * d.volume
+        for fn, measured in zip(group["fn"], group["rr_per_weight_x1000"], strict=True):
+            u = fn * math.sqrt(GRAVITY * h.length)
+            ours = -residuary_surge_force(u, 0.0, block) / weight * 1000.0
+            rows.append({"lcb": lcb, "cp": cp, "l_over_displ13": lv, "b_over_t": bt, "l_over_b": lb,
+                         "our_b_over_t": d.beam / d.draft, "fn": fn, "tank": measured, "ours": ours})
+    table = pd.DataFrame(rows)
+    table["ratio"] = np.where(table["tank"] > 0, table["ours"] / table["tank"].where(table["tank"] > 0), np.nan)
+    return table
