@@ -16,7 +16,7 @@ from ..names import unknown_message
 from . import hull as hull_geometry
 from .hull import HullShape
 from .params import BoatParams, Foil, Sail
-from .principal import boat_from_dimensions, eleven_metre_dimensions
+from .principal import RIG_CAMBER, boat_from_dimensions, eleven_metre_dimensions
 from .schema import is_boat_file, read_boat
 from .viel_identification import (
     VIEL_P6,
@@ -361,7 +361,7 @@ def _viel_sail(rho_air: float) -> Sail:
                 time_constant=0.5)  # s, T_lambda: Wille's (Viel gives none)
 
 
-def eleven_metre(headsail: bool = True) -> BoatParams:
+def eleven_metre(headsail: bool = True, camber: float = RIG_CAMBER) -> BoatParams:
     """The 10.3 m, 1600 kg 11:Metre One Design, made from its class's published dimensions.
 
     By the rules of :mod:`sailmujoco.boat.principal`, the Wille yacht its parent
@@ -371,8 +371,10 @@ def eleven_metre(headsail: bool = True) -> BoatParams:
     ----------
     headsail : bool
         With the class's jib (False: the main alone).
+    camber : float
+        The sails' camber ratio (0: the papers' flat plates).
     """
-    return boat_from_dimensions(eleven_metre_dimensions(headsail), wille_yacht())
+    return boat_from_dimensions(eleven_metre_dimensions(headsail), wille_yacht(), camber=camber)
 
 
 BOATS = {"wille_yacht": wille_yacht, "saoud_robot": saoud_robot, "viel_boat": viel_boat,

@@ -106,6 +106,9 @@ class Sail:
         Angle of attack past which the suction collapses, rad.
     friction_coefficient : float
         Skin friction coefficient per face (turbulent flat plate), dimensionless.
+    camber : float
+        Camber ratio f (depth / chord) of the rig's sails, main and headsail, dimensionless; 0: flat
+        plates, the papers' sail (:mod:`sailmujoco.forces.sail_camber`).
     """
 
     area: float
@@ -119,10 +122,13 @@ class Sail:
     suction_efficiency: float = 0.3
     suction_stall: float = math.radians(15.0)
     friction_coefficient: float = 0.005
+    camber: float = 0.0
 
     def __post_init__(self):
         _check_positive(self, ("area", "aspect_ratio", "ce_aft", "ce_height", "mass",
                                "max_angle", "time_constant"))
+        if not (isinstance(self.camber, (int, float)) and 0.0 <= self.camber <= 0.25):
+            raise ValueError(f"Sail.camber must be a camber ratio in [0, 0.25], got {self.camber!r}")
 
     @property
     def luff(self) -> float:

@@ -21,7 +21,8 @@ The rules, and where they come from:
   of pressure at :data:`FOIL_CP_SPAN` of its span, under the CG.
 * **Rudder**: :data:`RUDDER_AREA` of the keel's area at aspect ratio :data:`RUDDER_AR`, at
   :data:`RUDDER_X` of LWL aft of midship.
-* **Rig**: the overhangs split LOA - LWL evenly, so the forestay stands at LOA/2; the mast J aft
+* **Rig**: sails cambered :data:`RIG_CAMBER` deep (:mod:`sailmujoco.forces.sail_camber`); the
+  overhangs split LOA - LWL evenly, so the forestay stands at LOA/2; the mast J aft
   of it; the boom :data:`BOOM_ABOVE_DECK` of P above the deck; the main's luff P, its foot
   from its area (2 A / P), its centroid a third up and a third aft. The headsail's luff on the
   forestay, :data:`JIB_LUFF` of I high, its tack at the deck, sheeted between
@@ -65,6 +66,8 @@ BOOM_ABOVE_DECK = 0.10  # boom height above the deck / P, guess
 JIB_LUFF = 0.95  # the headsail's luff height / I, guess: its head just below the forestay's hounds
 JIB_ANGLES = (math.radians(9.0), math.radians(60.0))  # rad, guess: a genoa track's 8-10 deg lead
 MAIN_MAX_ANGLE = math.radians(85.0)  # rad, guess: the boom against the shrouds
+RIG_CAMBER = 0.10  # camber ratio of main and headsail, guess: upwind sails are cut about a tenth of
+# their chord deep (8-14 %); 0 gives the papers' flat plates (forces/sail_camber.py)
 ELEVEN_METRE = "eleven_metre_dimensions.toml"  # sailmujoco/data: the class's figures
 
 
@@ -121,7 +124,8 @@ class Dimensions:
                              f"displacement ({self.displacement:g} kg)")
 
 
-def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c.RHO_WATER) -> BoatParams:
+def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c.RHO_WATER,
+                         camber: float = RIG_CAMBER) -> BoatParams:
     """The boat of ``d`` by the module's rules, each number's rule in ``sources``.
 
     Parameters
@@ -133,6 +137,8 @@ def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c
         (``get_boat("wille_yacht")``) for ``eleven_metre`` and ``sailmujoco boat make``.
     rho_water : float
         Water density, kg/m^3.
+    camber : float
+        The sails' camber ratio (:data:`RIG_CAMBER`; 0: flat plates).
     """
     mu, s = d.displacement / parent.mass, d.lwl / parent.hull.length
     hull, sources = _hull(d, rho_water)
@@ -147,7 +153,7 @@ def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c
                             f"span below the canoe body), the rest at {z_rest:.3f} m ({REST_HEIGHT:g} of "
                             "the freeboard)")
     keel, rudder, foil_sources = _foils(d, hull, keel_span, parent)
-    sail, headsail, rig_sources = _rig(d, hull, parent)
+    sail, headsail, rig_sources = _rig(d, hull, parent, camber)
     sources.update(foil_sources | rig_sources)
     added = parent.added_mass
     added_mass = (mu * added[0], mu * added[1], -hull_geometry.heave_added_mass(hull, rho_water),
@@ -223,7 +229,7 @@ def _foils(d: Dimensions, hull: HullShape, keel_span: float, parent) -> tuple[Fo
     }
 
 
-def _rig(d: Dimensions, hull: HullShape, parent) -> tuple[Sail, Headsail | None, dict]:
+def _rig(d: Dimensions, hull: HullShape, parent, camber: float) -> tuple[Sail, Headsail | None, dict]:
     """Main and headsail of ``d`` and their keys' sources."""
     tack_x = 0.5 * d.loa  # the overhangs split LOA - LWL evenly: the stem head at LOA / 2
     boom = hull.freeboard + BOOM_ABOVE_DECK * d.p
@@ -231,13 +237,15 @@ def _rig(d: Dimensions, hull: HullShape, parent) -> tuple[Sail, Headsail | None,
     ps = parent.sail
     sail = Sail(area=d.main_area, aspect_ratio=d.p**2 / d.main_area, mast_x=tack_x - d.j, ce_aft=foot / 3.0,
                 ce_height=boom + d.p / 3.0, mass=ps.mass * d.displacement / parent.mass,
-                max_angle=MAIN_MAX_ANGLE, time_constant=ps.time_constant)
+                max_angle=MAIN_MAX_ANGLE, time_constant=ps.time_constant, camber=camber)
     sources = {
         "sail.area": "the class's", "sail.aspect_ratio": "P^2 / area", "sail.mast_x": "LOA / 2 - J",
         "sail.ce_aft": "a third of the foot, 2 area / P",
         "sail.ce_height": f"deck + {BOOM_ABOVE_DECK:g} P + P / 3",
         "sail.mass": "the Wille yacht's per displacement", "sail.max_angle": "guess",
         "sail.time_constant": "the Wille yacht's",
+        "sail.camber": (f"{RIG_CAMBER:g} (guess: upwind sails are cut about a tenth deep)"
+                        if camber == RIG_CAMBER else "given"),
     }
     if d.jib_area <= 0.0:
         return sail, None, sources

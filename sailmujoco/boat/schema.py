@@ -138,6 +138,8 @@ KEYS: dict[str, tuple[Key, ...]] = {
             low=0.0, open_low=True, high=0.5 * math.pi, required=False),
         _at_least_0("friction_coefficient", "-", "skin friction coefficient per face",
                     required=False),
+        Key("camber", "-", "camber ratio f/c of the rig's sails (0: flat plates)", low=0.0, high=0.25,
+            required=False),
     ),
 }
 """Section -> its keys, in the order of the dataclass fields they fill."""

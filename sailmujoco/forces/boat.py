@@ -108,10 +108,12 @@ from .finite_wing import (
 )
 from .headsail import (
     HB_AREA,
+    HB_CAMBER,
     HB_CD_MAX,
     HB_CE_AFT,
     HB_CE_HEIGHT,
     HB_INTERACTION,
+    HB_MAIN_SLOPE,
     HB_MAX,
     HB_MIN,
     HB_SLOPE,
@@ -125,6 +127,7 @@ from .hydrostatics import hull_buoyancy, paper_restoring
 from .kernel_arguments import with_parameters
 from .resistance import residuary_surge_force
 from .sail import sail_force
+from .sail_camber import add_camber_lift
 from .sea_hull import SMALL_SIZE as SEA_SMALL_SIZE
 from .sea_hull import hull_sea_wrench
 from .sea_kernels import (
@@ -354,13 +357,19 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
                 interact(flow, jib_flow, lam, delta, P[P_MAST_X], P[P_CE_AFT], P[hb:hb + HEADSAIL_BLOCK_SIZE],
                          P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL], P[P_CF_SAIL], P[P_RHO_A],
                          P[P_SAIL_AREA], slope, P[fb + FB_SAIL_CD_MAX], chord, normal, spare_force, jib_force)
-            sail_force(jib_flow, delta, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL], P[P_CF_SAIL],
-                       P[P_RHO_A], P[hb + HB_AREA], P[hb + HB_SLOPE] if finite else 0.0, P[hb + HB_CD_MAX],
-                       chord, normal, jib_force)
+            speed, alpha, _, _ = sail_force(jib_flow, delta, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
+                                            P[P_CF_SAIL], P[P_RHO_A], P[hb + HB_AREA],
+                                            P[hb + HB_SLOPE] if finite else 0.0, P[hb + HB_CD_MAX], chord,
+                                            normal, jib_force)
+            add_camber_lift(jib_flow, chord, normal, alpha, speed, P[hb + HB_CAMBER], P[hb + HB_SLOPE],
+                            P[P_STALL], P[P_RHO_A], P[hb + HB_AREA], jib_force)
             _accumulate(terms, T_SAIL, jib_force, jib_point)
         speed, alpha, c_n, c_t = sail_force(flow, lam, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],
                                             P[P_CF_SAIL], P[P_RHO_A], P[P_SAIL_AREA], slope,
                                             P[fb + FB_SAIL_CD_MAX], chord, normal, force)
+        if P[hb + HB_CAMBER] > 0.0:  # a cambered rig (forces/sail_camber.py); flat: nothing added
+            add_camber_lift(flow, chord, normal, alpha, speed, P[hb + HB_CAMBER], P[hb + HB_MAIN_SLOPE],
+                            P[P_STALL], P[P_RHO_A], P[P_SAIL_AREA], force)
         _accumulate(terms, T_SAIL, force, point)
         # moment about the hinge axis (-z): -(arm x F)_z
         sail_hinge = -(arm_x * force[1] - arm_y * force[0])

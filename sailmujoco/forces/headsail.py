@@ -37,16 +37,18 @@ import numpy as np
 from ..jit.kernel import kernel
 from .finite_wing import THIN_AIRFOIL_SLOPE, helmbold_lift_slope, viterna_corrigan_cd_max
 from .sail import sail_force
+from .sail_camber import add_camber_lift
 
 # Offsets inside the headsail's block of P (boat_parameters.P_HEADSAIL_BLOCK)
 (HB_AREA, HB_TACK_X, HB_CE_AFT, HB_CE_HEIGHT, HB_MIN, HB_MAX, HB_SLOPE, HB_CD_MAX, HB_SPAN,
- HB_CHORD, HB_MAIN_SPAN, HB_MAIN_CHORD, HB_INTERACTION) = range(13)
+ HB_CHORD, HB_MAIN_SPAN, HB_MAIN_CHORD, HB_INTERACTION, HB_CAMBER, HB_MAIN_SLOPE) = range(15)
+# HB_CAMBER and HB_MAIN_SLOPE: the rig's camber and the main's finite-wing slope (forces/sail_camber.py)
 HEADSAIL_BLOCK_SIZE = 16
 CORE_PER_CHORD = 0.25  # vortex core radius / the inducing sail's section chord (module docstring)
 
 
 def pack_headsail(p, block: np.ndarray) -> None:
-    """Write a boat's headsail into its block of P (all zero where it has none).
+    """Write a boat's headsail, and its rig's camber, into their block of P (zero where it has none).
 
     Parameters
     ----------
@@ -56,6 +58,8 @@ def pack_headsail(p, block: np.ndarray) -> None:
         The block, written in place (the interaction switch's slot is left to the switches).
     """
     h = p.headsail
+    block[HB_CAMBER] = p.sail.camber  # the rig's camber (forces/sail_camber.py), with or without a headsail
+    block[HB_MAIN_SLOPE] = helmbold_lift_slope(THIN_AIRFOIL_SLOPE, p.sail.aspect_ratio)
     if h is None or h.area <= 0.0:
         block[:HB_INTERACTION] = 0.0
         return
@@ -157,11 +161,15 @@ def interact(main_flow, jib_flow, main_angle, jib_angle, mast_x, main_ce_aft, bl
     chord, normal, main_force, jib_force : numpy.ndarray, shape (3,)
         Work arrays.
     """
-    sail_force(main_flow, main_angle, tangential, suction, stall, friction, rho_air, main_area, main_slope,
-               main_cd_max, chord, normal, main_force)
+    speed, alpha, _, _ = sail_force(main_flow, main_angle, tangential, suction, stall, friction, rho_air,
+                                    main_area, main_slope, main_cd_max, chord, normal, main_force)
+    add_camber_lift(main_flow, chord, normal, alpha, speed, block[HB_CAMBER], block[HB_MAIN_SLOPE], stall,
+                    rho_air, main_area, main_force)
     jib_slope = block[HB_SLOPE] if main_slope > 0.0 else 0.0
-    sail_force(jib_flow, jib_angle, tangential, suction, stall, friction, rho_air, block[HB_AREA], jib_slope,
-               block[HB_CD_MAX], chord, normal, jib_force)
+    speed, alpha, _, _ = sail_force(jib_flow, jib_angle, tangential, suction, stall, friction, rho_air,
+                                    block[HB_AREA], jib_slope, block[HB_CD_MAX], chord, normal, jib_force)
+    add_camber_lift(jib_flow, chord, normal, alpha, speed, block[HB_CAMBER], block[HB_SLOPE], stall, rho_air,
+                    block[HB_AREA], jib_force)
     gamma_main = circulation(main_force, main_flow, rho_air, block[HB_MAIN_SPAN])
     gamma_jib = circulation(jib_force, jib_flow, rho_air, block[HB_SPAN])
     # quarter- and three-quarter-chord points of each section, along its chord (aft of the CE: +)
