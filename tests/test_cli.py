@@ -22,7 +22,7 @@ def test_check_reports_health(capsys, tmp_path):
     out = capsys.readouterr().out
     assert code == 0
     assert "health: OK" in out
-    assert out.count(" ok ") == 6  # three boats x two hydrostatic modes
+    assert out.count(" ok ") == 8  # four boats x two hydrostatic modes
     assert (tmp_path / "righting_curve_wille_yacht.png").stat().st_size > 10_000
 
 

@@ -16,6 +16,7 @@ import numpy as np
 import pytest
 
 from sailmujoco import frames
+from sailmujoco.boat.catalogue import BOATS
 from sailmujoco.forces import boat as kernels
 from sailmujoco.forces.wind import WindConfig
 from sailmujoco.physics import BoatPhysics, ForceSwitches
@@ -119,4 +120,5 @@ def test_the_compiled_kernel_stays_on_its_fast_path():
     result = json.loads(out.stdout.strip().splitlines()[-1])
     assert result["signatures"] == 1
     assert result["signatures_4dof"] == 1  # the compiled 4-DOF stage, every boat and mode
-    assert len(result["entries"]) == 25 and all(result["entries"])
+    # every boat x both hydrostatics x both force forms x both sail modes, and the 4-DOF stage
+    assert len(result["entries"]) == 8 * len(BOATS) + 1 and all(result["entries"])

@@ -21,7 +21,7 @@ from sailmujoco.gym import SailGymEnv, gym_ids
 
 def test_every_boat_and_task_has_a_registered_id():
     ids = gym_ids()
-    assert len(ids) == len(set(ids)) == len(BOATS) * len(suite.TASKS) == 15
+    assert len(ids) == len(set(ids)) == len(BOATS) * len(suite.TASKS) == 20
     assert "sailmujoco/WilleYacht-HeadingHold-v0" in ids
     assert "sailmujoco/SaoudRobot-BeamReachRoll-v0" in ids
     assert "sailmujoco/VielBoat-PositionKeeping-v0" in ids

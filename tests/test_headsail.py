@@ -125,3 +125,13 @@ def test_the_mains_upwash_lifts_the_jib_and_the_jibs_downwash_heads_the_main():
                 math.radians(15.0), 0.005, 1.2, p.sail.area, slope, 1.5, *work)
     assert _angle_of_attack(jib_flow, lam) > _angle_of_attack(alone, lam) + math.radians(1.0)
     assert _angle_of_attack(main_flow, lam) < _angle_of_attack(alone, lam) - math.radians(1.0)
+
+
+def test_the_paper_world_refuses_a_boat_with_a_headsail_in_one_line():
+    message = ("boat 'eleven_metre' carries a headsail, and Wille's 4-DOF paper world has the main "
+               "alone: sail it in the 'mujoco' world")
+    with pytest.raises(ValueError, match=message):
+        suite.load("eleven_metre", "heading_hold", "paper")
+    assert ("eleven_metre", "heading_hold", "paper") not in suite.SUITE
+    assert ("eleven_metre", "heading_hold", "mujoco") in suite.SUITE
+    suite.load(get_boat("eleven_metre", headsail=False), "heading_hold", "paper")  # the main alone sails

@@ -174,7 +174,7 @@ HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontrolle
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\nseeds = "0"\n',
      "seeds must be a non-empty list of integers"),
     ('boat = "dinghy"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n',
-     "boat = 'dinghy' is not one of: saoud_robot, viel_boat, wille_yacht"),
+     "boat = 'dinghy' is not one of: eleven_metre, saoud_robot, viel_boat, wille_yacht"),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
      '[grid]\n"task.wind_sped" = [1]\n', "unknown task option 'wind_sped'"),
     ('boat = "saoud_robot"\ntask = "heading_hold"\nworld = "mujoco"\ncontroller = "pid"\n'
@@ -224,7 +224,8 @@ def test_a_sweep_without_world_runs_in_mujoco_and_a_missing_key_lists_the_choice
     spec = {"boat": "saoud_robot", "task": "heading_hold", "controller": "pid", "duration": 1.0}
     assert sweep.validate(spec)["world"] == "mujoco"
     with pytest.raises(sweep.SweepError,
-                       match=r"^missing key 'boat' \(one of: saoud_robot, viel_boat, wille_yacht\)$"):
+                       match=r"^missing key 'boat' \(one of: eleven_metre, saoud_robot, viel_boat, "
+                             r"wille_yacht\)$"):
         sweep.validate({"task": "heading_hold", "controller": "pid"})
 
 

@@ -228,8 +228,8 @@ HEAD = 'boat = "saoud_robot"\ntask = "heading_hold"\ncontroller = "pid"\nduratio
 
 @pytest.mark.parametrize("body,message", [
     (HEAD.replace('"saoud_robot"', '"saoud_robo"'),
-     "boat = 'saoud_robo' is not one of: saoud_robot, viel_boat, wille_yacht, or a boat file ending "
-     "in .toml; did you mean 'saoud_robot'?"),
+     "boat = 'saoud_robo' is not one of: eleven_metre, saoud_robot, viel_boat, wille_yacht, or a boat "
+     "file ending in .toml; did you mean 'saoud_robot'?"),
     (HEAD.replace('"heading_hold"', '"heading_hol"'), "; did you mean 'heading_hold'?"),
     (HEAD + 'world = "mujoc"\n', "world = 'mujoc' is not one of: mujoco, paper; did you mean 'mujoco'?"),
     (HEAD + '[grid]\n"env.hydrostatics" = ["paper", "geometrc"]\n',

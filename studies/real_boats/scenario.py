@@ -11,7 +11,8 @@ upwind angles (39, 42 and 45 deg and the fixed ones) against ORC's beat; ORC's p
 assumes a spinnaker, which no boat here carries, so the reaches and runs are left out.
 
 **The switches** (at TWS 6 and 16 kn, TWA 52 and 90 deg): the two sails each in its own flow
-(`rig_interaction="none"`), the main alone (`boat.headsail=False`), the hull's friction alone
+(`rig_interaction="none"`), the main alone (`boat.headsail=False`), flat-plate sails
+(`boat.camber=0`, the papers' form), the hull's friction alone
 (`resistance="friction"`, no wave-making), and the papers' sail coefficients (`foils="paper"`).
 
 **The tank.** For each of the Delft Series-1 hulls (Gerritsma, Onnink & Versluis 1981), the canoe
@@ -57,6 +58,7 @@ CASES = {
     "each sail alone": (BOAT, {"env.rig_interaction": "none"}, "no interaction between the sails"),
     "main alone": (BOAT, {"boat.headsail": False}, "no jib"),
     "friction only": (BOAT, {"env.resistance": "friction"}, "no wave-making resistance"),
+    "flat sails": (BOAT, {"boat.camber": 0.0}, "flat-plate sails, the papers' form"),
     "paper sail": (BOAT, {"env.foils": "paper"}, "Saoud's sail C_N and the papers' foils"),
     "wille_yacht": ("wille_yacht", {}, "the Wille yacht as built (main only)"),
 }
