@@ -1,7 +1,7 @@
 """The physics step's error on the studies' figures of merit: how large a step each boat may take.
 
 Run: python benchmarks/timestep_convergence.py [--seeds 4] [--steps-ms 2.5,5,10,20,25,50,100]
-     [--boats wille_yacht,saoud_robot,viel_boat] [--worlds mujoco,paper] [--cases WORDS]
+     [--boats wille_yacht,saoud_robot,viel_boat,eleven_metre] [--worlds mujoco,paper] [--cases WORDS]
      [--workers 2] [--full] [--plain-filter] [--csv FILE]
 
 Each case is a task a study reports, with the study's controller, figures of merit and control
@@ -56,7 +56,7 @@ from sailmujoco.boat.mjcf import TIMESTEP
 from sailmujoco.reference import viel_model, wille
 from sailmujoco.step.timing import STEP_TOLERANCE
 
-BOATS = ("wille_yacht", "saoud_robot", "viel_boat")
+BOATS = ("wille_yacht", "saoud_robot", "viel_boat", "eleven_metre")
 STEPS_MS = (2.5, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0)
 SEA = {"spectrum": "pm", "hs": 1.0, "tp": 4.99}  # m, s: the assumption study's 1 m developed sea
 TYPICAL = {"sensors": "typical", "actuators": "typical"}
@@ -140,7 +140,7 @@ def _variants(boat, task, controller, figures, duration, full, *, paper=True, **
 
 # the studies' tasks: wille_roll_table1 (sim 3: roll control on, the true wind), wille_course_table2
 # (its 50 Hz control), saoud_fig6 and saoud_fig7 (S and Bm on l_phi = 0.1 m, the start heading
-# within 2 deg), viel_fig3 (case 1, Viel's 0.01 s control period)
+# within 2 deg), viel_fig3 (case 1, Viel's 0.01 s control period), real_boats (the 11:Metre's polar)
 SIM3 = {"roll_control": True, "wind": "perfect"}
 JITTER = {"heading_jitter_deg": 2.0}
 CASES = (
@@ -158,6 +158,12 @@ CASES = (
                   "gusts": False, "wander": False, **JITTER}),
     *_variants("viel_boat", "position_keeping", "viel", KEEPING, 100.0, 200.0, control_timestep=0.01,
                options={"case": 1}),
+    # real_boats: one polar point of the two-sail 11:Metre (10 kn at 52 deg, its main at 20 deg);
+    # no paper world, which has the main alone
+    *_variants("eleven_metre", "heading_hold", "fixed_sail", POLAR, 60.0, 60.0, paper=False,
+               controller_options={"sail_deg": 20.0},
+               options={"wind_speed": 5.144, "wind_from_deg": 52.0, "gusts": False, "wander": False,
+                        **JITTER}),
 )
 
 

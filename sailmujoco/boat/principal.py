@@ -14,11 +14,12 @@ The rules, and where they come from:
   the deck (the topsides flare between); canoe-body draft from the displacement by the hull's
   own volume, V = (4 pi / 15) b0 t0 L, the keel's small volume left out; freeboard
   :data:`FREEBOARD_PER_LOA` of LOA where the dimensions do not give it.
-* **Mass and CG**: the ballast at :data:`BALLAST_SPAN` of the fin's span below the canoe body,
+* **Mass and CG**: the ballast at :data:`BALLAST_SPAN` of the fin's span below its root,
   the rest of the mass at :data:`REST_HEIGHT` of the freeboard above the waterline; CG at
   midship, where the symmetric canoe body has its LCB.
-* **Keel**: a fin from the canoe body to the draft, chord :data:`KEEL_CHORD` of LWL, its centre
-  of pressure at :data:`FOIL_CP_SPAN` of its span, under the CG.
+* **Keel**: a fin from its root (:data:`KEEL_ROOT` of the canoe body's depth, where the model
+  hangs it) to the draft, chord :data:`KEEL_CHORD` of LWL, its centre of pressure at
+  :data:`FOIL_CP_SPAN` of its span, under the CG.
 * **Rudder**: :data:`RUDDER_AREA` of the keel's area at aspect ratio :data:`RUDDER_AR`, at
   :data:`RUDDER_X` of LWL aft of midship.
 * **Rig**: sails cambered :data:`RIG_CAMBER` deep (:mod:`sailmujoco.forces.sail_camber`); the
@@ -58,6 +59,8 @@ BALLAST_SPAN = 0.6  # ballast centroid / fin span below the canoe body, guess: a
 REST_HEIGHT = 0.31  # the rest's centroid / freeboard, the Wille yacht's 0.25 m over its 0.8 m freeboard
 KEEL_CHORD = 0.09  # mean fin chord / LWL, guess: fins of aspect ratio about 2 on 8-10 m keelboats
 FOIL_CP_SPAN = 0.45  # a foil's centre of pressure / its span below its root, guess: a tapered fin
+KEEL_ROOT, RUDDER_ROOT = 0.9, 0.5  # the foils' roots / the canoe body's depth t0: where the model hangs
+# them (mjcf.py), so the drawn boat and `boat check` have the class's draft
 KEEL_THICKNESS = 0.10  # t / c of the fin's NACA section, guess
 RUDDER_AREA = 0.33  # rudder area / keel area, guess: spade rudders of fin-keel boats
 RUDDER_AR = 2.97  # the Wille yacht's rudder aspect ratio (Appendix A)
@@ -142,15 +145,15 @@ def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c
     """
     mu, s = d.displacement / parent.mass, d.lwl / parent.hull.length
     hull, sources = _hull(d, rho_water)
-    keel_span = d.draft - hull.canoe_draft
+    keel_span = d.draft - KEEL_ROOT * hull.canoe_draft
     if keel_span <= 0.0:
         raise ValueError(f"dimensions: draft {d.draft:g} m is not below the canoe body's "
                          f"{hull.canoe_draft:.3f} m: no keel")
-    z_ballast = -(hull.canoe_draft + BALLAST_SPAN * keel_span)
+    z_ballast = -(KEEL_ROOT * hull.canoe_draft + BALLAST_SPAN * keel_span)
     z_rest = REST_HEIGHT * hull.freeboard
     cg_z = (d.ballast * z_ballast + (d.displacement - d.ballast) * z_rest) / d.displacement
     sources["boat.cg_z"] = (f"ballast {d.ballast:g} kg at {z_ballast:.3f} m ({BALLAST_SPAN:g} of the fin's "
-                            f"span below the canoe body), the rest at {z_rest:.3f} m ({REST_HEIGHT:g} of "
+                            f"span below its root), the rest at {z_rest:.3f} m ({REST_HEIGHT:g} of "
                             "the freeboard)")
     keel, rudder, foil_sources = _foils(d, hull, keel_span, parent)
     sail, headsail, rig_sources = _rig(d, hull, parent, camber)
@@ -208,22 +211,22 @@ def _foils(d: Dimensions, hull: HullShape, keel_span: float, parent) -> tuple[Fo
     """Keel and rudder of ``d`` and their keys' sources."""
     keel_area = keel_span * KEEL_CHORD * d.lwl
     keel = Foil(area=keel_area, aspect_ratio=keel_span**2 / keel_area, thickness_ratio=KEEL_THICKNESS,
-                x=0.0, z=-(hull.canoe_draft + FOIL_CP_SPAN * keel_span))
+                x=0.0, z=-(KEEL_ROOT * hull.canoe_draft + FOIL_CP_SPAN * keel_span))
     rudder_area = RUDDER_AREA * keel_area
     rudder_span = math.sqrt(RUDDER_AR * rudder_area)
     x = RUDDER_X * d.lwl
-    root = hull.canoe_draft * hull.fullness(x)  # the canoe body's depth over the rudder stock
+    root = RUDDER_ROOT * hull.canoe_draft
     r = parent.rudder
     rudder = Foil(area=rudder_area, aspect_ratio=RUDDER_AR, thickness_ratio=r.thickness_ratio, x=x,
                   z=-(root + FOIL_CP_SPAN * rudder_span), mass=r.mass * rudder_area / r.area,
                   max_angle=r.max_angle, time_constant=r.time_constant)
     return keel, rudder, {
-        "keel.area": f"span (draft - canoe draft) x chord {KEEL_CHORD:g} LWL (guess)",
+        "keel.area": f"span (draft - {KEEL_ROOT:g} canoe draft) x chord {KEEL_CHORD:g} LWL (guess)",
         "keel.aspect_ratio": "span^2 / area", "keel.thickness_ratio": "guess",
-        "keel.x": "under the CG", "keel.z": f"{FOIL_CP_SPAN:g} of the span below the canoe body (guess)",
+        "keel.x": "under the CG", "keel.z": f"{FOIL_CP_SPAN:g} of the span below its root (guess)",
         "rudder.area": f"{RUDDER_AREA:g} of the keel's (guess)", "rudder.aspect_ratio": "the Wille yacht's",
         "rudder.x": f"{RUDDER_X:g} LWL, the Wille yacht's",
-        "rudder.z": f"{FOIL_CP_SPAN:g} of its span below the hull",
+        "rudder.z": f"{FOIL_CP_SPAN:g} of its span below its root",
         "rudder.mass": "the Wille yacht's per area", "rudder.thickness_ratio": "the Wille yacht's",
         "rudder.max_angle": "the Wille yacht's", "rudder.time_constant": "the Wille yacht's",
     }
