@@ -162,7 +162,7 @@ SECTION_MEANING = {
     "hull": "the canoe body (sailmujoco.boat.hull): parabolic planform, half-elliptic sections",
     "keel": "the keel, a fixed symmetric foil, part of the hull",
     "rudder": "the rudder, a balanced foil turning about a vertical stock through its CP",
-    "sail": "the mainsail: a flat triangle on a boom turning about the mast",
+    "sail": "the mainsail: a triangle on a boom turning about the mast, flat unless cambered",
     "headsail": "a headsail on the forestay, sheeted to the deck, trimmed to follow the main",
 }
 SECTION_TYPES = {"boat": BoatParams, "hull": HullShape, "keel": Foil, "rudder": Foil, "sail": Sail,
