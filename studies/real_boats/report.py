@@ -108,8 +108,8 @@ def report(analysis: Analysis, smoke: bool) -> str:
     text.section("The canoe body against the Delft tank", _tank_paragraph(a))
     text.table(_tank_rows(a))
     text.section("Method", scenario.__doc__.split("\n\n", 1)[1])
-    text.section("Runs", f"{a.runs} simulations, {a.wall_s:.0f} s of wall time on this machine's workers; "
-                 f"headline ratio range {n['ratio_min']:.2f}-{n['ratio_max']:.2f}."
+    text.section("Runs", f"{a.runs} simulations (`study all`'s log gives their time); headline ratio range "
+                 f"{n['ratio_min']:.2f}-{n['ratio_max']:.2f}."
                  + (" Smoke pass: one wind, two angles, two sail angles, 30 s runs." if smoke else ""))
     text.figure(Path("polar_eleven_metre.png"), "The 11:Metre (solid) against ORC's polar (dashed)")
     text.figure(Path("tank.png"), "The canoe body's residuary resistance against the Delft tank")
