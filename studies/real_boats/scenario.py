@@ -21,7 +21,7 @@ L/V^(1/3) and length-beam ratio L/B; its residuary resistance by the boat's own 
 (`sailmujoco.forces.resistance`, Keuning & Katgert 2008) at the tank's Froude numbers against
 the tank's measurement. The canoe body's form fixes the rest: B/T follows from the two (its block
 coefficient is 2 pi / 15), its prismatic coefficient is 8/15 = 0.533 and its LCB is midship (the
-tank's hulls: Cp 0.52-0.60, LCB 0 to 5 % of L aft).
+tank's hulls: Cp 0.53-0.60, LCB 0 to 5 % of L aft).
 """
 
 from __future__ import annotations
