@@ -51,7 +51,7 @@ from .tasks import position  # noqa: F401
 __all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "rollout", "task_options"]
 WORLDS = choices(World)
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS
-              if world == "mujoco" or get_boat(boat).headsail is None)  # the paper worlds: one sail
+              if world == "mujoco" or not get_boat(boat).carries_headsail)  # the paper worlds: one sail
 # keywords of load that are neither task options nor physics fields
 _FORCES, _PARAMS = "forces", "params"
 
@@ -170,7 +170,7 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
 
 def _one_sail(params: BoatParams) -> BoatParams:
     """``params``, refused in one line where it carries a headsail (the paper world has the main alone)."""
-    if params.headsail is not None and params.headsail.area > 0.0:
+    if params.carries_headsail:
         raise ValueError(f"boat {params.name!r} carries a headsail, and Wille's 4-DOF paper world has the "
                          f"main alone: sail it in the 'mujoco' world")
     return params

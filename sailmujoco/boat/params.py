@@ -333,6 +333,11 @@ class BoatParams:
             raise ValueError("rudder needs a positive mass, max_angle and time_constant")
 
     @property
+    def carries_headsail(self) -> bool:
+        """Whether the boat has a headsail of some area (one of zero area is no headsail)."""
+        return self.headsail is not None and self.headsail.area > 0.0
+
+    @property
     def displaced_volume(self) -> float:
         """Design displacement, m^3 (weight = buoyancy)."""
         return self.mass / self.rho_water

@@ -282,6 +282,25 @@ def best_vmg(frame):
     return out
 
 
+def half_polar(size: tuple[float, float]):
+    """(figure, axes) of a polar diagram's half: TWA from 0 at the top, clockwise to 180.
+
+    Parameters
+    ----------
+    size : tuple of float
+        The figure's size, inches.
+    """
+    from .. import figures
+
+    fig = figures.pyplot().figure(figsize=size)
+    ax = fig.add_subplot(projection="polar")
+    ax.set_theta_zero_location("N")
+    ax.set_theta_direction(-1)
+    ax.set_thetamin(0)
+    ax.set_thetamax(180)
+    return fig, ax
+
+
 def plot_polar(frame, path, title: str) -> None:
     """The classic polar: speed against TWA, one curve per TWS, best VMG marked.
 
@@ -296,13 +315,7 @@ def plot_polar(frame, path, title: str) -> None:
     """
     from .. import figures
 
-    plt = figures.pyplot()
-    fig = plt.figure(figsize=(6.5, 6.5))
-    ax = fig.add_subplot(projection="polar")
-    ax.set_theta_zero_location("N")
-    ax.set_theta_direction(-1)
-    ax.set_thetamin(0)
-    ax.set_thetamax(180)
+    fig, ax = half_polar((6.5, 6.5))
     vmg = best_vmg(frame)
     for tws, group in frame.groupby("tws"):
         (line,) = ax.plot(np.radians(group["twa"]), group["speed"], "-o", ms=3,

@@ -14,7 +14,7 @@ import math
 import numpy as np
 import pandas as pd
 
-from .polar import best_vmg
+from .polar import best_vmg, half_polar
 from .reference_polar import KNOT, ReferencePolar
 
 SPINNAKER_FROM = 110.0  # deg, ORC's polars set a spinnaker from this TWA on
@@ -121,13 +121,7 @@ def plot_reference(ours: pd.DataFrame, reference: ReferencePolar, path, title: s
     """
     from .. import figures
 
-    plt = figures.pyplot()
-    fig = plt.figure(figsize=(6.5, 6.8))
-    ax = fig.add_subplot(projection="polar")
-    ax.set_theta_zero_location("N")
-    ax.set_theta_direction(-1)
-    ax.set_thetamin(0)
-    ax.set_thetamax(180)
+    fig, ax = half_polar((6.5, 6.8))
     fixed = reference.fixed()
     for tws, group in ours.groupby("tws"):
         ref = fixed[np.isclose(fixed["tws"], tws, rtol=0.0, atol=WIND_MATCH)].sort_values("twa")

@@ -30,7 +30,7 @@ from pathlib import Path
 import numpy as np
 import pandas as pd
 
-from .. import constants as c
+from ..forces.wind import roughness_length
 
 KNOT = 1852.0 / 3600.0  # m/s, the international knot (1852 m per hour)
 REFERENCE_HEIGHT = 10.0  # m, the height of a task's wind_speed (U10, Wille 2016a eq. 40)
@@ -39,11 +39,6 @@ ORC_ELEVEN_METRE = "orc_polar_eleven_metre.csv"  # the package's copy of ORC's 1
 
 _SPEEDS = {"tws_kn": KNOT, "tws_ms": 1.0}
 _BOAT_SPEEDS = {"boat_speed_kn": KNOT, "boat_speed_ms": 1.0}
-
-
-def roughness_length() -> float:
-    """z0 of the wind model's log profile, m (Wille 2016a eq. 40: U(z0) = 0)."""
-    return REFERENCE_HEIGHT * math.exp(-2.0 / (5.0 * math.sqrt(c.KARMAN_K)))
 
 
 def wind_at_reference(speed, height: float):

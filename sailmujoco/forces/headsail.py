@@ -60,7 +60,7 @@ def pack_headsail(p, block: np.ndarray) -> None:
     h = p.headsail
     block[HB_CAMBER] = p.sail.camber  # the rig's camber (forces/sail_camber.py), with or without a headsail
     block[HB_MAIN_SLOPE] = helmbold_lift_slope(THIN_AIRFOIL_SLOPE, p.sail.aspect_ratio)
-    if h is None or h.area <= 0.0:
+    if not p.carries_headsail:
         block[:HB_INTERACTION] = 0.0
         return
     block[HB_AREA], block[HB_TACK_X] = h.area, h.tack_x

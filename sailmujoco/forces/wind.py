@@ -172,6 +172,12 @@ def norsok_spectrum(f, z, mean_speed_10):
     return 320.0 * u**2 * power(zr, 0.45) / power(1.0 + power(x, n), 5.0 / (3.0 * n))
 
 
+def roughness_length() -> float:
+    """z0 of the log profile, m: where eq. 40's U(z) = U10 (5/2) sqrt(k) ln(z / z0) vanishes, so that
+    U(10 m) = U10."""
+    return 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(c.KARMAN_K)))
+
+
 def log_profile(z, mean_speed_10):
     """Mean wind at height z (m), eq. 40; zero at and below the roughness length z0.
 
@@ -183,7 +189,7 @@ def log_profile(z, mean_speed_10):
         Mean wind speed at 10 m, m/s.
     """
     k = c.KARMAN_K
-    z0 = 10.0 * math.exp(-2.0 / (5.0 * math.sqrt(k)))
+    z0 = roughness_length()
     z = np.asarray(z, dtype=float)
     log = elementwise(math.log, np.maximum(z, z0) / z0)  # the C library's: numpy's varies by CPU
     return np.where(z > z0, mean_speed_10 * 2.5 * math.sqrt(k) * log, 0.0)

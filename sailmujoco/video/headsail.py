@@ -16,17 +16,6 @@ from ..forces.headsail import headsail_angle
 BODY = "headsail"
 
 
-def has_headsail(params) -> bool:
-    """Whether the boat carries a headsail to draw.
-
-    Parameters
-    ----------
-    params : BoatParams
-        The boat.
-    """
-    return params.headsail is not None and params.headsail.area > 0.0
-
-
 def add_headsail(spec, params) -> None:
     """Add the headsail's mocap body and triangle to the display model's spec (nothing without one).
 
@@ -39,7 +28,7 @@ def add_headsail(spec, params) -> None:
     """
     import mujoco
 
-    if not has_headsail(params):
+    if not params.carries_headsail:
         return
     h = params.headsail
     thickness = 0.002 * h.luff_height
@@ -69,7 +58,7 @@ def pose_headsail(model, data, params, position, rotation, main_angle: float) ->
     """
     import mujoco
 
-    if not has_headsail(params):
+    if not params.carries_headsail:
         return
     h = params.headsail
     delta, _ = headsail_angle(main_angle, 0.0, h.min_angle, h.max_angle)
