@@ -121,7 +121,11 @@ def test_the_mains_upwash_lifts_the_jib_and_the_jibs_downwash_heads_the_main():
     main_flow, jib_flow = alone.copy(), alone.copy()
     work = [np.zeros(3) for _ in range(4)]
     slope = 2.0 * math.pi * 5.0 / 7.0
-    hs.interact(main_flow, jib_flow, lam, lam, p.sail.mast_x, p.sail.ce_aft, block, True, 0.3,
+    main_point = np.array([p.sail.mast_x - p.sail.ce_aft * math.cos(lam), p.sail.ce_aft * math.sin(lam),
+                           p.sail.ce_height])
+    h = p.headsail
+    jib_point = np.array([h.tack_x - h.ce_aft * math.cos(lam), h.ce_aft * math.sin(lam), h.ce_height])
+    hs.interact(main_flow, jib_flow, lam, lam, main_point, jib_point, block, True, 0.3,
                 math.radians(15.0), 0.005, 1.2, p.sail.area, slope, 1.5, *work)
     assert _angle_of_attack(jib_flow, lam) > _angle_of_attack(alone, lam) + math.radians(1.0)
     assert _angle_of_attack(main_flow, lam) < _angle_of_attack(alone, lam) - math.radians(1.0)

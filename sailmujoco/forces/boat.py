@@ -354,7 +354,7 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
             extra[1] = delta_rate * P[hb + HB_CE_AFT] * math.cos(delta)
             point_flow(wind_b, v, w, jib_point, extra, jib_flow)
             if P[hb + HB_INTERACTION] > 0.0:
-                interact(flow, jib_flow, lam, delta, P[P_MAST_X], P[P_CE_AFT], P[hb:hb + HEADSAIL_BLOCK_SIZE],
+                interact(flow, jib_flow, lam, delta, point, jib_point, P[hb:hb + HEADSAIL_BLOCK_SIZE],
                          P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL], P[P_CF_SAIL], P[P_RHO_A],
                          P[P_SAIL_AREA], slope, P[fb + FB_SAIL_CD_MAX], chord, normal, spare_force, jib_force)
             speed, alpha, _, _ = sail_force(jib_flow, delta, P[P_TANGENTIAL] > 0.0, P[P_SUCTION], P[P_STALL],

@@ -140,7 +140,7 @@ def add_induced(gamma, from_x, from_y, at_x, at_y, core, flow):
 
 
 @kernel
-def interact(main_flow, jib_flow, main_angle, jib_angle, mast_x, main_ce_aft, block, tangential,
+def interact(main_flow, jib_flow, main_angle, jib_angle, main_point, jib_point, block, tangential,
              suction, stall, friction, rho_air, main_area, main_slope, main_cd_max, chord, normal, main_force,
              jib_force):
     """Each sail's flow gains the other's lumped vortex (one Jacobi step; module docstring).
@@ -151,8 +151,8 @@ def interact(main_flow, jib_flow, main_angle, jib_angle, mast_x, main_ce_aft, bl
         The air relative to each sail at its centroid, m/s; each gains the other's velocity.
     main_angle, jib_angle : float
         lambda and delta, rad.
-    mast_x, main_ce_aft : float
-        The main's mast forward of CO and its centroid behind the mast, m.
+    main_point, jib_point : numpy.ndarray, shape (3,)
+        Each sail's centroid, body frame about CO, m (as the force kernel placed them).
     block : numpy.ndarray
         The headsail's block of P.
     tangential, suction, stall, friction, rho_air, main_area, main_slope, main_cd_max
@@ -175,8 +175,7 @@ def interact(main_flow, jib_flow, main_angle, jib_angle, mast_x, main_ce_aft, bl
     # quarter- and three-quarter-chord points of each section, along its chord (aft of the CE: +)
     cm, sm = -math.cos(main_angle), math.sin(main_angle)  # the main's chord direction, mast -> leech
     cj, sj = -math.cos(jib_angle), math.sin(jib_angle)
-    main_x, main_y = mast_x + main_ce_aft * cm, main_ce_aft * sm
-    jib_x, jib_y = block[HB_TACK_X] + block[HB_CE_AFT] * cj, block[HB_CE_AFT] * sj
+    main_x, main_y, jib_x, jib_y = main_point[0], main_point[1], jib_point[0], jib_point[1]
     qm, qj = 0.25 * block[HB_MAIN_CHORD], 0.25 * block[HB_CHORD]
     add_induced(gamma_jib, jib_x - qj * cj, jib_y - qj * sj, main_x + qm * cm, main_y + qm * sm, qj,
                 main_flow)
