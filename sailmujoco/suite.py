@@ -50,8 +50,15 @@ from .tasks import position  # noqa: F401
 
 __all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "rollout", "task_options"]
 WORLDS = choices(World)
+
+
+def _in_paper_world(params: BoatParams) -> bool:
+    """Whether Wille's 4-DOF paper world can sail ``params``: the main alone, no crew."""
+    return not (params.carries_headsail or params.carries_crew)
+
+
 SUITE = tuple((boat, task, world) for boat in BOATS for task in TASKS for world in WORLDS
-              if world == "mujoco" or not get_boat(boat).carries_headsail)  # the paper worlds: one sail
+              if world == "mujoco" or _in_paper_world(get_boat(boat)))  # the paper worlds: one sail, no crew
 # keywords of load that are neither task options nor physics fields
 _FORCES, _PARAMS = "forces", "params"
 
@@ -169,10 +176,12 @@ def load(boat: str | BoatParams, task: str, world: str = "mujoco", *, seed: int 
 
 
 def _one_sail(params: BoatParams) -> BoatParams:
-    """``params``, refused in one line where it carries a headsail (the paper world has the main alone)."""
-    if params.carries_headsail:
-        raise ValueError(f"boat {params.name!r} carries a headsail, and Wille's 4-DOF paper world has the "
-                         f"main alone: sail it in the 'mujoco' world")
+    """``params``, refused in one line where it carries a headsail or a crew (the paper world has
+    the main alone and no crew)."""
+    if not _in_paper_world(params):
+        part = "a headsail" if params.carries_headsail else "a crew"
+        raise ValueError(f"boat {params.name!r} carries {part}, and Wille's 4-DOF paper world has the "
+                         f"main alone and no crew: sail it in the 'mujoco' world")
     return params
 
 

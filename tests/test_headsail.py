@@ -133,9 +133,9 @@ def test_the_mains_upwash_lifts_the_jib_and_the_jibs_downwash_heads_the_main():
 
 def test_the_paper_world_refuses_a_boat_with_a_headsail_in_one_line():
     message = ("boat 'eleven_metre' carries a headsail, and Wille's 4-DOF paper world has the main "
-               "alone: sail it in the 'mujoco' world")
+               "alone and no crew: sail it in the 'mujoco' world")
     with pytest.raises(ValueError, match=message):
         suite.load("eleven_metre", "heading_hold", "paper")
     assert ("eleven_metre", "heading_hold", "paper") not in suite.SUITE
     assert ("eleven_metre", "heading_hold", "mujoco") in suite.SUITE
-    suite.load(get_boat("eleven_metre", headsail=False), "heading_hold", "paper")  # the main alone sails
+    suite.load(get_boat("eleven_metre", headsail=False, crew=False), "heading_hold", "paper")  # the main alone

@@ -17,7 +17,7 @@ from sailmujoco.forces import stability
 
 # the 11:Metre One Design's class figures (Holland/Gyhlenius 1990), as the issue and ORC's file give them
 CLASS = dict(loa=10.30, lwl=8.20, beam=2.50, draft=1.80, displacement=1600.0, ballast=725.0, i=9.81, j=3.10,
-             p=11.00, e=4.00, main_area=22.83, jib_area=15.22)
+             p=11.00, e=4.00, main_area=22.83, jib_area=15.22, crew=350.0)
 RHO = 1025.0
 
 

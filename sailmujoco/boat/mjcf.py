@@ -82,8 +82,8 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6,
     -------
     mujoco.MjSpec
         Built part by part, in this order (the order fixes the model's element ids): options,
-        materials, hull, keel, mast, hull sites, cameras, rudder, boom and sail, rudder servo,
-        sail servo or sheet, home keyframe.
+        materials, hull, keel, mast, hull sites, cameras, rudder, boom and sail, the crew (its
+        slide the last joint), rudder servo, sail servo or sheet, home keyframe.
     """
     if sail_mode not in SAIL_MODES:
         raise ValueError(f"unknown sail mode {sail_mode!r}; choose one of {SAIL_MODES}")
@@ -98,10 +98,16 @@ def boat_spec(p: BoatParams, sail_mode: str = "actuated", dofs: int = 6,
     _add_cameras(hull, p)
     _add_rudder(hull, p, visual)
     _add_boom_and_sail(spec, hull, p, visual, mast_radius)
+    if p.carries_crew:
+        if dofs != 6:
+            raise ValueError(f"boat {p.name!r} carries a crew, whose slide needs the free hull: dofs=6, "
+                             "or the boat without its crew")
+        _add_crew(spec, hull, p, visual)
     _add_rudder_servo(spec, p)
     home_ctrl = _add_sail_servo(spec, p) if sail_mode == "actuated" else _add_sheet(spec, p)
     key = spec.add_key(name="home")
-    key.qpos = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0] if dofs == 6 else [0.0] * 6
+    key.qpos = ([0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0] + [0.0] * p.carries_crew if dofs == 6
+                else [0.0] * 6)
     key.ctrl = home_ctrl
     key.act = home_ctrl
     return spec
@@ -250,6 +256,26 @@ def _add_boom_and_sail(spec: mujoco.MjSpec, hull, p: BoatParams, visual, mast_ra
     block, boom_end = sheet_geometry(p)
     boom.add_site(name="boom_end", pos=boom_end.tolist())
     hull.add_site(name="sheet_block", pos=block.tolist())
+
+
+def _add_crew(spec: mujoco.MjSpec, hull, p: BoatParams, visual) -> None:
+    """The crew: a body on the slide ``crew`` across the deck (axis +y), starting on the centreline.
+
+    Its mass is the crew's, on top of the boat's; its inertia is that of a mass spread 2 m fore
+    and aft along the rail (m L^2 / 12 about y and z, a tenth of it about x): ours, it matters
+    little beside the boat's. Its drive is the force kernel's (:mod:`sailmujoco.forces.crew`).
+    """
+    c = p.crew
+    spec.add_material(name="crew_red", rgba=[0.8, 0.2, 0.15, 1.0])
+    crew = hull.add_body(name="crew", pos=[c.x, 0.0, c.height])
+    crew.explicitinertial = True
+    crew.mass = c.mass
+    crew.ipos = [0.0, 0.0, 0.0]
+    spread = c.mass * 2.0**2 / 12.0
+    crew.inertia = [0.1 * spread, spread, spread]
+    crew.add_joint(name="crew", type=mujoco.mjtJoint.mjJNT_SLIDE, axis=[0.0, 1.0, 0.0])
+    crew.add_geom(name="crew", default=visual, type=mujoco.mjtGeom.mjGEOM_CAPSULE,
+                  fromto=[-0.8, 0.0, 0.0, 0.8, 0.0, 0.0], size=[0.18, 0, 0], material="crew_red")
 
 
 def _add_rudder_servo(spec: mujoco.MjSpec, p: BoatParams) -> None:

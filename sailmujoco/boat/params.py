@@ -223,6 +223,48 @@ class Headsail:
 
 
 @dataclass(frozen=True)
+class Crew:
+    """The crew as movable ballast: a mass that sits on the weather rail and crosses in a tack.
+
+    The crew's mass rides a slide across the deck (the body y axis) at ``x`` and ``height``; it
+    is the model's last joint (:mod:`sailmujoco.boat.mjcf`). The crew sits on the side opposite
+    the boom, the weather side, ``arm`` from the centreline; when the boom crosses, it crosses
+    at a steady walk that takes ``shift_time`` from rail to rail
+    (:mod:`sailmujoco.forces.crew`). On the rail its weight rights the boat by
+    m g arm cos(heel) more than on the centreline.
+
+    Parameters
+    ----------
+    mass : float
+        The crew's mass, kg (on top of the boat's ``mass``); 0: no crew (the boat bit for bit).
+    arm : float
+        The crew's centre of mass off the centreline on the rail, m.
+    height : float
+        The crew's centre of mass above the waterline, m.
+    x : float
+        The crew's centre of mass forward of CO, m.
+    shift_time : float
+        The time the crew takes to cross from rail to rail (a steady walk of 2 arm / shift_time), s.
+    """
+
+    mass: float
+    arm: float
+    height: float
+    x: float
+    shift_time: float
+
+    def __post_init__(self):
+        for name in ("mass", "arm"):
+            value = getattr(self, name)
+            if not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0.0:
+                raise ValueError(f"Crew.{name} must be a finite number >= 0, got {value!r}")
+        _check_positive(self, ("shift_time",))
+        for name in ("height", "x"):
+            if not isinstance(getattr(self, name), (int, float)) or not math.isfinite(getattr(self, name)):
+                raise ValueError(f"Crew.{name} must be a finite number, got {getattr(self, name)!r}")
+
+
+@dataclass(frozen=True)
 class BoatParams:
     """Everything the MJCF builder, the force models and the reduced models need.
 
@@ -283,6 +325,8 @@ class BoatParams:
         default ``perfect``. A task's own ``actuators=`` overrides it.
     headsail : Headsail or None
         A headsail beside the main (None: the main alone).
+    crew : Crew or None
+        The crew as movable ballast (None: no crew; ``mass`` is then the whole boat afloat).
     sources : dict
         Field -> where its number comes from (not compared).
     """
@@ -314,6 +358,7 @@ class BoatParams:
     sensors: SensorOptions = SensorOptions()
     actuators: ActuatorOptions = ActuatorOptions()
     headsail: Headsail | None = None
+    crew: Crew | None = None
     sources: dict = field(default_factory=dict, compare=False, hash=False)
 
     def __post_init__(self):
@@ -336,6 +381,11 @@ class BoatParams:
     def carries_headsail(self) -> bool:
         """Whether the boat has a headsail of some area (one of zero area is no headsail)."""
         return self.headsail is not None and self.headsail.area > 0.0
+
+    @property
+    def carries_crew(self) -> bool:
+        """Whether the boat carries a crew of some mass (one of zero mass is no crew)."""
+        return self.crew is not None and self.crew.mass > 0.0
 
     @property
     def displaced_volume(self) -> float:

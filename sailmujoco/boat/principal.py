@@ -28,6 +28,9 @@ The rules, and where they come from:
   from its area (2 A / P), its centroid a third up and a third aft. The headsail's luff on the
   forestay, :data:`JIB_LUFF` of I high, its tack at the deck, sheeted between
   :data:`JIB_ANGLES`.
+* **Crew** (when the dimensions give its mass): movable ballast on the weather rail
+  (:class:`~sailmujoco.boat.params.Crew`), :data:`CREW_ARM_IN` inboard of the deck edge and
+  :data:`CREW_SEAT` above the deck, amidships; it crosses in :data:`CREW_SHIFT`.
 * **What the dimensions cannot give** (added masses, damping, the radii of gyration, the
   masses of boom and rudder, the servos): the Wille yacht's (Wille, Hassani & Sprenger 2016a,
   Appendix A, as :func:`sailmujoco.boat.catalogue.wille_yacht` reads it), scaled by Froude
@@ -49,7 +52,7 @@ from dataclasses import dataclass, fields
 from .. import constants as c
 from . import hull as hull_geometry
 from .hull import HullShape
-from .params import BoatParams, Foil, Headsail, Sail
+from .params import BoatParams, Crew, Foil, Headsail, Sail
 
 WATERLINE_BEAM = 0.85  # B_WL / B, guess: flared topsides of modern keelboats carry their beam above
 # the water (the Wille yacht's is 0.77, the 11:Metre's lines are not public)
@@ -71,6 +74,10 @@ JIB_ANGLES = (math.radians(9.0), math.radians(60.0))  # rad, guess: a genoa trac
 MAIN_MAX_ANGLE = math.radians(85.0)  # rad, guess: the boom against the shrouds
 RIG_CAMBER = 0.10  # camber ratio of main and headsail, guess: upwind sails are cut about a tenth of
 # their chord deep (8-14 %); 0 gives the papers' flat plates (forces/sail_camber.py)
+CREW_SEAT = 0.3  # m, the crew's centre of mass above the deck, guess: people sitting on the rail
+CREW_ARM_IN = 0.3  # m, the crew's centre of mass inboard of the deck edge, guess: sitting on the rail,
+# legs over the side, bodies upright (not hiked out)
+CREW_SHIFT = 4.0  # s, guess: a crew crossing a 2-3 m deck while the boat tacks
 ELEVEN_METRE = "eleven_metre_dimensions.toml"  # sailmujoco/data: the class's figures
 
 
@@ -92,6 +99,8 @@ class Dimensions:
         Sail areas, m^2 (jib 0: the main alone).
     freeboard : float or None
         Freeboard amidships, m; None: :data:`FREEBOARD_PER_LOA` of LOA.
+    crew : float
+        The crew's mass, kg, on top of the displacement (0: no crew).
     """
 
     name: str
@@ -108,6 +117,7 @@ class Dimensions:
     main_area: float
     jib_area: float = 0.0
     freeboard: float | None = None
+    crew: float = 0.0
 
     def __post_init__(self):
         if not isinstance(self.name, str) or not self.name.isidentifier():
@@ -116,9 +126,10 @@ class Dimensions:
             value = getattr(self, f.name)
             if f.name in ("name", "freeboard") and (f.name == "name" or value is None):
                 continue
-            low_ok = value >= 0.0 if f.name == "jib_area" else value > 0.0
+            may_be_0 = f.name in ("jib_area", "crew")
+            low_ok = value >= 0.0 if may_be_0 else value > 0.0
             if not isinstance(value, (int, float)) or not math.isfinite(value) or not low_ok:
-                kind = "finite number >= 0" if f.name == "jib_area" else "positive finite number"
+                kind = "finite number >= 0" if may_be_0 else "positive finite number"
                 raise ValueError(f"dimensions: {f.name} must be a {kind}, got {value!r}")
         if self.lwl > self.loa:
             raise ValueError(f"dimensions: lwl ({self.lwl:g} m) must not exceed loa ({self.loa:g} m)")
@@ -189,7 +200,20 @@ def boat_from_dimensions(d: Dimensions, parent: BoatParams, rho_water: float = c
         roll_friction=mu * s**1.5 * parent.roll_friction, roll_lift=mu * s * parent.roll_lift,
         roll_frequency=roll_frequency, crossflow_cd=parent.crossflow_cd, keel=keel, rudder=rudder,
         sail=sail, headsail=headsail, rho_water=rho_water, rho_air=parent.rho_air,
-        paper_righting=parent.paper_righting, sources=sources)
+        paper_righting=parent.paper_righting, crew=_crew(d, hull, sources), sources=sources)
+
+
+def _crew(d: Dimensions, hull: HullShape, sources: dict) -> Crew | None:
+    """The crew of ``d`` on the weather rail (None without one); its keys' sources into ``sources``."""
+    if d.crew <= 0.0:
+        return None
+    sources.update({
+        "crew.mass": "given", "crew.arm": f"half the beam less {CREW_ARM_IN:g} m (guess)",
+        "crew.height": f"the deck + {CREW_SEAT:g} m (guess)", "crew.x": "at the CG (midship)",
+        "crew.shift_time": f"{CREW_SHIFT:g} s (guess)",
+    })
+    return Crew(mass=d.crew, arm=0.5 * d.beam - CREW_ARM_IN, height=hull.freeboard + CREW_SEAT, x=0.0,
+                shift_time=CREW_SHIFT)
 
 
 def _hull(d: Dimensions, rho: float) -> tuple[HullShape, dict]:

@@ -3,7 +3,8 @@
 A boat file is TOML with one section per parameter type: ``[boat]`` (:class:`BoatParams`'s own
 numbers), ``[hull]`` (:class:`~sailmujoco.boat.hull.HullShape`), ``[keel]`` and ``[rudder]``
 (:class:`~sailmujoco.boat.params.Foil`), ``[sail]`` (:class:`~sailmujoco.boat.params.Sail`), an
-optional ``[headsail]`` (:class:`~sailmujoco.boat.params.Headsail`), the optional ``[sensors]``
+optional ``[headsail]`` (:class:`~sailmujoco.boat.params.Headsail`), an optional ``[crew]``
+(:class:`~sailmujoco.boat.params.Crew`), the optional ``[sensors]``
 and ``[actuators]`` (the boat as fitted, :mod:`sailmujoco.boat.fitted_file`) and an optional
 ``[sources]`` table of notes. Every number is SI, angles in radians; arrays are
 TOML arrays. :func:`read_boat` refuses a bad file with one line per problem, each naming the
@@ -22,7 +23,7 @@ from ..names import nearest, unknown_message
 from ..tomlfile import read_toml
 from .fitted_file import FITTED, read_fitted
 from .hull import HullShape
-from .params import BoatParams, Foil, Headsail, Sail
+from .params import BoatParams, Crew, Foil, Headsail, Sail
 
 
 @dataclass(frozen=True)
@@ -154,6 +155,13 @@ OPTIONAL_KEYS: dict[str, tuple[Key, ...]] = {
         Key("min_angle", "rad", "smallest sheeting angle |delta| (the sheet's lead)", low=0.0, high=math.pi),
         Key("max_angle", "rad", "largest sheeting angle |delta|", low=0.0, open_low=True, high=math.pi),
     ),
+    "crew": (
+        _at_least_0("mass", "kg", "the crew's mass, on top of the boat's (0: no crew)"),
+        _at_least_0("arm", "m", "the crew's centre of mass off the centreline on the weather rail"),
+        _real("height", "m", "the crew's centre of mass above the waterline"),
+        _real("x", "m", "the crew's centre of mass forward of CO"),
+        _positive("shift_time", "s", "the time the crew takes to cross from rail to rail in a tack"),
+    ),
 }
 """The sections a boat may leave out (the boat then has none of that part)."""
 
@@ -164,9 +172,10 @@ SECTION_MEANING = {
     "rudder": "the rudder, a balanced foil turning about a vertical stock through its CP",
     "sail": "the mainsail: a triangle on a boom turning about the mast, flat unless cambered",
     "headsail": "a headsail on the forestay, sheeted to the deck, trimmed to follow the main",
+    "crew": "the crew as movable ballast on the weather rail, crossing when the boom crosses",
 }
 SECTION_TYPES = {"boat": BoatParams, "hull": HullShape, "keel": Foil, "rudder": Foil, "sail": Sail,
-                 "headsail": Headsail}
+                 "headsail": Headsail, "crew": Crew}
 """Section -> the dataclass it fills."""
 SOURCES = "sources"  # the optional table of notes
 

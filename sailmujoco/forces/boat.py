@@ -32,6 +32,7 @@ from .boat_parameters import (
     P_BODY_RESTORING,
     P_CE_AFT,
     P_CE_HEIGHT,
+    P_CREW_BLOCK,
     P_CF_SAIL,
     P_CG_X,
     P_CG_Z,
@@ -93,6 +94,7 @@ from .boat_parameters import (
     RESISTANCE_BLOCK_SIZE,
     switch_slot,
 )
+from .crew import CB_ARM, CB_MASS, CB_SPEED, crew_drive, crew_target
 from .damping import hull_damping, pitch_angle_rate
 from .finite_wing import (
     FB_DOWNWASH_GAIN,
@@ -462,6 +464,11 @@ def boat_forces(t, qpos, qvel, idx, P, columns, strips, alpha_grid, log_re_grid,
         qfrc[3 + i] = total[3 + i]
     qfrc[idx[1]] = 0.0  # the rudder CP is on its stock: no hinge moment
     qfrc[idx[3]] = sail_hinge
+    cb = P_CREW_BLOCK
+    if P[cb + CB_MASS] > 0.0:  # the crew's slide is the model's last joint (forces/crew.py)
+        last = qvel.shape[0] - 1
+        qfrc[last] = crew_drive(qpos[qpos.shape[0] - 1], qvel[last], crew_target(lam, P[cb + CB_ARM]),
+                                P[cb + CB_MASS], P[cb + CB_SPEED], -P[P_G] * R[2, 1])
 
     if add_mass and P[P_ON_ADDED] > 0.0:
         k = 0

@@ -29,6 +29,7 @@ from ..options import (
     literal_fields,
 )
 from ..options import choices as literal_choices
+from .crew import CREW_BLOCK_SIZE, loaded_canoe_body, pack_crew
 from .finite_wing import pack_foil_block
 from .headsail import HB_INTERACTION, HEADSAIL_BLOCK_SIZE, pack_headsail
 from .resistance import delft_hull, pack_resistance
@@ -105,7 +106,8 @@ SWITCH_SLOTS = {
 # force"), so a new force needs no edit of this file.
 _NEW_SWITCHES = [f.name for f in fields(ForceSwitches) if f.name not in SWITCH_SLOTS]
 SWITCH_SLOTS.update({name: (P_NEW_SWITCHES + k, True) for k, name in enumerate(_NEW_SWITCHES)})
-P_SIZE = P_NEW_SWITCHES + len(_NEW_SWITCHES)
+P_CREW_BLOCK = P_NEW_SWITCHES + len(_NEW_SWITCHES)  # forces/crew.py (CREW_BLOCK_SIZE floats)
+P_SIZE = P_CREW_BLOCK + CREW_BLOCK_SIZE
 
 
 _CHOICES = literal_fields(ForceSwitches)
@@ -187,11 +189,12 @@ def pack_parameters(p: BoatParams, switches: ForceSwitches | None = None, *, win
         P[P_CURRENT_E], P[P_CURRENT_N] = wind.current_east, wind.current_north
     P[P_WANDER_DT] = wander_dt
     P[P_FLOTATION_X] = hull_geometry.centre_of_flotation_x(h)
-    block = pack_resistance(delft_hull(h), p.rho_water, GRAVITY)
+    block = pack_resistance(delft_hull(loaded_canoe_body(p)), p.rho_water, GRAVITY)  # with its crew aboard
     P[P_RESISTANCE_BLOCK:P_RESISTANCE_BLOCK + block.size] = block
     block = pack_foil_block(p)
     P[P_FOIL_BLOCK:P_FOIL_BLOCK + block.size] = block
     pack_windage(p, P[P_WINDAGE_BLOCK:P_WINDAGE_BLOCK + WINDAGE_BLOCK_SIZE])
     pack_sea_block(h, waves, P[P_SEA_BLOCK:P_SEA_BLOCK + SEA_BLOCK_SIZE])
     pack_headsail(p, P[P_HEADSAIL_BLOCK:P_HEADSAIL_BLOCK + HEADSAIL_BLOCK_SIZE])
+    pack_crew(p, P[P_CREW_BLOCK:P_CREW_BLOCK + CREW_BLOCK_SIZE])
     return P
