@@ -9,6 +9,7 @@ Positions are in the body frame of :mod:`sailmujoco.frames`; the types are in
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 from pathlib import Path
 
 from .. import constants as c
@@ -17,6 +18,7 @@ from . import hull as hull_geometry
 from .hull import HullShape
 from .params import BoatParams, Foil, Sail
 from .principal import RIG_CAMBER, boat_from_dimensions, eleven_metre_dimensions
+from .trim import flattened, reefed
 from .schema import is_boat_file, read_boat
 from .viel_identification import (
     VIEL_P6,
@@ -361,7 +363,14 @@ def _viel_sail(rho_air: float) -> Sail:
                 time_constant=0.5)  # s, T_lambda: Wille's (Viel gives none)
 
 
-def eleven_metre(headsail: bool = True, camber: float = RIG_CAMBER) -> BoatParams:
+# m^2, the main (its roach included) and the genoa as ORC measured them on two 11:Metres
+# (certificates NOR151 and NOR317, 2025), against the class's 22.83 and 15.22
+ORC_SAIL_AREAS = (29.43, 13.96)
+SAIL_AREAS = ("class", "orc")
+
+
+def eleven_metre(headsail: bool = True, camber: float = RIG_CAMBER, crew: bool = True, reef: float = 1.0,
+                 flat: float = 1.0, areas: str = "class", surge_damping: bool = True) -> BoatParams:
     """The 10.3 m, 1600 kg 11:Metre One Design, made from its class's published dimensions.
 
     By the rules of :mod:`sailmujoco.boat.principal`, the Wille yacht its parent
@@ -373,8 +382,30 @@ def eleven_metre(headsail: bool = True, camber: float = RIG_CAMBER) -> BoatParam
         With the class's jib (False: the main alone).
     camber : float
         The sails' camber ratio (0: the papers' flat plates).
+    crew : bool
+        With ORC's 350 kg crew on the weather rail (False: no crew).
+    reef, flat : float
+        The depowering trims (:mod:`sailmujoco.boat.trim`): the main's hoist and the camber's
+        multiplier, 1: full sail.
+    areas : {"class", "orc"}
+        The sail areas: the class's, or ORC's measured :data:`ORC_SAIL_AREAS` (the main's roach
+        counted: the same luff, a longer mean foot).
+    surge_damping : bool
+        With the linear surge damping d11 the boat takes from the Wille yacht (Wille eq. 13,
+        Froude-scaled) on top of the ITTC friction and the residuary resistance; False: d11 = 0,
+        the resistance of a VPP.
     """
-    return boat_from_dimensions(eleven_metre_dimensions(headsail), wille_yacht(), camber=camber)
+    if areas not in SAIL_AREAS:
+        raise ValueError(f"areas must be one of {', '.join(map(repr, SAIL_AREAS))}, got {areas!r}")
+    d = eleven_metre_dimensions(headsail)
+    if not crew:
+        d = replace(d, crew=0.0)
+    if areas == "orc":
+        d = replace(d, main_area=ORC_SAIL_AREAS[0], jib_area=ORC_SAIL_AREAS[1] if headsail else 0.0)
+    boat = boat_from_dimensions(d, wille_yacht(), camber=camber)
+    if not surge_damping:
+        boat = boat.with_(linear_damping=(0.0, *boat.linear_damping[1:]))
+    return flattened(reefed(boat, reef), flat)
 
 
 BOATS = {"wille_yacht": wille_yacht, "saoud_robot": saoud_robot, "viel_boat": viel_boat,
