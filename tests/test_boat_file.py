@@ -40,7 +40,8 @@ def _qpos(boat, steps=200):
 
 
 def test_the_schema_covers_every_field_of_the_parameter_types():
-    nested = {"hull", "keel", "rudder", "sail", "headsail", "crew", "sources", "sensors", "actuators"}  # own sections
+    # the sections of their own
+    nested = {"hull", "keel", "rudder", "sail", "headsail", "crew", "sources", "sensors", "actuators"}
     for section, kind in SECTION_TYPES.items():
         names = {f.name for f in dataclasses.fields(kind)} - (nested if section == "boat" else set())
         assert names == {k.name for k in {**KEYS, **OPTIONAL_KEYS}[section]}, section

@@ -88,7 +88,8 @@ def test_a_reefed_main_is_the_top_of_the_full_triangle():
     s = boat.sail
     r = reefed(boat, 0.8).sail
     assert r.area == pytest.approx(0.64 * s.area, rel=1e-12)  # a similar triangle: area x r^2
-    assert r.luff == pytest.approx(0.8 * s.luff, rel=1e-12) and r.foot == pytest.approx(0.8 * s.foot, rel=1e-12)
+    assert r.luff == pytest.approx(0.8 * s.luff, rel=1e-12)
+    assert r.foot == pytest.approx(0.8 * s.foot, rel=1e-12)
     assert r.boom_height == pytest.approx(s.boom_height, rel=1e-12)  # the boom stays
     assert r.ce_height == pytest.approx(s.boom_height + 0.8 * s.luff / 3.0, rel=1e-12)
     assert reefed(boat, 1.0) is boat and flattened(boat, 1.0) is boat
@@ -105,3 +106,14 @@ def test_flattening_scales_the_camber():
 def test_a_trim_out_of_range_is_one_line(name, call):
     with pytest.raises(ValueError, match=rf"^{name} must be a number in \["):
         call(get_boat("eleven_metre"))
+
+
+def test_boat_check_states_the_crews_moment():
+    from sailmujoco.design.check import crew_summary  # the line `boat check` prints
+
+    boat = get_boat("eleven_metre")
+    line = crew_summary(boat)
+    moment = 350.0 * GRAVITY * 0.95 / 1e3  # m g arm upright, kN m: 3.26
+    assert line.startswith("350 kg on the weather rail, 0.95 m off the centreline")
+    assert line.endswith(f"{moment:.2f} kN m upright")
+    assert crew_summary(get_boat("eleven_metre", crew=False)) == ""

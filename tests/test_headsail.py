@@ -138,4 +138,4 @@ def test_the_paper_world_refuses_a_boat_with_a_headsail_in_one_line():
         suite.load("eleven_metre", "heading_hold", "paper")
     assert ("eleven_metre", "heading_hold", "paper") not in suite.SUITE
     assert ("eleven_metre", "heading_hold", "mujoco") in suite.SUITE
-    suite.load(get_boat("eleven_metre", headsail=False, crew=False), "heading_hold", "paper")  # the main alone
+    suite.load(get_boat("eleven_metre", headsail=False, crew=False), "heading_hold", "paper")  # main alone

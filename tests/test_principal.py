@@ -105,3 +105,15 @@ def test_dimensions_that_make_no_boat_are_refused():
 
 def test_the_main_alone_is_a_boat_option():
     assert get_boat("eleven_metre", headsail=False).headsail is None
+
+
+def test_the_eleven_metres_switches_change_only_what_they_name():
+    built = get_boat("eleven_metre")
+    orc = get_boat("eleven_metre", areas="orc")  # ORC's certificates: main 29.43 (roach in), genoa 13.96
+    assert (orc.sail.area, orc.headsail.area) == (29.43, 13.96)
+    assert orc.sail.luff == pytest.approx(built.sail.luff, rel=1e-12)  # the same hoist, a longer mean foot
+    loose = get_boat("eleven_metre", surge_damping=False)
+    assert loose.linear_damping == (0.0, *built.linear_damping[1:])
+    assert get_boat("eleven_metre", crew=False).crew is None and built.crew.mass == 350.0
+    with pytest.raises(ValueError, match="^areas must be one of 'class', 'orc', got 'measured'$"):
+        get_boat("eleven_metre", areas="measured")

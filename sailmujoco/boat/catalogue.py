@@ -18,8 +18,8 @@ from . import hull as hull_geometry
 from .hull import HullShape
 from .params import BoatParams, Foil, Sail
 from .principal import RIG_CAMBER, boat_from_dimensions, eleven_metre_dimensions
-from .trim import flattened, reefed
 from .schema import is_boat_file, read_boat
+from .trim import flattened, reefed
 from .viel_identification import (
     VIEL_P6,
     VIEL_P7,

@@ -95,6 +95,8 @@ class BoatCheck:
     sensors, actuators : str
         The boat's instruments and actuators as fitted, one line each
         (:func:`sailmujoco.boat.fitted_file.fitted_summary`).
+    crew : str
+        The crew in a line (:func:`crew_summary`; empty without one).
     figure : Path or None
         The GZ figure written.
     """
@@ -127,6 +129,7 @@ class BoatCheck:
     steady_heel: tuple
     sensors: str = ""
     actuators: str = ""
+    crew: str = ""
     figure: Path | None = None
 
     def text(self) -> str:
@@ -156,6 +159,7 @@ class BoatCheck:
             "CG, no sway added mass (T = 2 pi sqrt((I_G + A44) / C44))",
             f"              heave {self.heave_period:.2f} s, pitch {self.pitch_period:.2f} s "
             "(T = 2 pi sqrt((I + A) / C))",
+            *([_wrapped("crew", self.crew)] if self.crew else []),
             _wrapped("sensors", self.sensors),
             _wrapped("actuators", self.actuators),
             f"steady speed  in {self.wind:g} m/s true wind ({SPEED_CONTROLLER} sail law + heading "
@@ -165,6 +169,22 @@ class BoatCheck:
             lines.append(f"  TWA {deg(twa):5.0f} deg: " + ("did not finish" if not np.isfinite(speed)
                          else f"{speed:.2f} m/s ({speed / KNOT:.2f} kn), heel {deg(abs(heel)):.1f} deg"))
         return "\n".join(lines)
+
+
+def crew_summary(p: BoatParams) -> str:
+    """The crew in a line (empty without one): where it sits and the moment it rights the boat by.
+
+    Parameters
+    ----------
+    p : BoatParams
+        The boat.
+    """
+    if not p.carries_crew:
+        return ""
+    c = p.crew
+    return (f"{c.mass:g} kg on the weather rail, {c.arm:.2f} m off the centreline and {c.height:.2f} m "
+            f"above the waterline, crossing in {c.shift_time:g} s; beyond the GZ above (the boat's own) it "
+            f"rights the boat by m g arm cos(heel), {c.mass * GRAVITY * c.arm / 1e3:.2f} kN m upright")
 
 
 def _wrapped(label: str, text: str) -> str:
@@ -228,6 +248,7 @@ def check_boat(path_or_params, wind: float = 6.0, out=None, *, twa_deg=DEFAULT_T
         **natural_periods(p), wind=float(wind), duration=float(duration),
         twa=tuple(math.radians(a) for a in twa_deg), speed=speeds[0], steady_heel=speeds[1],
         sensors=fitted_summary(p.sensors, "sensors"), actuators=fitted_summary(p.actuators, "actuators"),
+        crew=crew_summary(p),
         figure=None if folder is None else folder / "gz.png")
     if folder is not None:
         plot_gz(result, folder / "gz.png")

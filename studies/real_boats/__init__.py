@@ -9,7 +9,7 @@ from sailmujoco.study import Study
 
 from .analysis import analyse, headline
 from .report import report, write
-from .scenario import NAME, SEEDS, TITLE, VIDEO, runs
+from .scenario import NAME, SEEDS, TITLE, VIDEO, more_runs, runs
 
 STUDY = Study(name=NAME, title=TITLE, runs=runs, analyse=analyse, write=write, report=report,
-              headline=headline, video=VIDEO, seeds=SEEDS)
+              headline=headline, more_runs=more_runs, video=VIDEO, seeds=SEEDS)
