@@ -66,7 +66,7 @@ def specific_force(acceleration_world, rotation) -> np.ndarray:
     return np.asarray(rotation, dtype=float).reshape(3, 3).T @ a
 
 
-def imu(orientation_wxyz, angular_velocity, linear_acceleration) -> dict:
+def imu(orientation_wxyz, angular_velocity, linear_acceleration=None) -> dict:
     """``sensor_msgs/Imu``'s fields (REP-145), the covariances all zero: "covariance unknown" in
     sensor_msgs/Imu's own convention (a first element of -1 would say the quantity is missing).
 
@@ -76,14 +76,17 @@ def imu(orientation_wxyz, angular_velocity, linear_acceleration) -> dict:
         Body (FLU) to world (ENU) unit quaternion, MuJoCo's order (w, x, y, z).
     angular_velocity : array_like, shape (3,)
         In the body frame, rad/s.
-    linear_acceleration : array_like, shape (3,)
-        The specific force in the body frame (:func:`specific_force`), m/s^2.
+    linear_acceleration : array_like, shape (3,), optional
+        The specific force in the body frame (:func:`specific_force`), m/s^2; None: not
+        measured (zeros, the first element of its covariance -1).
     """
     zero = [0.0] * 9
+    missing = [-1.0] + [0.0] * 8
     return {"orientation": _quaternion(orientation_wxyz), "orientation_covariance": list(zero),
             "angular_velocity": _vector(angular_velocity), "angular_velocity_covariance": list(zero),
-            "linear_acceleration": _vector(linear_acceleration),
-            "linear_acceleration_covariance": list(zero)}
+            "linear_acceleration": _vector((0.0, 0.0, 0.0) if linear_acceleration is None
+                                           else linear_acceleration),
+            "linear_acceleration_covariance": list(zero) if linear_acceleration is not None else missing}
 
 
 def nav_sat_fix(enu, origin: Origin, sigma_horizontal: float | None = None,

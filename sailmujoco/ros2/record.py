@@ -1,0 +1,209 @@
+"""Every run as an MCAP log: what the boat's instruments measure and its truth, as ROS 2 messages.
+
+:class:`McapLog` is a ``record`` of :func:`sailmujoco.suite.rollout`: at every control step it
+writes the topics of :data:`TOPICS` in ROS 2's CDR encoding, each with its message definition
+embedded (so ``ros2 bag play``, Foxglove, PlotJuggler and Rerun open the file, and
+``mcap-ros2-support`` and ``rosbags`` read it back), and hands the rollout its row: the values it
+wrote. The messages' fields come from :mod:`sailmujoco.ros2.messages`; the writer is rosbags'
+(its typestore for the ROS 2 distribution, its MCAP storage), installed by
+``pip install 'sailmujoco[ros2]'``.
+
+What each topic carries (stamps: the simulation's time):
+
+* ``/clock`` (rosgraph_msgs/Clock): the simulation's time.
+* ``/gps/fix`` (sensor_msgs/NavSatFix): the GNSS position as fitted, WGS84 about ``origin``.
+* ``/gps/vel`` (geometry_msgs/TwistStamped, frame ``map``, ENU): its velocity over ground.
+* ``/imu/data`` (sensor_msgs/Imu, frame ``base_link``): the orientation from the compass and the
+  heel sensor as fitted (the pitch is the true one: the instruments have no pitch sensor), the
+  gyro's roll and yaw rates (the pitch rate the true one); no linear acceleration (its
+  covariance's first element -1, sensor_msgs/Imu's "not given").
+* ``/wind/apparent`` (geometry_msgs/Vector3Stamped, frame ``base_link``): the masthead unit's
+  reading, the air's velocity past the boat.
+* ``/sim/odom`` (nav_msgs/Odometry, frame ``map``, child ``base_link``): the true pose (ENU) and
+  the true velocity in the body frame (REP-105's convention for a twist).
+* ``/sim/wind/true`` (geometry_msgs/Vector3Stamped, frame ``map``): the true wind at the sail
+  (east, north), where it blows to.
+"""
+
+from __future__ import annotations
+
+import shutil
+import tempfile
+from pathlib import Path
+
+import numpy as np
+
+from ..frames import quat_from_euler, yaw_from_heading
+from . import messages
+from .geodesy import Origin
+
+TOPICS = {
+    "/clock": "rosgraph_msgs/msg/Clock",
+    "/gps/fix": "sensor_msgs/msg/NavSatFix",
+    "/gps/vel": "geometry_msgs/msg/TwistStamped",
+    "/imu/data": "sensor_msgs/msg/Imu",
+    "/wind/apparent": "geometry_msgs/msg/Vector3Stamped",
+    "/sim/odom": "nav_msgs/msg/Odometry",
+    "/sim/wind/true": "geometry_msgs/msg/Vector3Stamped",
+}
+"""Topic -> its ROS 2 message type."""
+DEFAULT_ORIGIN = Origin(latitude=59.9, longitude=10.7)  # the Oslo fjord, where the 11:Metre class sails
+DISTROS = ("humble", "jazzy")
+INSTALL = "the MCAP log needs rosbags: pip install 'sailmujoco[ros2]'"
+
+
+def _typestore(distro: str):
+    """rosbags' typestore of a ROS 2 distribution; one line where rosbags is missing."""
+    if distro not in DISTROS:
+        raise ValueError(f"distro must be one of {', '.join(map(repr, DISTROS))}, got {distro!r}")
+    try:
+        from rosbags.typesys import Stores, get_typestore
+    except ImportError:
+        raise RuntimeError(INSTALL) from None
+    return get_typestore(Stores.ROS2_HUMBLE if distro == "humble" else Stores.ROS2_JAZZY)
+
+
+class McapLog:
+    """A rollout's ``record`` that writes every control step to an MCAP file.
+
+    Use it as a context manager (the file is complete when it closes)::
+
+        with McapLog(env, "run.mcap") as log:
+            table = suite.rollout(env, controller, record=log)
+
+    Parameters
+    ----------
+    env : SailEnvironment
+        The environment the rollout runs (its physics gives the true position).
+    path : str or os.PathLike
+        The MCAP file written (replaced if it exists).
+    origin : Origin
+        Where the world's origin lies on the WGS84 ellipsoid (:data:`DEFAULT_ORIGIN`).
+    distro : {"humble", "jazzy"}
+        The ROS 2 distribution whose message definitions are embedded.
+    """
+
+    def __init__(self, env, path, origin: Origin = DEFAULT_ORIGIN, distro: str = "jazzy"):
+        self.env = env
+        self.path = Path(path)
+        if self.path.suffix != ".mcap":
+            raise ValueError(f"the MCAP log's path must end in .mcap, got {str(path)!r}")
+        self.origin = origin
+        self._store = _typestore(distro)
+        from rosbags.rosbag2 import StoragePlugin, Writer
+
+        self._folder = Path(tempfile.mkdtemp(prefix="sailmujoco-mcap-"))
+        self._writer = Writer(self._folder / self.path.stem, version=9, storage_plugin=StoragePlugin.MCAP)
+        self._writer.open()
+        self._connections = {topic: self._writer.add_connection(topic, kind, typestore=self._store)
+                             for topic, kind in TOPICS.items()}
+        self.messages = 0
+
+    def __enter__(self) -> McapLog:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.close()
+
+    def close(self) -> None:
+        """Finish the file and move it to ``path``."""
+        if self._writer is None:
+            return
+        self._writer.close()
+        self._writer = None
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        shutil.move(str(next(self._folder.rglob("*.mcap"))), self.path)
+        shutil.rmtree(self._folder, ignore_errors=True)
+
+    def __call__(self, step, timestep, action) -> dict:
+        """Write this step's messages; the row of the values written.
+
+        Parameters
+        ----------
+        step : int
+            The rollout's step (0: the reset).
+        timestep : dm_env.TimeStep
+            Its TimeStep (the observation with its ``true_state``).
+        action : numpy.ndarray or None
+            The action that led to it (None at the reset).
+        """
+        row = step_row(timestep.observation, self.env.physics.position())
+        stamp = int(round(row["t"] * 1e9))
+        for topic, fields in _topics(row, self.origin).items():
+            raw = self._store.serialize_cdr(self._message(TOPICS[topic], fields, stamp), TOPICS[topic])
+            self._writer.write(self._connections[topic], stamp, raw)
+            self.messages += 1
+        return row
+
+    def _message(self, kind: str, fields: dict, stamp: int):
+        """rosbags' message of type ``kind`` filled from ``fields`` (a header stamped ``stamp``)."""
+        types = self._store.types
+        cls = types[kind]
+        values = {}
+        for name, field in cls.__dataclass_fields__.items():
+            if name.startswith("__") or name.isupper():
+                continue  # rosbags' class attributes and the message's constants
+            if name == "header":
+                time = types["builtin_interfaces/msg/Time"](sec=stamp // 10**9, nanosec=stamp % 10**9)
+                values[name] = types["std_msgs/msg/Header"](stamp=time, frame_id=fields["frame_id"])
+                continue
+            value = fields[name]
+            if isinstance(value, dict):
+                values[name] = self._message(field.type.replace("__msg__", "/msg/"), value, stamp)
+            elif isinstance(value, list):
+                values[name] = np.array(value, dtype=np.float64)
+            else:
+                values[name] = value
+        return cls(**values)
+
+
+def step_row(observation: dict, position) -> dict:
+    """The values a step's messages carry: the instruments' and the truth's, SI, ENU.
+
+    Parameters
+    ----------
+    observation : dict
+        A TimeStep's observation (with its ``true_state``).
+    position : array_like, shape (3,)
+        The true position of CO in the world (east, north, up), m.
+    """
+    ts = observation["true_state"]
+    return {"t": float(ts["time"]), "true_x": float(position[0]), "true_y": float(position[1]),
+            "true_z": float(position[2]),
+            "x": float(observation["position"][0]), "y": float(observation["position"][1]),
+            "vel_e": float(observation["velocity"][0]), "vel_n": float(observation["velocity"][1]),
+            "heading": float(observation["heading"]), "heel": float(observation["heel"]),
+            "roll_rate": float(observation["roll_rate"]), "yaw_rate": float(observation["yaw_rate"]),
+            "awa": float(observation["apparent_wind_angle"]),
+            "aws": float(observation["apparent_wind_speed"]),
+            "true_yaw": float(ts["yaw"]), "true_heel": float(ts["heel"]), "true_pitch": float(ts["pitch"]),
+            "true_pitch_rate": float(ts["pitch_rate"]), "true_roll_rate": float(ts["roll_rate"]),
+            "true_yaw_rate": float(ts["yaw_rate"]), "u": float(ts["u"]), "v": float(ts["v"]),
+            "w": float(ts["w"]), "true_wind_e": float(ts["true_wind"][0]),
+            "true_wind_n": float(ts["true_wind"][1])}
+
+
+def _topics(row: dict, origin: Origin) -> dict:
+    """Each topic's fields for one row (the headers' frame in ``frame_id``)."""
+    measured = quat_from_euler(row["heel"], row["true_pitch"], yaw_from_heading(row["heading"]))
+    true = quat_from_euler(row["true_heel"], row["true_pitch"], row["true_yaw"])
+    imu = messages.imu(measured, (row["roll_rate"], row["true_pitch_rate"], row["yaw_rate"]), None)
+    fix = messages.nav_sat_fix((row["x"], row["y"], 0.0), origin)
+    nanoseconds = int(round(row["t"] * 1e9))
+    clock = {"clock": {"sec": nanoseconds // 10**9, "nanosec": nanoseconds % 10**9}}
+    odom = {"frame_id": "map", "child_frame_id": "base_link",
+            "pose": {"pose": {"position": {"x": row["true_x"], "y": row["true_y"], "z": row["true_z"]},
+                              "orientation": {"x": true[1], "y": true[2], "z": true[3], "w": true[0]}},
+                     "covariance": [0.0] * 36},
+            "twist": {"twist": {"linear": {"x": row["u"], "y": row["v"], "z": row["w"]},
+                                "angular": {"x": row["true_roll_rate"], "y": row["true_pitch_rate"],
+                                            "z": row["true_yaw_rate"]}},
+                      "covariance": [0.0] * 36}}
+    return {"/clock": clock, "/gps/fix": {"frame_id": "gps", **fix},
+            "/gps/vel": {"frame_id": "map", "twist": messages.twist_enu((row["vel_e"], row["vel_n"], 0.0))},
+            "/imu/data": {"frame_id": "base_link", **imu},
+            "/wind/apparent": {"frame_id": "base_link",
+                               "vector": messages.apparent_wind(row["awa"], row["aws"])},
+            "/sim/odom": odom,
+            "/sim/wind/true": {"frame_id": "map",
+                               "vector": {"x": row["true_wind_e"], "y": row["true_wind_n"], "z": 0.0}}}
