@@ -147,6 +147,20 @@ def test_cli_writes_video_and_still(tmp_path, capsys):
     assert not list(tmp_path.glob(".*partial*"))
 
 
+def test_cli_records_the_run_as_an_mcap_log_beside_the_video(tmp_path, capsys):
+    from rosbags.rosbag2 import Reader
+
+    out, log = tmp_path / "cli.mp4", tmp_path / "run.mcap"
+    code = video_main(["saoud_robot", "heading_hold", "--controller", "saoud", "--seconds", "0.4",
+                       "--out", str(out), "--fps", "10", "--width", "64", "--height", "48",
+                       "--camera", "side", "--record", str(log), "--no-progress", "--set", "wind_speed=5.0"])
+    assert code == 0 and f"wrote {log}" in capsys.readouterr().out
+    with Reader(log) as reader:
+        clocks = [stamp for connection, stamp, _ in reader.messages() if connection.topic == "/clock"]
+    # the reset and the 4 control steps of 0.4 s at 10 Hz, stamped with the simulation's time
+    assert clocks == [0, 100_000_000, 200_000_000, 300_000_000, 400_000_000]
+
+
 def test_cli_makes_the_missing_folders_of_out(tmp_path, capsys):
     out = tmp_path / "not" / "yet" / "run.mp4"
     code = video_main(["saoud_robot", "heading_hold", "--controller", "pid", "--seconds", "0.2",

@@ -8,6 +8,7 @@ import textwrap
 
 from ..errors import ControllerFailed
 from ..options import World, choices
+from ..ros2.record import RosbagsMissing
 from ..video.gl import FIX, RenderingUnavailable
 from ..video.recording import record
 from ..video.scene import CAMERAS
@@ -77,6 +78,9 @@ def add_parser(subparsers) -> argparse.ArgumentParser:
                         help="task or environment option, e.g. case=3 or hydrostatics=paper "
                              "(repeatable)")
     add_waves_argument(parser)
+    parser.add_argument("--record", metavar="FILE.mcap",
+                        help="also write the run as an MCAP log of ROS 2 messages (docs/ros2.md; needs "
+                             "pip install 'sailmujoco[ros2]')")
     parser.add_argument("--no-progress", action="store_true", help="no progress bar")
     parser.set_defaults(func=run_cli)
     return parser
@@ -93,7 +97,8 @@ def run_cli(args) -> int:
     Returns
     -------
     int
-        0; 1 where no OpenGL platform loads; 2 where the controller raised or gave a bad action
+        0; 1 where no OpenGL platform loads (or, with --record, rosbags is missing); 2 where the
+        controller raised or gave a bad action
         (the video, cut at that state, is kept). Each failure is one line on stderr.
     """
     check_settings(args.set, args.task)
@@ -102,6 +107,10 @@ def run_cli(args) -> int:
     file_argument("--out", args.out, "run.mp4")
     if args.still:
         file_argument("--still", args.still, "last.png")
+    if args.record:
+        file_argument("--record", args.record, "run.mcap")
+        if not args.record.endswith(".mcap"):
+            raise ValueError(f"--record {args.record!r}: the log is an MCAP file, its name ending in .mcap")
     try:
         rec = record(args.boat, args.task, args.controller, args.out, seconds=args.seconds,
                      controller_options=options,
@@ -109,8 +118,8 @@ def run_cli(args) -> int:
                      camera=args.camera, overlay=not args.no_overlay, forces=not args.no_forces,
                      seed=args.seed, still=args.still, progress=not args.no_progress,
                      follow_distance=args.distance, follow_bearing_deg=args.bearing,
-                     waves=waves, **dict(args.set))
-    except RenderingUnavailable as err:
+                     waves=waves, log=args.record, **dict(args.set))
+    except (RenderingUnavailable, RosbagsMissing) as err:
         print(f"sailmujoco video: error: {err}", file=sys.stderr)
         return 1
     except ControllerFailed as err:
@@ -125,6 +134,8 @@ def run_cli(args) -> int:
           + (f"; stopped: {stopped}" if stopped else ""))
     if args.still:
         print(f"wrote {args.still}")
+    if args.record:
+        print(f"wrote {args.record}")
     return 0
 
 

@@ -52,6 +52,10 @@ DISTROS = ("humble", "jazzy")
 INSTALL = "the MCAP log needs rosbags: pip install 'sailmujoco[ros2]'"
 
 
+class RosbagsMissing(RuntimeError):
+    """rosbags is not installed; the message says what to install (:data:`INSTALL`)."""
+
+
 def _typestore(distro: str):
     """rosbags' typestore of a ROS 2 distribution; one line where rosbags is missing."""
     if distro not in DISTROS:
@@ -59,7 +63,7 @@ def _typestore(distro: str):
     try:
         from rosbags.typesys import Stores, get_typestore
     except ImportError:
-        raise RuntimeError(INSTALL) from None
+        raise RosbagsMissing(INSTALL) from None
     return get_typestore(Stores.ROS2_HUMBLE if distro == "humble" else Stores.ROS2_JAZZY)
 
 

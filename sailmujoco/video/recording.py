@@ -23,6 +23,7 @@ from pathlib import Path
 
 from ..boat.catalogue import boat_label
 from ..errors import ControllerFailed, act
+from ..ros2.record import McapLog
 from .camera import ELEVATION_DEG
 from .child import ChildRenderer
 from .encoding import FrameWriter, encoder, partial_file
@@ -237,13 +238,17 @@ def _open_scene(renderer: ChildRenderer, boat: str, task: str, world: str, name:
     return mujoco_world
 
 
-def _sail(env, policy, name: str, frames: FrameWriter,
-          mujoco_world: bool) -> tuple[float, ControllerFailed | None]:
-    """Run the episode, drawing each frame when due; returns the wall time of the first frame,
-    and the controller's failure that ended it early (or None)."""
+def _sail(env, policy, name: str, frames: FrameWriter, mujoco_world: bool,
+          log=None) -> tuple[float, ControllerFailed | None]:
+    """Run the episode, drawing each frame when due (and each control step into ``log``, a
+    rollout's ``record``, where given); returns the wall time of the first frame, and the
+    controller's failure that ended it early (or None)."""
     physics = env.physics
     shape = env.action_spec().shape
     timestep = env.reset()
+    step = 0
+    if log is not None:
+        log(step, timestep, None)
     start_loop = time.perf_counter()
 
     def now() -> Snapshot:  # the true boat now; the instruments' readings held since the control step
@@ -266,6 +271,9 @@ def _sail(env, policy, name: str, frames: FrameWriter,
             except ControllerFailed as failure:
                 return start_loop, failure
             timestep = env.step(action)
+            step += 1
+            if log is not None:
+                log(step, timestep, action)
             if not mujoco_world:  # sample and hold at the control steps
                 snap = at_control_step()
                 while (t := frames.due()) is not None and snap.time >= t - 1e-9:
@@ -299,7 +307,7 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
            progress: bool = False, follow_distance: float | None = None,
            follow_bearing_deg: float | None = None, follow_elevation_deg: float = ELEVATION_DEG,
            follow_lag: float = 3.0, top_center=None, top_extent: float | None = None,
-           waves=None, **options) -> Recording:
+           waves=None, log=None, **options) -> Recording:
     """Run ``task`` on ``boat`` under ``controller`` and write the video to ``out_path`` (mp4).
 
     Parameters
@@ -336,6 +344,8 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
     waves : WaveConfig or mapping, optional
         The sea drawn (:mod:`sailmujoco.video.sea`; a mapping as :func:`~sailmujoco.options.wave_config`
         reads it), given to :func:`sailmujoco.suite.load` too. None: the simulation's own, or none.
+    log : path, optional
+        Also the run as an MCAP log of ROS 2 messages (:class:`sailmujoco.ros2.record.McapLog`).
     **options
         Passed to :func:`sailmujoco.suite.load`: environment options (``hydrostatics``,
         ``dofs``, ``control_timestep``, ``boat_options`` ...) and task options (``case=3``...).
@@ -366,20 +376,21 @@ def record(boat: str, task: str, controller, out_path, seconds: float | None = N
             camera=camera, forces=forces, overlay=overlay, follow_distance=follow_distance,
             follow_bearing_deg=follow_bearing_deg, follow_elevation_deg=follow_elevation_deg,
             follow_lag=follow_lag, top_center=top_center, top_extent=top_extent)
-        return _film(env, policy, name, renderer, Path(out_path), mujoco_world=mujoco_world, fps=fps,
-                     n_frames=max(1, round(duration * fps)), quality=quality, progress=progress,
-                     still=still, start_wall=start_wall)
+        with (McapLog(env, log) if log is not None else nullcontext()) as logger:
+            return _film(env, policy, name, renderer, Path(out_path), mujoco_world=mujoco_world, fps=fps,
+                         n_frames=max(1, round(duration * fps)), quality=quality, progress=progress,
+                         still=still, start_wall=start_wall, log=logger)
 
 
 def _film(env, policy, name: str, renderer: ChildRenderer, out_path: Path, *, mujoco_world: bool, fps: float,
-          n_frames: int, quality: float, progress: bool, still, start_wall: float) -> Recording:
+          n_frames: int, quality: float, progress: bool, still, start_wall: float, log=None) -> Recording:
     """Run the episode into ``out_path`` (written under a hidden name, renamed when complete);
     its :class:`Recording`. A controller's failure ends the video there; the video is kept and
     the failure raised, its ``kept`` the Recording."""
     with partial_file(out_path) as partial:
         frames = FrameWriter(renderer, partial, fps, n_frames, quality, progress)
         try:
-            start_loop, failure = _sail(env, policy, name, frames, mujoco_world)
+            start_loop, failure = _sail(env, policy, name, frames, mujoco_world, log)
             metrics = _finish(env, frames, still, failure)
         finally:
             frames.close()
