@@ -25,6 +25,16 @@ def _check_positive(obj, names):
                 f"{type(obj).__name__}.{name} must be a positive finite number, got {value!r}")
 
 
+def _check_finite(obj, names, low: float | None = None):
+    """Each of ``names`` a finite number (and ``>= low`` where ``low`` is given)."""
+    for name in names:
+        value = getattr(obj, name)
+        below = low is not None and isinstance(value, (int, float)) and value < low
+        if not isinstance(value, (int, float)) or not math.isfinite(value) or below:
+            bound = "" if low is None else f" >= {low:g}"
+            raise ValueError(f"{type(obj).__name__}.{name} must be a finite number{bound}, got {value!r}")
+
+
 @dataclass(frozen=True)
 class Foil:
     """A keel or rudder: a symmetric NACA section of finite span.
@@ -187,10 +197,7 @@ class Headsail:
     max_angle: float
 
     def __post_init__(self):
-        for name in ("area", "head_aft", "min_angle"):
-            value = getattr(self, name)
-            if not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0.0:
-                raise ValueError(f"Headsail.{name} must be a finite number >= 0, got {value!r}")
+        _check_finite(self, ("area", "head_aft", "min_angle"), low=0.0)
         _check_positive(self, ("luff_height", "max_angle"))
         if not self.min_angle <= self.max_angle <= math.pi:
             raise ValueError(f"Headsail angles need 0 <= min_angle <= max_angle <= pi, got "
@@ -254,14 +261,9 @@ class Crew:
     shift_time: float
 
     def __post_init__(self):
-        for name in ("mass", "arm"):
-            value = getattr(self, name)
-            if not isinstance(value, (int, float)) or not math.isfinite(value) or value < 0.0:
-                raise ValueError(f"Crew.{name} must be a finite number >= 0, got {value!r}")
+        _check_finite(self, ("mass", "arm"), low=0.0)
         _check_positive(self, ("shift_time",))
-        for name in ("height", "x"):
-            if not isinstance(getattr(self, name), (int, float)) or not math.isfinite(getattr(self, name)):
-                raise ValueError(f"Crew.{name} must be a finite number, got {getattr(self, name)!r}")
+        _check_finite(self, ("height", "x"))
 
 
 @dataclass(frozen=True)
