@@ -8,7 +8,7 @@ import textwrap
 
 from ..errors import ControllerFailed
 from ..options import World, choices
-from ..ros2.record import RosbagsMissing
+from ..ros2.record import RosbagsMissing, check_log_path
 from ..video.gl import FIX, RenderingUnavailable
 from ..video.recording import record
 from ..video.scene import CAMERAS
@@ -109,8 +109,7 @@ def run_cli(args) -> int:
         file_argument("--still", args.still, "last.png")
     if args.record:
         file_argument("--record", args.record, "run.mcap")
-        if not args.record.endswith(".mcap"):
-            raise ValueError(f"--record {args.record!r}: the log is an MCAP file, its name ending in .mcap")
+        check_log_path(args.record, "--record")
     try:
         rec = record(args.boat, args.task, args.controller, args.out, seconds=args.seconds,
                      controller_options=options,

@@ -13,6 +13,9 @@ the way out. Units SI, angles in radians.
   ellipsoid (m) of the antenna's point of the world, about a stated :class:`~sailmujoco.ros2.
   geodesy.Origin`, with its covariance in ENU (m^2) when the receiver's error is known.
 * ``geometry_msgs/TwistStamped`` on ``/gps/vel``: the velocity over ground in ENU.
+* ``nav_msgs/Odometry`` (REP-105): the pose in the world and the twist in the body frame.
+* ``rosgraph_msgs/Clock`` and every header's stamp: a time in integer nanoseconds as
+  ``builtin_interfaces/Time``'s seconds and nanoseconds.
 * ``geometry_msgs/Vector3Stamped`` on ``/wind/apparent``: the masthead unit's apparent wind in
   the body frame, as the velocity of the air past the boat (where it blows to): the
   convention of :func:`sailmujoco.frames.apparent_wind_angle`, so AWA = atan2(y, -x).
@@ -45,6 +48,47 @@ def _vector(v) -> dict:
 def _quaternion(q_wxyz) -> dict:
     w, x, y, z = (float(c) for c in q_wxyz)
     return {"x": x, "y": y, "z": z, "w": w}
+
+
+def time(nanoseconds: int) -> dict:
+    """``builtin_interfaces/Time``'s fields (a Clock's ``clock``, a header's ``stamp``).
+
+    Parameters
+    ----------
+    nanoseconds : int
+        The time, ns (>= 0).
+    """
+    return {"sec": nanoseconds // 10**9, "nanosec": nanoseconds % 10**9}
+
+
+def odometry(position, orientation_wxyz, linear_velocity, angular_velocity) -> dict:
+    """``nav_msgs/Odometry``'s ``pose`` and ``twist`` (REP-105: the pose in the parent frame, the
+    twist in the child, the body), covariances zero: unknown.
+
+    Parameters
+    ----------
+    position : array_like, shape (3,)
+        In the world (ENU), m.
+    orientation_wxyz : array_like, shape (4,)
+        Body (FLU) to world (ENU) unit quaternion, MuJoCo's order (w, x, y, z).
+    linear_velocity, angular_velocity : array_like, shape (3,)
+        In the body frame, m/s and rad/s.
+    """
+    return {"pose": {"pose": {"position": _vector(position), "orientation": _quaternion(orientation_wxyz)},
+                     "covariance": [0.0] * 36},
+            "twist": {"twist": {"linear": _vector(linear_velocity), "angular": _vector(angular_velocity)},
+                      "covariance": [0.0] * 36}}
+
+
+def vector3(v) -> dict:
+    """``geometry_msgs/Vector3``'s fields.
+
+    Parameters
+    ----------
+    v : array_like, shape (3,)
+        The vector.
+    """
+    return _vector(v)
 
 
 def specific_force(acceleration_world, rotation) -> np.ndarray:

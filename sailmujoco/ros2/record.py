@@ -52,6 +52,21 @@ DISTROS = ("humble", "jazzy")
 INSTALL = "the MCAP log needs rosbags: pip install 'sailmujoco[ros2]'"
 
 
+def check_log_path(path, what: str = "the MCAP log's path") -> Path:
+    """``path`` as a Path, refused in one line unless its name ends in ``.mcap``.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The log's file.
+    what : str
+        What the message calls it (a CLI option's name, for one).
+    """
+    if Path(path).suffix != ".mcap":
+        raise ValueError(f"{what} must end in .mcap, got {str(path)!r}")
+    return Path(path)
+
+
 class RosbagsMissing(RuntimeError):
     """rosbags is not installed; the message says what to install (:data:`INSTALL`)."""
 
@@ -89,9 +104,7 @@ class McapLog:
 
     def __init__(self, env, path, origin: Origin = DEFAULT_ORIGIN, distro: str = "jazzy"):
         self.env = env
-        self.path = Path(path)
-        if self.path.suffix != ".mcap":
-            raise ValueError(f"the MCAP log's path must end in .mcap, got {str(path)!r}")
+        self.path = check_log_path(path)
         self.origin = origin
         self._store = _typestore(distro)
         from rosbags.rosbag2 import StoragePlugin, Writer
@@ -133,7 +146,7 @@ class McapLog:
         """
         row = step_row(timestep.observation, self.env.physics.position())
         stamp = int(round(row["t"] * 1e9))
-        for topic, fields in _topics(row, self.origin).items():
+        for topic, fields in _topics(row, self.origin, stamp).items():
             raw = self._store.serialize_cdr(self._message(TOPICS[topic], fields, stamp), TOPICS[topic])
             self._writer.write(self._connections[topic], stamp, raw)
             self.messages += 1
@@ -148,7 +161,7 @@ class McapLog:
             if name.startswith("__") or name.isupper():
                 continue  # rosbags' class attributes and the message's constants
             if name == "header":
-                time = types["builtin_interfaces/msg/Time"](sec=stamp // 10**9, nanosec=stamp % 10**9)
+                time = types["builtin_interfaces/msg/Time"](**messages.time(stamp))
                 values[name] = types["std_msgs/msg/Header"](stamp=time, frame_id=fields["frame_id"])
                 continue
             value = fields[name]
@@ -187,27 +200,20 @@ def step_row(observation: dict, position) -> dict:
             "true_wind_n": float(ts["true_wind"][1])}
 
 
-def _topics(row: dict, origin: Origin) -> dict:
-    """Each topic's fields for one row (the headers' frame in ``frame_id``)."""
+def _topics(row: dict, origin: Origin, stamp: int) -> dict:
+    """Each topic's fields for one row stamped ``stamp`` ns (the headers' frame in ``frame_id``)."""
     measured = quat_from_euler(row["heel"], row["true_pitch"], yaw_from_heading(row["heading"]))
     true = quat_from_euler(row["true_heel"], row["true_pitch"], row["true_yaw"])
     imu = messages.imu(measured, (row["roll_rate"], row["true_pitch_rate"], row["yaw_rate"]), None)
     fix = messages.nav_sat_fix((row["x"], row["y"], 0.0), origin)
-    nanoseconds = int(round(row["t"] * 1e9))
-    clock = {"clock": {"sec": nanoseconds // 10**9, "nanosec": nanoseconds % 10**9}}
-    odom = {"frame_id": "map", "child_frame_id": "base_link",
-            "pose": {"pose": {"position": {"x": row["true_x"], "y": row["true_y"], "z": row["true_z"]},
-                              "orientation": {"x": true[1], "y": true[2], "z": true[3], "w": true[0]}},
-                     "covariance": [0.0] * 36},
-            "twist": {"twist": {"linear": {"x": row["u"], "y": row["v"], "z": row["w"]},
-                                "angular": {"x": row["true_roll_rate"], "y": row["true_pitch_rate"],
-                                            "z": row["true_yaw_rate"]}},
-                      "covariance": [0.0] * 36}}
-    return {"/clock": clock, "/gps/fix": {"frame_id": "gps", **fix},
+    odom = messages.odometry((row["true_x"], row["true_y"], row["true_z"]), true,
+                             (row["u"], row["v"], row["w"]),
+                             (row["true_roll_rate"], row["true_pitch_rate"], row["true_yaw_rate"]))
+    return {"/clock": {"clock": messages.time(stamp)}, "/gps/fix": {"frame_id": "gps", **fix},
             "/gps/vel": {"frame_id": "map", "twist": messages.twist_enu((row["vel_e"], row["vel_n"], 0.0))},
             "/imu/data": {"frame_id": "base_link", **imu},
             "/wind/apparent": {"frame_id": "base_link",
                                "vector": messages.apparent_wind(row["awa"], row["aws"])},
-            "/sim/odom": odom,
+            "/sim/odom": {"frame_id": "map", "child_frame_id": "base_link", **odom},
             "/sim/wind/true": {"frame_id": "map",
-                               "vector": {"x": row["true_wind_e"], "y": row["true_wind_n"], "z": 0.0}}}
+                               "vector": messages.vector3((row["true_wind_e"], row["true_wind_n"], 0.0))}}
