@@ -177,24 +177,21 @@ def more_runs(results: Results, smoke: bool) -> Runs:
         table = results.sweeps[folder(case)]
         ok = table[table["status"] == "ok"]
         best = ok.loc[ok.groupby(["task.wind_speed", "task.wind_from_deg"])["steady_speed"].idxmax()]
-        rows = []  # (tws m/s, twa deg, sail deg, reef, flat)
-        for r in best.itertuples(index=False):
-            tws, twa, sail = r[best.columns.get_loc("task.wind_speed")], r[best.columns.get_loc(
-                "task.wind_from_deg")], r[best.columns.get_loc("controller.sail_deg")]
+        keys = ["task.wind_speed", "task.wind_from_deg", "controller.sail_deg"]
+        trims = case == "as built"
+        if trims:
+            keys += ["boat.reef", "boat.flat"]
+        rows = []  # one per run, the values of ``keys``
+        for _, r in best.iterrows():
+            tws, twa, sail = (float(r[key]) for key in keys[:3])
             rows += [(tws, twa, sail + d, 1.0, 1.0) for d in finer if sail + d > 0.0]
-            heel = abs(math.degrees(r[best.columns.get_loc("steady_heel")]))
-            if case == "as built" and heel > DEPOWER_HEEL_DEG:
+            if trims and abs(math.degrees(r["steady_heel"])) > DEPOWER_HEEL_DEG:
                 rows += [(tws, twa, sail + d, reef, flat) for reef, flat in DEPOWERED
                          for d in around if sail + d > 0.0]
         if rows:
             spec = polar.polar_spec(boat, "fixed_sail", [], [], duration=axes(case, smoke)[3],
                                     options=dict(options))
-            columns = list(zip(*rows, strict=True))
-            spec["zip"] = {"task.wind_speed": list(columns[0]), "task.wind_from_deg": list(columns[1]),
-                           "controller.sail_deg": list(columns[2]), "boat.reef": list(columns[3]),
-                           "boat.flat": list(columns[4])} if case == "as built" else {
-                "task.wind_speed": list(columns[0]), "task.wind_from_deg": list(columns[1]),
-                "controller.sail_deg": list(columns[2])}
+            spec["zip"] = {key: [row[k] for row in rows] for k, key in enumerate(keys)}
             spec["name"] = f"{NAME}-{folder(case)}-finer"
             sweeps.append((spec, f"{folder(case)}/finer"))
     return Runs(sweeps=tuple(sweeps), label=f"{NAME} finer sail angles and depowered trims")
