@@ -9,6 +9,8 @@
 ``video BOAT TASK``   :func:`sailmujoco.cli.video.run_cli`
 ``view BOAT TASK``    :func:`sailmujoco.cli.view.run_cli`
 ``boat ACTION``       :func:`sailmujoco.cli.boat.run_cli`
+``sitl BOAT``         :func:`sailmujoco.cli.sitl.run_cli`
+``ros2 BOAT [TASK]``  :func:`sailmujoco.cli.ros2.run_cli`
 ====================  =============================================================
 
 Bad input (a ``ValueError`` from any command) is one line on stderr and exit status 2; Ctrl-C is
@@ -22,7 +24,7 @@ import sys
 from importlib import metadata
 
 from . import boat as boat_cli
-from . import health, listing, polar, sitl, video, view
+from . import health, listing, polar, ros2, sitl, video, view
 from . import study as study_runner
 from . import sweep as sweep_cli
 from .arguments import (
@@ -94,6 +96,7 @@ def build_parser() -> argparse.ArgumentParser:
     view.add_parser(sub)
     boat_cli.add_parser(sub)
     sitl.add_parser(sub)
+    ros2.add_parser(sub)
     return parser
 
 

@@ -8,21 +8,7 @@ wrote. The messages' fields come from :mod:`sailmujoco.ros2.messages`; the write
 (its typestore for the ROS 2 distribution, its MCAP storage), installed by
 ``pip install 'sailmujoco[ros2]'``.
 
-What each topic carries (stamps: the simulation's time):
-
-* ``/clock`` (rosgraph_msgs/Clock): the simulation's time.
-* ``/gps/fix`` (sensor_msgs/NavSatFix): the GNSS position as fitted, WGS84 about ``origin``.
-* ``/gps/vel`` (geometry_msgs/TwistStamped, frame ``map``, ENU): its velocity over ground.
-* ``/imu/data`` (sensor_msgs/Imu, frame ``base_link``): the orientation from the compass and the
-  heel sensor as fitted (the pitch is the true one: the instruments have no pitch sensor), the
-  gyro's roll and yaw rates (the pitch rate the true one); no linear acceleration (its
-  covariance's first element -1, sensor_msgs/Imu's "not given").
-* ``/wind/apparent`` (geometry_msgs/Vector3Stamped, frame ``base_link``): the masthead unit's
-  reading, the air's velocity past the boat.
-* ``/sim/odom`` (nav_msgs/Odometry, frame ``map``, child ``base_link``): the true pose (ENU) and
-  the true velocity in the body frame (REP-105's convention for a twist).
-* ``/sim/wind/true`` (geometry_msgs/Vector3Stamped, frame ``map``): the true wind at the sail
-  (east, north), where it blows to.
+What each topic carries, its frame and its signs: :mod:`sailmujoco.ros2.contract`.
 """
 
 from __future__ import annotations
@@ -33,21 +19,12 @@ from pathlib import Path
 
 import numpy as np
 
-from ..frames import quat_from_euler, yaw_from_heading
 from . import messages
+from .contract import DEFAULT_ORIGIN, TOPICS, step_row, topic_fields
 from .geodesy import Origin
 
-TOPICS = {
-    "/clock": "rosgraph_msgs/msg/Clock",
-    "/gps/fix": "sensor_msgs/msg/NavSatFix",
-    "/gps/vel": "geometry_msgs/msg/TwistStamped",
-    "/imu/data": "sensor_msgs/msg/Imu",
-    "/wind/apparent": "geometry_msgs/msg/Vector3Stamped",
-    "/sim/odom": "nav_msgs/msg/Odometry",
-    "/sim/wind/true": "geometry_msgs/msg/Vector3Stamped",
-}
-"""Topic -> its ROS 2 message type."""
-DEFAULT_ORIGIN = Origin(latitude=59.9, longitude=10.7)  # the Oslo fjord, where the 11:Metre class sails
+__all__ = ["DEFAULT_ORIGIN", "DISTROS", "INSTALL", "TOPICS", "McapLog", "RosbagsMissing", "check_log_path"]
+
 DISTROS = ("humble", "jazzy")
 INSTALL = "the MCAP log needs rosbags: pip install 'sailmujoco[ros2]'"
 
@@ -146,7 +123,7 @@ class McapLog:
         """
         row = step_row(timestep.observation, self.env.physics.position())
         stamp = int(round(row["t"] * 1e9))
-        for topic, fields in _topics(row, self.origin, stamp).items():
+        for topic, fields in topic_fields(row, self.origin, stamp).items():
             raw = self._store.serialize_cdr(self._message(TOPICS[topic], fields, stamp), TOPICS[topic])
             self._writer.write(self._connections[topic], stamp, raw)
             self.messages += 1
@@ -172,48 +149,3 @@ class McapLog:
             else:
                 values[name] = value
         return cls(**values)
-
-
-def step_row(observation: dict, position) -> dict:
-    """The values a step's messages carry: the instruments' and the truth's, SI, ENU.
-
-    Parameters
-    ----------
-    observation : dict
-        A TimeStep's observation (with its ``true_state``).
-    position : array_like, shape (3,)
-        The true position of CO in the world (east, north, up), m.
-    """
-    ts = observation["true_state"]
-    return {"t": float(ts["time"]), "true_x": float(position[0]), "true_y": float(position[1]),
-            "true_z": float(position[2]),
-            "x": float(observation["position"][0]), "y": float(observation["position"][1]),
-            "vel_e": float(observation["velocity"][0]), "vel_n": float(observation["velocity"][1]),
-            "heading": float(observation["heading"]), "heel": float(observation["heel"]),
-            "roll_rate": float(observation["roll_rate"]), "yaw_rate": float(observation["yaw_rate"]),
-            "awa": float(observation["apparent_wind_angle"]),
-            "aws": float(observation["apparent_wind_speed"]),
-            "true_yaw": float(ts["yaw"]), "true_heel": float(ts["heel"]), "true_pitch": float(ts["pitch"]),
-            "true_pitch_rate": float(ts["pitch_rate"]), "true_roll_rate": float(ts["roll_rate"]),
-            "true_yaw_rate": float(ts["yaw_rate"]), "u": float(ts["u"]), "v": float(ts["v"]),
-            "w": float(ts["w"]), "true_wind_e": float(ts["true_wind"][0]),
-            "true_wind_n": float(ts["true_wind"][1])}
-
-
-def _topics(row: dict, origin: Origin, stamp: int) -> dict:
-    """Each topic's fields for one row stamped ``stamp`` ns (the headers' frame in ``frame_id``)."""
-    measured = quat_from_euler(row["heel"], row["true_pitch"], yaw_from_heading(row["heading"]))
-    true = quat_from_euler(row["true_heel"], row["true_pitch"], row["true_yaw"])
-    imu = messages.imu(measured, (row["roll_rate"], row["true_pitch_rate"], row["yaw_rate"]), None)
-    fix = messages.nav_sat_fix((row["x"], row["y"], 0.0), origin)
-    odom = messages.odometry((row["true_x"], row["true_y"], row["true_z"]), true,
-                             (row["u"], row["v"], row["w"]),
-                             (row["true_roll_rate"], row["true_pitch_rate"], row["true_yaw_rate"]))
-    return {"/clock": {"clock": messages.time(stamp)}, "/gps/fix": {"frame_id": "gps", **fix},
-            "/gps/vel": {"frame_id": "map", "twist": messages.twist_enu((row["vel_e"], row["vel_n"], 0.0))},
-            "/imu/data": {"frame_id": "base_link", **imu},
-            "/wind/apparent": {"frame_id": "base_link",
-                               "vector": messages.apparent_wind(row["awa"], row["aws"])},
-            "/sim/odom": {"frame_id": "map", "child_frame_id": "base_link", **odom},
-            "/sim/wind/true": {"frame_id": "map",
-                               "vector": messages.vector3((row["true_wind_e"], row["true_wind_n"], 0.0))}}
