@@ -6,7 +6,7 @@ and the yaw rate) and ``/wind/apparent`` (the masthead unit), and publishes
 the heading error for the rudder, and the sail at half the apparent wind angle to leeward. It
 runs on sim time (``use_sim_time``): each leg of the course is held for its simulated seconds.
 
-    python examples/ros2/heading_hold.py --legs 60:60,120:60,240:60,300:60
+    python examples/ros2/heading_hold.py --legs 0:60,300:60,210:60,150:60
 
 The signs are the bridge's (docs/ros2.md): a positive rudder turns the boat to port, a positive
 sail angle is the boom to port, the leeward side with the wind from starboard. When the course
@@ -100,7 +100,7 @@ def legs_of(text: str) -> list[tuple[float, float]]:
 
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--legs", type=legs_of, default=legs_of("60:60,120:60,240:60,300:60"),
+    parser.add_argument("--legs", type=legs_of, default=legs_of("0:60,300:60,210:60,150:60"),
                         help="HEADING:SECONDS,... compass degrees and simulated seconds")
     parser.add_argument("--kp", type=float, default=1.0, help="rudder per radian of heading error")
     parser.add_argument("--kd", type=float, default=2.0, help="rudder per rad/s of heading rate")
