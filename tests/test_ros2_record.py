@@ -91,3 +91,30 @@ def test_a_log_path_that_is_not_mcap_is_one_line(tmp_path):
     env = suite.load("eleven_metre", "heading_hold", seed=0)
     with pytest.raises(ValueError, match=r"^the MCAP log's path must end in \.mcap, got '.*run\.bag'$"):
         McapLog(env, tmp_path / "run.bag")
+
+
+def test_a_sitl_runs_log_holds_its_trajectory_table_stamped_with_sitls_clock(tmp_path):
+    """``sailmujoco sitl --record``: the backend's rows, 10 a simulated second, as messages; the
+    apparent wind is the vane's reading, the pose the truth."""
+    from sailmujoco.sitl.backend import JsonBackend
+    from sailmujoco.sitl.protocol import servo_packet
+
+    path = tmp_path / "sitl.mcap"
+    log = McapLog(None, path)
+    backend = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0, sensors="typical", mcap=log)
+    for k in range(200):  # 200 frames of the robot's 2.5 ms: 0.5 s
+        backend.handle(servo_packet([1500] * 16, 400, k))
+    log.close()
+    table = backend.trajectory()
+    decoded = {}
+    with open(path, "rb") as f:
+        reader = mcap_reader.make_reader(f, decoder_factories=[mcap_ros2_decoder.DecoderFactory()])
+        for _, channel, message, value in reader.iter_decoded_messages():
+            decoded.setdefault(channel.topic, []).append((message.log_time, value))
+    assert set(decoded) == set(TOPICS)
+    assert [t for t, _ in decoded["/clock"]] == [round(t * 1e9) for t in table["t"]]
+    odom = [m for _, m in decoded["/sim/odom"]]
+    assert [o.pose.pose.position.x for o in odom] == table["x"].tolist()
+    wind = [m.vector for _, m in decoded["/wind/apparent"]]
+    assert [math.degrees(apparent_wind_angle((v.x, v.y, v.z))) for v in wind] == \
+        pytest.approx(table["vane_deg"].tolist(), abs=1e-9)

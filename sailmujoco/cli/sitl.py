@@ -70,6 +70,9 @@ def add_parser(sub) -> None:
     parser.add_argument("--seconds", type=number(0.0, low_open=True, unit="s"), default=None,
                         help="simulated seconds after which the run ends (default: until SITL stops)")
     parser.add_argument("--out", help="folder for trajectory.csv (default results/sitl/<boat>)")
+    parser.add_argument("--record", metavar="FILE.mcap",
+                        help="also write the run as an MCAP log of ROS 2 messages, 10 a simulated second "
+                             "(docs/ros2.md; needs pip install 'sailmujoco[ros2]')")
     parser.add_argument("--video", metavar="FILE.mp4",
                         help="film the run: the boat drawn 5 times a simulated second once the run is over, "
                              "played at 25 frames a second (five times real time)")
@@ -134,13 +137,14 @@ def run_cli(args) -> int:
     ----------
     args : argparse.Namespace
         ``boat``, ``wind_speed``, ``wind_from``, ``gusts``, ``waves``, ``sensors``, ``heading``,
-        ``hold``, ``motor``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``, ``video``.
+        ``hold``, ``motor``, ``seed``, ``port``, ``timeout``, ``seconds``, ``out``, ``record``,
+        ``video``.
 
     Returns
     -------
     int
-        0; 2 where the port is taken, SITL never sent a packet or ``--video`` cannot be filmed
-        (one line on stderr).
+        0; 1 where ``--record`` needs rosbags; 2 where the port is taken, SITL never sent a packet or
+        ``--video`` cannot be filmed (one line on stderr).
     """
     from ..boat.catalogue import boat_label
     from ..sitl.backend import JsonBackend, SitlError
@@ -151,11 +155,14 @@ def run_cli(args) -> int:
         if problem:
             print(f"sailmujoco sitl: --video {args.video}: {problem}", file=sys.stderr)
             return 2
+    mcap = _mcap_log(args.record)
+    if mcap == 1:
+        return 1
     out = out_folder(args.out or Path("results") / "sitl" / boat_label(args.boat))
     backend = JsonBackend(args.boat, wind_speed=args.wind_speed, wind_from_deg=args.wind_from,
                           gusts=args.gusts, waves=waves, sensors=args.sensors, heading_deg=args.heading,
                           hold=args.hold, motor_thrust=args.motor, film=bool(args.video), seed=args.seed,
-                          log=lambda line: print(line, flush=True))
+                          log=lambda line: print(line, flush=True), mcap=mcap)
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)
     previous = signal.signal(signal.SIGTERM, _terminated)  # SIGTERM or Ctrl-C: the run ends as on a timeout
@@ -170,6 +177,8 @@ def run_cli(args) -> int:
         print(f"sitl: {how} at t = {backend.time():.2f} s", flush=True)
     finally:
         signal.signal(signal.SIGTERM, previous)
+        if mcap is not None:
+            mcap.close()
         for i, rows in enumerate(backend.runs):
             if rows:
                 name = "trajectory.csv" if len(backend.runs) == 1 else f"trajectory_{i}.csv"
@@ -180,8 +189,25 @@ def run_cli(args) -> int:
     speed = simulated / counters.lock_step if counters.lock_step > 0 else math.nan
     print(f"sitl: {counters.answered} frames ({simulated:.1f} s simulated) in {counters.lock_step:.1f} s of "
           f"lock-step, {speed:.1f} times real time; {counters.resent} sent again, "
-          f"{counters.refused} refused, {counters.resets} restarts; the trajectory in {out}")
+          f"{counters.refused} refused, {counters.resets} restarts; the trajectory in {out}"
+          + (f", the log in {args.record}" if args.record else ""))
     return 0
+
+
+def _mcap_log(path):
+    """``--record``'s log (None without it); 1 where rosbags is missing (said in one line)."""
+    if not path:
+        return None
+    from ..ros2.record import McapLog, RosbagsMissing, check_log_path
+    from .arguments import file_argument
+
+    file_argument("--record", path, "run.mcap")
+    check_log_path(path, "--record")
+    try:
+        return McapLog(None, path)
+    except RosbagsMissing as err:
+        print(f"sailmujoco sitl: {err}", file=sys.stderr)
+        return 1
 
 
 def _film(backend, args, waves) -> None:

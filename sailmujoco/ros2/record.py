@@ -69,8 +69,9 @@ class McapLog:
 
     Parameters
     ----------
-    env : SailEnvironment
-        The environment the rollout runs (its physics gives the true position).
+    env : SailEnvironment or None
+        The environment the rollout runs (its physics gives the true position); None where the
+        rows come from elsewhere, handed to :meth:`write` (``sailmujoco sitl --record``).
     path : str or os.PathLike
         The MCAP file written (replaced if it exists).
     origin : Origin
@@ -122,12 +123,22 @@ class McapLog:
             The action that led to it (None at the reset).
         """
         row = step_row(timestep.observation, self.env.physics.position())
+        self.write(row)
+        return row
+
+    def write(self, row: dict) -> None:
+        """Write one step's messages, stamped with its time ``row["t"]``.
+
+        Parameters
+        ----------
+        row : dict
+            The step's values (:func:`sailmujoco.ros2.contract.step_row`).
+        """
         stamp = int(round(row["t"] * 1e9))
         for topic, fields in topic_fields(row, self.origin, stamp).items():
             raw = self._store.serialize_cdr(self._message(TOPICS[topic], fields, stamp), TOPICS[topic])
             self._writer.write(self._connections[topic], stamp, raw)
             self.messages += 1
-        return row
 
     def _message(self, kind: str, fields: dict, stamp: int):
         """rosbags' message of type ``kind`` filled from ``fields`` (a header stamped ``stamp``)."""

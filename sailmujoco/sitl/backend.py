@@ -41,7 +41,9 @@ from ..forces.wind import WindConfig
 from ..frames import wrap_angle, yaw_from_heading
 from ..jit.ordered import mat_vec
 from ..measurement.instruments import Instruments
+from ..measurement.observation import observe
 from ..physics import BoatPhysics
+from ..ros2.contract import step_row
 from .film import FILM_RATE_HZ
 from .protocol import ProtocolError, parse_servo_packet, state_line
 from .servos import ServoMap
@@ -120,12 +122,16 @@ class JsonBackend:
         per run) for :func:`sailmujoco.sitl.film.film`.
     log : callable, optional
         Called with each one-line report (``print`` on the command line).
+    mcap : McapLog, optional
+        Each row of the trajectory table also written as ROS 2 messages
+        (:class:`sailmujoco.ros2.record.McapLog`, made with no environment): the truth, and the
+        vane's reading as the apparent wind; stamped with SITL's clock.
     """
 
     def __init__(self, boat="saoud_robot", *, wind_speed: float = 5.0, wind_from_deg: float = 0.0,
                  gusts: bool = False, waves=None, sensors=None, servos: ServoMap | None = None,
                  heading_deg: float = 0.0, seed: int = 0, hold: bool = False, motor_thrust: float = 0.0,
-                 film: bool = False, log=None):
+                 film: bool = False, log=None, mcap=None):
         wind = WindConfig(speed=float(wind_speed), direction_from=math.radians(wind_from_deg),
                           gusts=bool(gusts), wander=bool(gusts), seed=int(seed))
         self.physics = BoatPhysics.load(boat, sail_mode="sheeted", wind=wind, waves=waves)
@@ -143,6 +149,7 @@ class JsonBackend:
         low, high = self.physics.action_bounds()
         self._max_rudder, self._sheet_range = float(high[0]), (float(low[1]), float(high[1]))
         self.log = log or (lambda line: None)
+        self.mcap = mcap
         self.counters = Counters()
         self.listening = threading.Event()  # set once serve() holds its port
         self.runs: list[list[dict]] = []
@@ -272,6 +279,10 @@ class JsonBackend:
             "mainsail_pwm": mainsail, "throttle_pwm": throttle, "thrust": self._thrust,
             "vane_deg": math.degrees(vane[0]), "vane_speed": vane[1],
             "awa_deg": math.degrees(p.apparent_wind_angle()), "aws": p.apparent_wind_speed()})
+        if self.mcap is not None:
+            observation = observe(p.truth())
+            observation["apparent_wind_angle"], observation["apparent_wind_speed"] = vane
+            self.mcap.write({**step_row(observation, p.position()), "t": t})
 
     # ---- the socket
     def serve(self, port: int = DEFAULT_PORT, host: str = "127.0.0.1", timeout: float = 30.0,
