@@ -8,7 +8,8 @@ network namespace only::
 
 Scenarios: ``answer`` (answer every step: the rudder 0 until ``--turn-at`` s, then
 ``--rudder``; the sail ``--sail``; stop answering for ``--pause`` s of wall time at
-``--pause-at`` s of sim time), ``wrong_type`` (publish std_msgs/Float32 on the rudder's topic).
+``--pause-at`` s of sim time), ``listen`` (subscribe, never answer), ``wrong_type`` (publish
+std_msgs/Float32 on the rudder's topic).
 """
 
 from __future__ import annotations
@@ -78,6 +79,8 @@ class Client:
         return take
 
     def answer(self, stamp: int) -> None:
+        if self.args.scenario == "listen":
+            return
         t = stamp * 1e-9
         if self.args.pause and self.pause_until is None and t >= self.args.pause_at:
             self.pause_until = time.perf_counter() + self.args.pause
@@ -91,7 +94,7 @@ class Client:
 
 def main() -> int:
     parser = argparse.ArgumentParser()
-    parser.add_argument("scenario", choices=("answer", "wrong_type"))
+    parser.add_argument("scenario", choices=("answer", "listen", "wrong_type"))
     parser.add_argument("--names", default="{}", help="JSON: default topic -> its name")
     parser.add_argument("--rudder", type=float, default=0.0)
     parser.add_argument("--sail", type=float, default=0.6)
@@ -108,7 +111,7 @@ def main() -> int:
     bridge = subprocess.Popen([sys.executable, "-m", "sailmujoco", "ros2", *bridge_args],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     client = wrong = None
-    if args.scenario == "answer":
+    if args.scenario in ("answer", "listen"):
         client = Client(node, json.loads(args.names), args)
     else:
         wrong = node.create_publisher(Float32, "/rudder/command", 10)

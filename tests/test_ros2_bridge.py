@@ -7,6 +7,7 @@ The expected types are the standard messages the contract names (REP-103 frames,
 
 import json
 import math
+import re
 import subprocess
 import sys
 from collections import defaultdict
@@ -188,3 +189,19 @@ def test_the_recipes_heading_hold_node_sails_its_course(python):
     assert [leg["heading_deg"] for leg in legs] == [0, 300, 210, 150]
     for leg in legs:
         assert leg["steps"] == 125 and leg["mean_abs_error_deg"] < 10.0, leg
+
+
+def test_lock_step_with_no_command_ends_after_its_timeout_and_free_running_needs_none(python):
+    waited = client(python, "listen", "--", "eleven_metre", "--seconds", "2", "--timeout", "1")
+    assert waited["returncode"] == 0, waited["stderr"]
+    assert "0 steps (0.0 s simulated)" in waited["stdout"] and "ended: no command for 1 s" in waited["stdout"]
+    # free-running at real time: it starts as it comes up (a node that joins later sees the clock
+    # from then on), and runs without a command
+    free = client(python, "listen", "--", "eleven_metre", "--seconds", "4", "--rate", "1")
+    assert free["returncode"] == 0, free["stderr"]
+    assert "40 steps (4.0 s simulated)" in free["stdout"] and "ended: the episode's end" in free["stdout"]
+    clocks = [m for m in free["seen"] if m["topic"] == "/clock"]
+    assert len(clocks) >= 10 and clocks[-1]["stamp"] == 40 * STEP_NS
+    # paced, not faster than real time: the bridge's own wall time at least the 4 s it simulated
+    wall = float(re.search(r"simulated\) in ([0-9.]+) s", free["stdout"]).group(1))
+    assert wall >= 4.0

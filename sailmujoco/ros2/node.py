@@ -277,8 +277,9 @@ class Bridge:
         self.counters.resent += 1
 
     def _pace(self) -> None:
-        """Free-running: hold the step until its time at ``rate`` times real time, reading commands."""
-        due = self._start + self.counters.simulated / self.rate
+        """Free-running: hold the step until the time it reaches is due at ``rate`` times real time,
+        reading commands meanwhile."""
+        due = self._start + (self.counters.simulated + self.env.control_timestep()) / self.rate
         while True:
             self.executor.spin_once(timeout_sec=max(0.0, min(due - time.perf_counter(), GRAPH_CHECK)))
             now = time.perf_counter()
