@@ -205,3 +205,19 @@ def test_lock_step_with_no_command_ends_after_its_timeout_and_free_running_needs
     # paced, not faster than real time: the bridge's own wall time at least the 4 s it simulated
     wall = float(re.search(r"simulated\) in ([0-9.]+) s", free["stdout"]).group(1))
     assert wall >= 4.0
+
+
+def test_a_second_bridge_on_the_same_domain_is_one_line_and_the_first_sails_on(python, tmp_path):
+    """The ROS analogue of a port in use: a clock already published on the domain."""
+    script = (f'"$1" -m sailmujoco ros2 eleven_metre --seconds 5 --timeout 8 > {tmp_path}/first.txt & '
+              f'until grep -q publishing {tmp_path}/first.txt; do sleep 0.2; done; '  # the first has begun
+              f'"$1" -m sailmujoco ros2 eleven_metre --seconds 5 2> {tmp_path}/second.err; '
+              f'echo $? > {tmp_path}/second.rc; wait $!; echo $? > {tmp_path}/first.rc')
+    done = in_namespace(["sh", "-c", script, "sh", python], timeout=120)
+    assert done.returncode == 0, done.stderr[-2000:]
+    assert (tmp_path / "second.rc").read_text().strip() == "2"
+    assert (tmp_path / "second.err").read_text().strip().splitlines() == [
+        "sailmujoco ros2: another node already publishes /clock on ROS_DOMAIN_ID 42 "
+        "(a bridge still running?): stop it, or give this one another ROS_DOMAIN_ID"]
+    assert (tmp_path / "first.rc").read_text().strip() == "0"
+    assert "ended: no command for 8 s" in (tmp_path / "first.txt").read_text()

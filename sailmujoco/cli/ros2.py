@@ -135,9 +135,7 @@ def run_cli(args) -> int:
         bridge = Bridge(env, origin=origin, names=names, rate=args.rate, timeout=args.timeout, record=log,
                         say=lambda line: print(line, flush=True))
         how = "lock-step" if args.rate is None else f"free-running at {args.rate:g} times real time"
-        print(f"ros2: {boat_label(args.boat)} on {args.task}, {how}; publishing {bridge.names['/imu/data']}, "
-              f"{bridge.names['/gps/fix']}, ..., waiting for {bridge.names['/rudder/command']} and "
-              f"{bridge.names['/sail/command']}", flush=True)
+        print(f"ros2: {boat_label(args.boat)} on {args.task}, {how}", flush=True)
         counters = bridge.run()
     except (RclpyMissing, RosbagsMissing) as err:
         print(f"sailmujoco ros2: {err}", file=sys.stderr)

@@ -14,6 +14,9 @@ Two ways to keep time:
   A node that answers one of those twice sends a stale pair the next step takes; only a node
   slower than :data:`RESEND` s does. With no command for ``timeout`` s the run ends (as
   ``sailmujoco sitl`` ends when ArduPilot stops).
+
+Before it publishes, the bridge looks on its domain for :data:`DISCOVERY` s: another node that
+already publishes the clock (a bridge still running) is refused in one line, as a taken port is.
 * **free-running** (``rate``): the steps are paced at ``rate`` times real time and take the
   latest commands whenever they came (zero until the first).
 
@@ -39,6 +42,8 @@ RESEND = 0.5
 """Seconds of wall time between the lock-step's resends of a step's messages."""
 GRAPH_CHECK = 1.0
 """Seconds of wall time between checks of the command topics' types on the ROS graph."""
+DISCOVERY = 2.0
+"""Seconds of wall time the bridge looks for another clock on its domain before it starts."""
 PROGRESS = 60.0
 """Simulated seconds between progress lines."""
 
@@ -185,12 +190,17 @@ class Bridge:
         try:
             self.executor = executor_class(context=context)
             self.executor.add_node(self.node)
+            self._check_alone()
             self._publishers = {topic: self.node.create_publisher(message_class(kind), self.names[topic],
                                                                   qos(depth=10))
                                 for topic, kind in TOPICS.items()}
             for index, (topic, kind) in enumerate(COMMANDS.items()):
                 self.node.create_subscription(message_class(kind), self.names[topic],
                                               self._on_command(topic, index), qos(depth=10))
+            names = self.names
+            self.say(f"ros2: on ROS_DOMAIN_ID {self.node.context.get_domain_id()}, publishing "
+                     f"{names['/clock']}, {names['/imu/data']}, {names['/gps/fix']}, ...; reading "
+                     f"{names['/rudder/command']} and {names['/sail/command']}")
             self._sail()
         finally:
             self.node.destroy_node()
@@ -296,3 +306,16 @@ class Bridge:
             other = [kind for kind in kinds if name in wanted and kind != wanted[name]]
             if other:
                 raise BridgeError(f"topic {name} carries {other[0]}; the bridge's is {wanted[name]}")
+
+    def _check_alone(self) -> None:
+        """Another node that already publishes the clock on this domain (a bridge left running, the
+        ROS analogue of a port in use): one line, before this one publishes anything."""
+        clock = self.names["/clock"]
+        end = time.perf_counter() + DISCOVERY
+        while time.perf_counter() < end:
+            self.executor.spin_once(timeout_sec=0.1)
+            if self.node.count_publishers(clock):
+                domain = self.node.context.get_domain_id()
+                raise BridgeError(f"another node already publishes {clock} on ROS_DOMAIN_ID {domain} "
+                                  f"(a bridge still running?): stop it, or give this one another "
+                                  f"ROS_DOMAIN_ID")
