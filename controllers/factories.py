@@ -379,3 +379,35 @@ def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float 
     return Bounded(VielController(d_M=d_M, d_T=d_T, k_s=k_s, k_p=k_p, k_v=k_v,
                                   epsilon_deg=epsilon_deg, dt=env.control_timestep()),
                    spec.minimum, spec.maximum)
+
+
+def line_following(env, marks=None, leg: float = 200.0, r: float = 10.0, zeta_deg: float = 60.0,
+                   gamma_inf_deg: float = 45.0, beta_deg: float = 45.0) -> Bounded:
+    """Jaulin and Le Bars' line following with tacking, mark by mark
+    (:class:`controllers.line_following.LineFollower`).
+
+    Parameters
+    ----------
+    env : Environment
+        The task environment (action bounds).
+    marks : list of [float, float], optional
+        The marks in order (east, north), m; None: a windward mark ``leg`` m upwind of the start,
+        then back to the start.
+    leg : float
+        The windward leg without ``marks``, m.
+    r : float
+        Cut-off distance, m.
+    zeta_deg, gamma_inf_deg, beta_deg : float
+        Close-hauled angle, incidence angle, the sail's angle abeam, deg.
+
+    Returns
+    -------
+    Bounded
+        The controller, its action clipped to the environment's bounds.
+    """
+    from .line_following import LineFollower, LineFollowingGains
+
+    spec = env.action_spec()
+    gains = LineFollowingGains(r=r, zeta=math.radians(zeta_deg), gamma_inf=math.radians(gamma_inf_deg),
+                               delta_r_max=float(spec.maximum[0]), beta=math.radians(beta_deg))
+    return Bounded(LineFollower(marks, leg, gains), spec.minimum, spec.maximum)

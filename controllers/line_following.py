@@ -115,3 +115,73 @@ def line_following(m, theta: float, psi: float, a, b, q: int,
     exponent = math.log(math.pi / (2.0 * gains.beta)) / math.log(2.0)
     delta_s_max = math.pi / 2.0 * ((math.cos(psi - theta_bar) + 1.0) / 2.0) ** exponent  # 12
     return delta_r, delta_s_max, theta_bar, q
+
+
+class LineFollower:
+    """The law sailing a course mark by mark (the mission layer): each leg is the line from the
+    last mark (the start for the first) to the next; a mark counts as passed once the boat is
+    beyond the line through it square to the leg (dot(b - a, m - b) > 0), Jaulin's own test.
+
+    Parameters
+    ----------
+    marks : sequence of (float, float), optional
+        The marks in order (east, north from the world's origin), m. None: a windward-leeward
+        course laid on the first step, a mark ``leg`` metres straight upwind of the start, then
+        the start.
+    leg : float
+        The windward leg's length without ``marks``, m.
+    gains : LineFollowingGains
+        The law's parameters.
+
+    Notes
+    -----
+    The package's frames turn into Jaulin's: theta = pi/2 - heading, and psi = -pi/2 -
+    wind_direction (the true wind's compass direction, where it comes from, read from
+    ``true_state`` as Viel's controller reads it). The rudder is -delta_r (the package's positive
+    rudder turns the boat to port); the sail is delta_s_max to leeward (the side of the AWA).
+    """
+
+    def __init__(self, marks=None, leg: float = 200.0, gains: LineFollowingGains = LineFollowingGains()):
+        self.given = None if marks is None else [tuple(map(float, mark)) for mark in marks]
+        self.leg_length, self.gains = float(leg), gains
+        self.reset()
+
+    def reset(self, seed: int | None = None) -> None:
+        """Back to the course's first leg, on tack q = 1.
+
+        Parameters
+        ----------
+        seed : int, optional
+            Unused (the law is deterministic).
+        """
+        self.marks, self.a, self.leg, self.q, self.tacks = self.given, None, 0, 1, 0
+
+    def __call__(self, timestep):
+        """[rudder, sail] for this step.
+
+        Parameters
+        ----------
+        timestep : dm_env.TimeStep
+            Its observation's ``position``, ``heading``, ``apparent_wind_angle`` and
+            ``true_state["wind_direction"]``.
+        """
+        observation = timestep.observation
+        m = (float(observation["position"][0]), float(observation["position"][1]))
+        wind_from = float(observation["true_state"]["wind_direction"])
+        if self.a is None:
+            self.a = m
+            if self.marks is None:
+                self.marks = [(m[0] + self.leg_length * math.sin(wind_from),
+                               m[1] + self.leg_length * math.cos(wind_from)), m]
+        b = self.marks[self.leg]
+        passed = (b[0] - self.a[0]) * (m[0] - b[0]) + (b[1] - self.a[1]) * (m[1] - b[1]) > 0
+        if passed and self.leg < len(self.marks) - 1:
+            self.a, self.leg = b, self.leg + 1
+            b = self.marks[self.leg]
+        theta = math.pi / 2.0 - float(observation["heading"])
+        psi = -math.pi / 2.0 - wind_from
+        delta_r, delta_s, _, q = line_following(m, theta, psi, self.a, b, self.q, self.gains)
+        self.tacks += q != self.q
+        self.q = q
+        sail = math.copysign(delta_s, float(observation["apparent_wind_angle"]))
+        return [-delta_r, sail]

@@ -68,3 +68,29 @@ def test_the_sail_law_gives_beta_abeam_and_pi_over_2_before_the_wind():
 def test_sawtooth_wraps_to_minus_pi_pi():
     assert sawtooth(3 * math.pi / 2) == pytest.approx(-math.pi / 2)
     assert sawtooth(-math.pi) == math.pi and sawtooth(0.1) == pytest.approx(0.1, abs=1e-15)
+
+
+def test_the_line_follower_beats_to_a_windward_mark_with_tacks_and_runs_back_past_the_start():
+    """The 11:Metre in a steady 5.6 m/s northerly, calm water: a mark 200 m dead upwind of the
+    start cannot be fetched, so the boat tacks (the apparent wind crosses the bow, counted from
+    the run's table, not the law's state), rounds it and sails back past the start."""
+    import numpy as np
+    from sailmujoco.controllers.factories import line_following as factory
+
+    from sailmujoco import suite
+
+    env = suite.load("eleven_metre", "heading_hold", seed=0, wind_from_deg=0.0, gusts=False, wander=False,
+                     time_limit=400.0)
+    controller = factory(env)
+    table = suite.rollout(env, controller)
+    start_y = table["y"].iloc[0]
+    rounded = int(np.argmax(table["y"].to_numpy() > start_y + 200.0))
+    assert rounded > 0  # beyond the square line through the windward mark
+    upwind = table.iloc[:rounded]
+    awa = upwind["awa"].to_numpy()
+    ahead = np.abs(awa) < math.pi / 2
+    tacks = np.sum((np.sign(awa[1:]) != np.sign(awa[:-1])) & ahead[1:] & ahead[:-1])
+    assert tacks >= 2
+    assert (table["y"].iloc[rounded:] < start_y).any()  # back past the start
+    # it beat within the corridor: never more than a few cut-offs (r = 10 m) off the line x = x0
+    assert np.abs(upwind["x"] - table["x"].iloc[0]).max() < 40.0
