@@ -43,7 +43,13 @@ from dataclasses import dataclass
 
 
 def sawtooth(x: float) -> float:
-    """``x`` wrapped to (-pi, pi]: 2 atan(tan(x/2)) without its poles."""
+    """``x`` wrapped to (-pi, pi]: 2 atan(tan(x/2)) without its poles.
+
+    Parameters
+    ----------
+    x : float
+        An angle, rad.
+    """
     wrapped = (x + math.pi) % (2.0 * math.pi) - math.pi
     return math.pi if wrapped == -math.pi else wrapped
 
@@ -117,6 +123,11 @@ def line_following(m, theta: float, psi: float, a, b, q: int,
     return delta_r, delta_s_max, theta_bar, q
 
 
+def _beyond(a, b, m) -> bool:
+    """Whether ``m`` lies beyond the line through ``b`` square to a -> b (Jaulin's test)."""
+    return (b[0] - a[0]) * (m[0] - b[0]) + (b[1] - a[1]) * (m[1] - b[1]) > 0
+
+
 class LineFollower:
     """The law sailing a course mark by mark (the mission layer): each leg is the line from the
     last mark (the start for the first) to the next; a mark counts as passed once the boat is
@@ -127,7 +138,9 @@ class LineFollower:
     marks : sequence of (float, float), optional
         The marks in order (east, north from the world's origin), m. None: a windward-leeward
         course laid on the first step, a mark ``leg`` metres straight upwind of the start, then
-        the start.
+        the start. A course task's ``last_mark`` and ``next_mark`` (in the observation) take
+        their place: the task's rules say when a mark counts, and a boat past a mark it has not
+        reached turns back to it from where it is.
     leg : float
         The windward leg's length without ``marks``, m.
     gains : LineFollowingGains
@@ -154,7 +167,7 @@ class LineFollower:
         seed : int, optional
             Unused (the law is deterministic).
         """
-        self.marks, self.a, self.leg, self.q, self.tacks = self.given, None, 0, 1, 0
+        self.marks, self.a, self.b, self.leg, self.q, self.tacks = self.given, None, None, 0, 1, 0
 
     def __call__(self, timestep):
         """[rudder, sail] for this step.
@@ -173,11 +186,17 @@ class LineFollower:
             if self.marks is None:
                 self.marks = [(m[0] + self.leg_length * math.sin(wind_from),
                                m[1] + self.leg_length * math.cos(wind_from)), m]
-        b = self.marks[self.leg]
-        passed = (b[0] - self.a[0]) * (m[0] - b[0]) + (b[1] - self.a[1]) * (m[1] - b[1]) > 0
-        if passed and self.leg < len(self.marks) - 1:
-            self.a, self.leg = b, self.leg + 1
+        if "next_mark" in observation:  # a course task's legs: its rules say when a mark counts
+            b = (float(observation["next_mark"][0]), float(observation["next_mark"][1]))
+            if b != self.b:
+                self.a, self.b = (float(observation["last_mark"][0]), float(observation["last_mark"][1])), b
+            elif _beyond(self.a, b, m):  # past the mark without reaching it: back to it from here
+                self.a = m
+        else:
             b = self.marks[self.leg]
+            if _beyond(self.a, b, m) and self.leg < len(self.marks) - 1:
+                self.a, self.leg = b, self.leg + 1
+                b = self.marks[self.leg]
         theta = math.pi / 2.0 - float(observation["heading"])
         psi = -math.pi / 2.0 - wind_from
         delta_r, delta_s, _, q = line_following(m, theta, psi, self.a, b, self.q, self.gains)

@@ -46,6 +46,7 @@ from .tasks.world import PaperPhysics, VielPhysics
 # the built-in tasks register on import, in this order (the order of TASKS, SUITE and the gym ids)
 from .tasks import sailing  # noqa: F401
 from .tasks import position  # noqa: F401
+from .tasks import course  # noqa: F401
 # isort: on
 
 __all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "rollout", "task_options"]

@@ -77,6 +77,7 @@ Observations
                                                              incompressible
     desired_heading, desired_course  rad    [-pi, pi]        the task's reference, wrapped
     target_position                  m      [-area, area]    the sailing area
+    last_mark, next_mark             m      [-area, area]    a course's leg (its marks)
     ===============================  =====  ===============  ==========================================
 
     With ``include_true_state=True`` the privileged full state (:mod:`sailmujoco.controllers.base`

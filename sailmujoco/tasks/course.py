@@ -1,0 +1,227 @@
+"""Courses: the events autonomous sailboats compete in, laid relative to the wind and scored by
+their rules.
+
+``upwind_downwind``: the World Robotic Sailing Championship's fleet race as its 2019 rules
+(WRSC 2019, "Notice of race and competition rules" v1.1, github.com/WRSC/rules, main.tex)
+score it: a mark is reached when a point of the track lies within 5 m of it; the time runs from
+the start to the crossing of the finish line; a boat that does not finish is ranked by the marks
+it reached in order. The rules lay the marks on the day ("announced in the morning"); ours is
+the windward-leeward course every regatta sails, a start and finish line across the wind and a
+windward mark ``leg`` metres straight upwind of its middle (100 m by default: the 2018 course's
+legs were 80-132 m, from the organisers' coordinates, github.com/WRSC/coordinates2018), rounded
+``laps`` times with a leeward mark 10 m below the line between rounds.
+
+Observation: the sailing observation (:mod:`sailmujoco.tasks.sailing`) plus ``last_mark`` and
+``next_mark`` (2,) m, world x east, y north: the leg being sailed, from the last mark reached
+(the start for the first leg) to the next one (after the last mark, the finish line's middle).
+Reward terms: ``to_go`` = -min(D, 100 leg) / leg with D the course's distance left along its
+legs (to the next mark, then mark to mark to the finish), 0 once finished: it grows as the boat
+sails the course, never drops at a rounding, and pays nothing for stopping (a stop earns less
+than sailing on, :mod:`sailmujoco.tasks.base`). Metrics: ``marks_reached``, ``finished``
+(1 or 0), ``finish_time`` (s; nan without a finish), ``distance_to_go`` (m, at the end).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from ..forces.wind import WindConfig
+from .base import SailTask, check_number
+from .registry import register_task
+from .sailing import check_wind_speed
+
+FAR = 100.0  # legs: the distance term's floor is -FAR
+MARK_RADIUS = 5.0  # m, WRSC 2019: a mark is reached within 5 m
+
+
+def lay(layout, wind_from: float, origin=(0.0, 0.0)) -> np.ndarray:
+    """A layout drawn in the wind's frame, laid in the world for a wind from ``wind_from``.
+
+    Parameters
+    ----------
+    layout : array_like, shape (n, 2)
+        Points as (across, up): metres to the right of the wind's eye and towards it, from the
+        layout's origin (a sailor facing the wind has "up" ahead and "across" to starboard).
+    wind_from : float
+        The compass bearing the wind comes from, rad.
+    origin : array_like, shape (2,)
+        Where the layout's origin lies in the world (east, north), m.
+
+    Returns
+    -------
+    numpy.ndarray, shape (n, 2)
+        The points in the world (east, north), m.
+    """
+    points = np.asarray(layout, dtype=float).reshape(-1, 2)
+    up = np.array([math.sin(wind_from), math.cos(wind_from)])  # towards the wind's eye
+    across = np.array([math.cos(wind_from), -math.sin(wind_from)])  # to its right
+    return np.asarray(origin, dtype=float) + points[:, :1] * across + points[:, 1:] * up
+
+
+def crossed(p, q, a, b) -> bool:
+    """Whether the step from ``p`` to ``q`` crosses the segment from ``a`` to ``b``.
+
+    Parameters
+    ----------
+    p, q, a, b : array_like, shape (2,)
+        Points (east, north), m.
+    """
+    def side(u, v, w):
+        return (v[0] - u[0]) * (w[1] - u[1]) - (v[1] - u[1]) * (w[0] - u[0])
+
+    return side(a, b, p) * side(a, b, q) < 0 and side(p, q, a) * side(p, q, b) < 0
+
+
+def score_race(t, xy, marks, finish, radius: float = MARK_RADIUS) -> dict:
+    """A track scored as WRSC 2019 scores its fleet race.
+
+    Parameters
+    ----------
+    t : array_like, shape (n,)
+        The track's times, s (the start at ``t[0]``).
+    xy : array_like, shape (n, 2)
+        Its points (east, north), m.
+    marks : array_like, shape (k, 2)
+        The marks in the order they are to be reached.
+    finish : array_like, shape (2, 2)
+        The finish line's ends.
+    radius : float
+        A mark is reached when a point lies within ``radius`` of it, m.
+
+    Returns
+    -------
+    dict
+        ``marks_reached`` (in order), ``finished`` (1 or 0: the line crossed after the last
+        mark), ``finish_time`` (s from the start, nan without a finish).
+    """
+    t, xy, marks = np.asarray(t, float), np.asarray(xy, float), np.asarray(marks, float)
+    reached, finish_time = 0, math.nan
+    for i in range(len(t)):
+        if reached < len(marks) and math.hypot(*(xy[i] - marks[reached])) <= radius:
+            reached += 1
+        elif reached == len(marks) and i > 0 and crossed(xy[i - 1], xy[i], *finish):
+            finish_time = float(t[i] - t[0])
+            break
+    return {"marks_reached": reached, "finished": int(not math.isnan(finish_time)),
+            "finish_time": finish_time}
+
+
+@register_task
+class UpwindDownwind(SailTask):
+    """A windward-leeward race: from the start line, round the windward mark ``laps`` times,
+    finish across the line (the module docstring gives the rules and the sources).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    wind_speed : float
+        Mean true wind at 10 m, m/s, in [0, 100].
+    wind_from_deg : float
+        Compass bearing the wind comes from, degrees; the course is laid to it.
+    gusts, wander : bool
+        Gusts in speed, slow wander of the direction.
+    leg : float
+        The windward mark's distance upwind of the start line's middle, m, > 0.
+    laps : int
+        Times the windward mark is rounded, 1-5 (a leeward mark 10 m below the line between).
+    line : float
+        The start and finish line's length, m, > 0.
+    radius : float
+        A mark is reached within this distance, m (WRSC 2019: 5).
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
+    """
+
+    name = "upwind_downwind"
+    duration = 600.0
+
+    def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
+                 wander: bool = True, leg: float = 100.0, laps: int = 1, line: float = 20.0,
+                 radius: float = MARK_RADIUS, **kwargs):
+        super().__init__(seed, **kwargs)
+        self.wind_speed = check_wind_speed(wind_speed)
+        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
+        self.gusts, self.wander = gusts, wander
+        self.leg = check_number("leg", leg, 0.0, low_open=True, unit="m")
+        if laps not in range(1, 6):
+            raise ValueError(f"upwind_downwind: laps must be an integer 1-5, got {laps!r}")
+        self.laps = int(laps)
+        self.line = check_number("line", line, 0.0, low_open=True, unit="m")
+        self.radius = check_number("radius", radius, 0.0, low_open=True, unit="m")
+        windward, leeward = (0.0, self.leg), (0.0, -10.0)
+        self.marks = lay([windward, leeward] * (self.laps - 1) + [windward], self.wind_from)
+        self.finish = lay([(-self.line / 2, 0.0), (self.line / 2, 0.0)], self.wind_from)
+        self.reached, self.finished, self._last_position = 0, False, None  # the spec asks before a reset
+
+    def wind(self):
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
+                          wander=self.wander, seed=0 if self.seed is None else self.seed)
+
+    def initial_heading(self):
+        return self.wind_from + math.pi / 2  # a beam reach on starboard tack across the line
+
+    def initial_speed(self):
+        return 1.0
+
+    def initialize_episode(self, physics):
+        super().initialize_episode(physics)
+        self.reached, self.finished, self._last_position = 0, False, None
+
+    def _points(self) -> np.ndarray:
+        """The course's points in order: the start, the marks, the finish line's middle."""
+        return np.vstack([np.zeros((1, 2)), self.marks, self.finish.mean(axis=0, keepdims=True)])
+
+    def advance(self, position) -> None:
+        """Count the mark reached, or the finish crossed, with the boat at ``position``.
+
+        Parameters
+        ----------
+        position : array_like, shape (2,)
+            The boat (east, north), m.
+        """
+        position = np.asarray(position, dtype=float)
+        left = self.reached < len(self.marks)
+        if left and math.hypot(*(position - self.marks[self.reached])) <= self.radius:
+            self.reached += 1
+        elif (self.reached == len(self.marks) and self._last_position is not None
+              and crossed(self._last_position, position, *self.finish)):
+            self.finished = True
+        self._last_position = position
+
+    def references(self, physics):
+        position = np.asarray(physics.truth().position, dtype=float)
+        if self._last_position is None or not np.array_equal(position, self._last_position):
+            self.advance(position)
+        points = self._points()
+        return {"last_mark": points[self.reached].copy(), "next_mark": points[self.reached + 1].copy()}
+
+    def distance_to_go(self, position) -> float:
+        """The course's distance left along its legs from ``position``, m (0 once finished).
+
+        Parameters
+        ----------
+        position : array_like, shape (2,)
+            The boat (east, north), m.
+        """
+        if self.finished:
+            return 0.0
+        points = self._points()[self.reached + 1:]
+        legs = np.sum(np.hypot(*np.diff(points, axis=0).T)) if len(points) > 1 else 0.0
+        return float(math.hypot(*(np.asarray(position, float) - points[0])) + legs)
+
+    def reward_terms(self, physics, observation):
+        to_go = self.distance_to_go(physics.truth().position)
+        return {"to_go": -min(to_go, FAR * self.leg) / self.leg}
+
+    def reward_floor(self, physics):
+        return -FAR
+
+    def summarise(self, records):
+        t = np.array([r["t"] for r in records])
+        xy = np.array([r["position"] for r in records])
+        out = score_race(t, xy, self.marks, self.finish, self.radius)
+        out["distance_to_go"] = self.distance_to_go(xy[-1]) if not out["finished"] else 0.0
+        return out

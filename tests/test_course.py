@@ -1,0 +1,90 @@
+"""Courses: marks laid to the wind as the layout rotated by hand, a race scored as WRSC 2019's
+rules score it (hand-scored synthetic tracks), and the line follower sailing the course."""
+
+import math
+
+import numpy as np
+import pytest
+
+from sailmujoco import suite
+from sailmujoco.tasks.course import crossed, lay, score_race
+
+S = math.sqrt(0.5)
+
+
+@pytest.mark.parametrize("wind_from_deg, up, across", [
+    (0.0, (0.0, 100.0), (10.0, 0.0)),  # a northerly: up is north, starboard (facing it) east
+    (90.0, (100.0, 0.0), (0.0, -10.0)),  # an easterly: up is east, starboard south
+    (225.0, (-100 * S, -100 * S), (-10 * S, 10 * S)),  # a south-westerly: up is SW, starboard NW
+])
+def test_a_layout_is_laid_to_the_wind_as_rotated_by_hand(wind_from_deg, up, across):
+    world = lay([(0.0, 100.0), (10.0, 0.0)], math.radians(wind_from_deg), origin=(0.0, 0.0))
+    np.testing.assert_allclose(world, [up, across], atol=1e-12)
+    np.testing.assert_allclose(lay([(0.0, 0.0)], 1.0, origin=(3.0, -4.0)), [(3.0, -4.0)])
+
+
+def test_the_windward_mark_lies_upwind_of_the_line_for_any_wind():
+    env = suite.load("eleven_metre", "upwind_downwind", seed=0, wind_from_deg=30.0, leg=100.0, laps=2)
+    task = env.task
+    windward = (100 * math.sin(math.radians(30)), 100 * math.cos(math.radians(30)))
+    leeward = (-10 * math.sin(math.radians(30)), -10 * math.cos(math.radians(30)))
+    np.testing.assert_allclose(task.marks, [windward, leeward, windward], atol=1e-12)
+    # the 20 m line across the wind: its ends 10 m either side of the start, square to the wind
+    c, s = 10 * math.cos(math.radians(30)), 10 * math.sin(math.radians(30))
+    np.testing.assert_allclose(task.finish, [(-c, s), (c, -s)], atol=1e-12)
+
+
+MARKS = [(0.0, 100.0)]
+LINE = [(-10.0, 0.0), (10.0, 0.0)]
+
+
+def track(*points):
+    """A track through ``points``, one a second."""
+    return np.arange(len(points), dtype=float), np.array(points, dtype=float)
+
+
+def test_a_mark_reached_within_5_m_then_the_line_crossed_finishes_at_the_crossing():
+    t, xy = track((0, 1), (3, 50), (4.9, 100), (3, 50), (1, 1), (1, -1), (1, -5))
+    assert score_race(t, xy, MARKS, LINE) == {"marks_reached": 1, "finished": 1, "finish_time": 5.0}
+
+
+def test_a_mark_passed_at_5_1_m_is_not_reached_and_crossing_the_line_does_not_finish():
+    t, xy = track((0, 1), (5.1, 100), (1, 1), (1, -1))
+    result = score_race(t, xy, MARKS, LINE)
+    assert result["marks_reached"] == 0 and result["finished"] == 0 and math.isnan(result["finish_time"])
+
+
+def test_a_line_crossed_outside_its_ends_is_no_finish():
+    t, xy = track((0, 1), (0, 100), (15, 1), (15, -1))
+    result = score_race(t, xy, MARKS, LINE)
+    assert result["marks_reached"] == 1 and result["finished"] == 0 and math.isnan(result["finish_time"])
+
+
+def test_crossed_needs_the_step_to_cut_the_segment():
+    assert crossed((0, 1), (0, -1), (-1, 0), (1, 0))
+    assert not crossed((2, 1), (2, -1), (-1, 0), (1, 0))  # beyond the segment's end
+    assert not crossed((0, 1), (0, 0.5), (-1, 0), (1, 0))  # stops short
+
+
+def test_the_distance_to_go_rises_not_falls_at_a_rounding():
+    """4 m below the windward mark, on the way up: 4 + 100 m to go; reached, 96 m (to the line)."""
+    env = suite.load("eleven_metre", "upwind_downwind", seed=0, wind_from_deg=0.0)
+    env.reset()
+    task = env.task
+    assert task.distance_to_go((0.0, 96.0)) == pytest.approx(104.0)
+    task.advance((0.0, 96.0))
+    assert task.reached == 1 and task.distance_to_go((0.0, 96.0)) == pytest.approx(96.0)
+
+
+@pytest.mark.parametrize("boat", ["eleven_metre", "viel_boat"])
+def test_the_line_follower_sails_the_course_with_tacks_in_calm_water(boat):
+    from sailmujoco.controllers.factories import line_following
+
+    env = suite.load(boat, "upwind_downwind", seed=0, gusts=False, wander=False)
+    table = suite.rollout(env, line_following(env))
+    metrics = env.task.metrics()
+    assert metrics["marks_reached"] == 1 and metrics["finished"] == 1
+    upwind = table[table["t"] <= table["t"][np.argmax(table["y"].to_numpy())]]
+    awa = upwind["awa"].to_numpy()
+    ahead = np.abs(awa) < math.pi / 2
+    assert np.sum((np.sign(awa[1:]) != np.sign(awa[:-1])) & ahead[1:] & ahead[:-1]) >= 2
