@@ -88,3 +88,13 @@ def test_the_line_follower_sails_the_course_with_tacks_in_calm_water(boat):
     awa = upwind["awa"].to_numpy()
     ahead = np.abs(awa) < math.pi / 2
     assert np.sum((np.sign(awa[1:]) != np.sign(awa[:-1])) & ahead[1:] & ahead[:-1]) >= 2
+
+
+def test_videos_and_the_map_get_the_courses_marks_and_line():
+    from sailmujoco.video.recording import scene_of
+
+    env = suite.load("eleven_metre", "upwind_downwind", seed=0, wind_from_deg=90.0, leg=80.0, laps=2)
+    _, _, _, target = scene_of("eleven_metre", env, {})
+    np.testing.assert_allclose(target["marks"], [(80.0, 0.0), (-10.0, 0.0), (80.0, 0.0)], atol=1e-12)
+    np.testing.assert_allclose(target["line"], [(0.0, 10.0), (0.0, -10.0)], atol=1e-12)  # across the wind
+    assert target["radii"] == (5.0, 5.0) and target["position"] == target["marks"][0]

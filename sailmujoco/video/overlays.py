@@ -121,7 +121,8 @@ def add_target(scene, target: dict, h: float) -> None:
     scene : mujoco.MjvScene
         The scene drawn.
     target : dict
-        ``{"position": (x, y), "radii": (d_T, d_M)}`` (m).
+        ``{"position": (x, y), "radii": (d_T, d_M)}`` (m); a course adds ``"marks"`` (its marks,
+        the first at ``position``, each ringed at d_T) and ``"line"`` (its line's two ends).
     h : float
         Masthead height (m): the scale of the buoy.
     """
@@ -138,6 +139,19 @@ def add_target(scene, target: dict, h: float) -> None:
     buoy = 0.04 * h + 0.15
     add_geom(scene, mujoco.mjtGeom.mjGEOM_SPHERE, (buoy, 0, 0), (x, y, 0.3 * buoy), np.eye(3),
              COLOURS["target"])
+    for mx, my in target.get("marks", [])[1:]:  # a course's other marks
+        add_ring(scene, mx, my, d_target, 0.004 * d_target + 0.03, (1.0, 1.0, 0.6, 1.0))
+        add_geom(scene, mujoco.mjtGeom.mjGEOM_SPHERE, (buoy, 0, 0), (mx, my, 0.3 * buoy), np.eye(3),
+                 COLOURS["target"])
+    if target.get("line"):  # a start and finish line: a buoy at each end, a rope between
+        ends = [np.array([ex, ey, 0.06]) for ex, ey in target["line"]]
+        for end in ends:
+            add_geom(scene, mujoco.mjtGeom.mjGEOM_SPHERE, (0.7 * buoy, 0, 0), end + (0, 0, 0.2 * buoy),
+                     np.eye(3), COLOURS["target"])
+        geom = add_geom(scene, mujoco.mjtGeom.mjGEOM_CAPSULE, np.zeros(3), np.zeros(3), np.eye(3),
+                        (1.0, 1.0, 0.6, 1.0))
+        if geom is not None:
+            mujoco.mjv_connector(geom, mujoco.mjtGeom.mjGEOM_CAPSULE, 0.02 * h + 0.02, *ends)
 
 
 def decorate(scene, snap, *, masthead, sites: dict, h: float, force_scale: float, forces: bool,

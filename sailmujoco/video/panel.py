@@ -150,9 +150,12 @@ def text_lines(snap, references: dict, target: dict | None = None) -> list[str]:
         aim = f"heading {compass(heading)}"
     lines = [f"t {snap.time:.2f} s", aim]
     goal = references.get("target_position", None if target is None else target["position"])
+    what = "target"
+    if "next_mark" in references:  # a course: the leg's end
+        goal, what = references["next_mark"], "next mark"
     if goal is not None:
         offset = np.asarray(goal, float)[:2] - snap.position[:2]
-        lines.append(f"target {np.hypot(*offset):.1f} m at {compass(math.atan2(offset[0], offset[1]))}")
+        lines.append(f"{what} {np.hypot(*offset):.1f} m at {compass(math.atan2(offset[0], offset[1]))}")
     speed = float(np.hypot(snap.wind[0], snap.wind[1]))
     lines += [f"speed {snap.speed:.2f} m/s ({snap.speed / KNOT:.1f} kn)",
               f"heel {math.degrees(snap.heel):+.1f}°",
@@ -276,6 +279,12 @@ def _map_target(draw, target: dict, to_px, scale: float, position, line: int) ->
     _dashed(draw, to_px(position), (cx, cy), DESIRED, line, 3 * line)
     r = 2.5 * line
     draw.ellipse((cx - r, cy - r, cx + r, cy + r), fill=(255, 115, 0))
+    for mark in target.get("marks", [])[1:]:  # a course's other marks and its line
+        mx, my = to_px(mark)
+        draw.ellipse((mx - r, my - r, mx + r, my + r), fill=(255, 115, 0))
+    if target.get("line"):
+        (ax, ay), (bx, by) = (to_px(end) for end in target["line"])
+        draw.line((ax, ay, bx, by), fill=DESIRED, width=line)
 
 
 def _map_boat(draw, view: MapView, to_px, size: int, line: int) -> None:

@@ -139,6 +139,10 @@ def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | N
     if getattr(env.task, "target", None) is not None:
         target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
                   "radii": (env.task.d_target, env.task.d_prearrival)}
+    elif getattr(env.task, "marks", None) is not None:  # a course: its marks and its line
+        marks = [tuple(map(float, mark)) for mark in env.task.marks]
+        target = {"position": marks[0], "start": (0.0, 0.0), "radii": (env.task.radius, env.task.radius),
+                  "marks": marks, "line": [tuple(map(float, end)) for end in env.task.finish]}
     return mujoco_world, params, sail_mode, target
 
 
