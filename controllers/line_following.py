@@ -140,7 +140,7 @@ class LineFollower:
         course laid on the first step, a mark ``leg`` metres straight upwind of the start, then
         the start. A course task's ``last_mark`` and ``next_mark`` (in the observation) take
         their place: the task's rules say when a mark counts, and a boat past a mark it has not
-        reached turns back to it from where it is.
+        reached sails the leg turned about the mark (from its mirror image) back to it.
     leg : float
         The windward leg's length without ``marks``, m.
     gains : LineFollowingGains
@@ -190,8 +190,8 @@ class LineFollower:
             b = (float(observation["next_mark"][0]), float(observation["next_mark"][1]))
             if b != self.b:
                 self.a, self.b = (float(observation["last_mark"][0]), float(observation["last_mark"][1])), b
-            elif _beyond(self.a, b, m):  # past the mark without reaching it: back to it from here
-                self.a = m
+            elif _beyond(self.a, b, m):  # past the mark without reaching it: the leg turned about it
+                self.a = (2.0 * b[0] - self.a[0], 2.0 * b[1] - self.a[1])
         else:
             b = self.marks[self.leg]
             if _beyond(self.a, b, m) and self.leg < len(self.marks) - 1:

@@ -98,3 +98,26 @@ def test_videos_and_the_map_get_the_courses_marks_and_line():
     np.testing.assert_allclose(target["marks"], [(80.0, 0.0), (-10.0, 0.0), (80.0, 0.0)], atol=1e-12)
     np.testing.assert_allclose(target["line"], [(0.0, 10.0), (0.0, -10.0)], atol=1e-12)  # across the wind
     assert target["radii"] == (5.0, 5.0) and target["position"] == target["marks"][0]
+
+
+def test_precision_navigations_buoys_lie_downwind_of_the_gate_across_the_wind():
+    env = suite.load("eleven_metre", "precision_navigation", seed=0, wind_from_deg=90.0, distance=50.0,
+                     gap=20.0, line=10.0)
+    # an easterly: downwind is west, across (to starboard, facing east) is south
+    np.testing.assert_allclose(env.task.marks, [(-50.0, 10.0), (-50.0, -10.0)], atol=1e-12)
+    np.testing.assert_allclose(env.task.finish, [(0.0, 5.0), (0.0, -5.0)], atol=1e-12)
+
+
+@pytest.mark.parametrize("points, expected", [
+    ([(0, -1), (-10, -49), (10, -49), (1, -1), (1, 1)], 10),  # both buoys, back through the gate
+    ([(0, -1), (-10, -49), (10, -49), (30, -1), (30, 1)], 8),  # both, back outside the gate
+    ([(0, -1), (-10, -49), (10, -40), (1, -1), (1, 1)], 2),  # the second buoy missed by 9 m
+    ([(0, -1), (0, -30), (1, -1), (1, 1)], 0),  # neither
+])
+def test_precision_navigation_scores_as_sailbots_sheet(points, expected):
+    """A northerly: buoys at (-10, -50) and (10, -50), the gate from (-5, 0) to (5, 0); one
+    point a second along the hand-drawn track (a buoy counts within 5 m)."""
+    env = suite.load("eleven_metre", "precision_navigation", seed=0, wind_from_deg=0.0)
+    t = np.arange(len(points), dtype=float)
+    records = [{"t": ti, "position": np.array(p, dtype=float)} for ti, p in zip(t, points, strict=True)]
+    assert env.task.summarise(records)["points"] == expected

@@ -225,3 +225,59 @@ class UpwindDownwind(SailTask):
         out = score_race(t, xy, self.marks, self.finish, self.radius)
         out["distance_to_go"] = self.distance_to_go(xy[-1]) if not out["finished"] else 0.0
         return out
+
+
+@register_task
+class PrecisionNavigation(UpwindDownwind):
+    """SailBot's precision navigation: from between the two start buoys, round two buoys, and
+    come back between the start buoys.
+
+    SailBot 2022's event sheet ("SailBot-2022-Events.pdf", sailbot.org; quoted from a team's
+    copy, github.com/PittSailbot/Sailbot, events/precisionNavigation.py) scores it out of 10: 2
+    points for each of the first two buoys rounded, 6 more for finishing between the start
+    buoys, or 4 for crossing the line outside them. Its diagram, which places the buoys, could
+    not be read here; ours lays the two buoys ``distance`` m downwind of the gate and ``gap`` m
+    apart across the wind (the teams' reading: the buoys lie downwind, the way back is the hard
+    part), and counts a buoy rounded when the track passes within ``radius`` of it (WRSC's 5 m).
+    The gate is ``line`` m wide.
+
+    Metrics: those of :class:`UpwindDownwind` and ``points`` (0-10, the sheet's). Parameters as
+    :class:`UpwindDownwind`'s, without ``leg`` and ``laps``, and:
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    distance : float
+        The buoys' distance downwind of the gate, m, > 0.
+    gap : float
+        Their distance apart, across the wind, m, >= 0.
+    line : float
+        The gate's width, m, > 0.
+    **kwargs
+        Passed to :class:`UpwindDownwind`: ``wind_speed``, ``wind_from_deg``, ``gusts``,
+        ``wander``, ``radius``, ``heading_jitter_deg``.
+    """
+
+    name = "precision_navigation"
+    duration = 600.0
+
+    def __init__(self, seed=None, distance: float = 50.0, gap: float = 20.0, line: float = 10.0, **kwargs):
+        super().__init__(seed, leg=distance, line=line, **kwargs)
+        self.gap = check_number("gap", gap, 0.0, unit="m")
+        self.marks = lay([(-self.gap / 2, -self.leg), (self.gap / 2, -self.leg)], self.wind_from)
+
+    def summarise(self, records):
+        out = super().summarise(records)
+        points = 2 * out["marks_reached"]
+        if out["finished"]:
+            points += 6
+        elif out["marks_reached"] == len(self.marks):
+            xy = np.array([r["position"] for r in records])
+            centre, half = self.finish.mean(axis=0), self.finish - self.finish.mean(axis=0)
+            wide = centre + 1e3 * half  # the gate's line carried far out on both sides
+            first = int(np.argmax([math.hypot(*(p - self.marks[-1])) <= self.radius for p in xy]))
+            if any(crossed(xy[i - 1], xy[i], *wide) for i in range(first + 1, len(xy))):
+                points += 4
+        out["points"] = points
+        return out
