@@ -245,3 +245,21 @@ def file_argument(option: str, text: str, example: str) -> None:
     except OSError as err:  # no permission, a read-only or virtual file system
         raise ValueError(f"{option} {text!r}: cannot make the folder {str(path.parent)!r}: "
                          f"{err.strerror}") from None
+
+
+class Terminated(Exception):
+    """SIGTERM arrived: a long-running command (``sitl``, ``ros2``) ends as on a timeout, its
+    tables and logs written."""
+
+
+def raise_terminated(signum, frame):
+    """A SIGTERM handler that raises :class:`Terminated` where the command is.
+
+    Parameters
+    ----------
+    signum : int
+        The signal.
+    frame : frame
+        Where it arrived.
+    """
+    raise Terminated

@@ -20,7 +20,17 @@ import sys
 
 import numpy as np
 
-from .arguments import INTERRUPTED, SEED, HelpFormatter, check_settings, file_argument, number, setting
+from .arguments import (
+    INTERRUPTED,
+    SEED,
+    HelpFormatter,
+    Terminated,
+    check_settings,
+    file_argument,
+    number,
+    raise_terminated,
+    setting,
+)
 from .waves import add_waves_argument, waves_from_arguments
 
 EXAMPLES = """examples:
@@ -83,14 +93,6 @@ def _origin(text: str):
     return Origin(latitude=latitude, longitude=longitude)
 
 
-class _Terminated(Exception):
-    """SIGTERM arrived: the run ends, its log closed."""
-
-
-def _terminated(signum, frame):
-    raise _Terminated
-
-
 def run_cli(args) -> int:
     """Run ``sailmujoco ros2``.
 
@@ -129,7 +131,7 @@ def run_cli(args) -> int:
     warm.reset()
     warm.step(np.zeros(warm.action_spec().shape))
     log = bridge = None
-    previous = signal.signal(signal.SIGTERM, _terminated)
+    previous = signal.signal(signal.SIGTERM, raise_terminated)
     try:
         log = McapLog(env, args.record, origin=origin) if args.record else None
         bridge = Bridge(env, origin=origin, names=names, rate=args.rate, timeout=args.timeout, record=log,
@@ -143,7 +145,7 @@ def run_cli(args) -> int:
     except BridgeError as err:
         print(f"sailmujoco ros2: {err}", file=sys.stderr)
         return 2
-    except (_Terminated, KeyboardInterrupt) as stop:
+    except (Terminated, KeyboardInterrupt) as stop:
         if bridge is None:
             return INTERRUPTED
         counters = bridge.counters

@@ -20,7 +20,7 @@ import signal
 import sys
 from pathlib import Path
 
-from .arguments import SEED, HelpFormatter, number, out_folder
+from .arguments import SEED, HelpFormatter, Terminated, file_argument, number, out_folder, raise_terminated
 from .waves import add_waves_argument
 
 EXAMPLES = """examples:
@@ -122,14 +122,6 @@ def film_problem(path) -> str | None:
     return None
 
 
-class Terminated(Exception):
-    """SIGTERM arrived: the run ends, its trajectory written."""
-
-
-def _terminated(signum, frame):
-    raise Terminated
-
-
 def run_cli(args) -> int:
     """Run ``sailmujoco sitl``.
 
@@ -165,7 +157,8 @@ def run_cli(args) -> int:
                           log=lambda line: print(line, flush=True), mcap=mcap)
     print(f"sitl: {args.boat} ({backend.dt * 1e3:g} ms a frame) waiting for ArduPilot's servo packets on "
           f"UDP 127.0.0.1:{args.port}", flush=True)
-    previous = signal.signal(signal.SIGTERM, _terminated)  # SIGTERM or Ctrl-C: the run ends as on a timeout
+    # SIGTERM or Ctrl-C: the run ends as on a timeout
+    previous = signal.signal(signal.SIGTERM, raise_terminated)
     try:
         counters = backend.serve(port=args.port, timeout=args.timeout, seconds=args.seconds)
     except SitlError as err:
@@ -199,8 +192,6 @@ def _mcap_log(path):
     if not path:
         return None
     from ..ros2.record import McapLog, RosbagsMissing, check_log_path
-    from .arguments import file_argument
-
     file_argument("--record", path, "run.mcap")
     check_log_path(path, "--record")
     try:

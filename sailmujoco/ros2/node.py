@@ -168,7 +168,6 @@ class Bridge:
         self._low, self._high = np.asarray(spec.minimum, float), np.asarray(spec.maximum, float)
         self.command = np.zeros(len(COMMANDS))
         self._fresh: set = set()
-        self._started = False
 
     def run(self) -> Counters:
         """Sail the episode; what it did (also :attr:`counters` if it is interrupted).
