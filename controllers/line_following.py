@@ -41,6 +41,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+import numpy as np
+
+STATION_WINDOW = 300.0  # s: station keeping's five minutes (sailmujoco.tasks.course)
+
 
 def sawtooth(x: float) -> float:
     """``x`` wrapped to (-pi, pi]: 2 atan(tan(x/2)) without its poles.
@@ -169,6 +173,34 @@ class LineFollower:
         """
         self.marks, self.a, self.b, self.leg, self.q, self.tacks = self.given, None, None, 0, 1, 0
 
+    def _station(self, observation, m, wind_from: float):
+        """Station keeping's leg: from the start to the box's centre until the five minutes
+        start; then to and fro across the wind through the centre between points ``r`` either
+        side of it (a beam reach each way: the boat never stops, as a sailboat cannot); once
+        they are over, out of the box 4 ``r`` straight downwind of its centre. Sets ``a``; the
+        leg's end."""
+        c = (float(observation["box_center"][0]), float(observation["box_center"][1]))
+        left = float(np.asarray(observation["box_time_left"]).reshape(-1)[0])
+        r = self.gains.r
+        across = (math.cos(wind_from), -math.sin(wind_from))
+        if left <= 0.0:
+            b = (c[0] - 4 * r * math.sin(wind_from), c[1] - 4 * r * math.cos(wind_from))
+            if self.b != b:
+                self.a = m
+        elif left < STATION_WINDOW:
+            ends = [(c[0] + r * across[0], c[1] + r * across[1]),
+                    (c[0] - r * across[0], c[1] - r * across[1])]
+            if self.b not in ends:
+                self.a, b = ends[1], ends[0]
+            else:
+                b = self.b
+                if _beyond(self.a, b, m):
+                    self.a, b = b, ends[1] if b == ends[0] else ends[0]
+        else:
+            b = c
+        self.b = b
+        return b
+
     def __call__(self, timestep):
         """[rudder, sail] for this step.
 
@@ -186,7 +218,9 @@ class LineFollower:
             if self.marks is None:
                 self.marks = [(m[0] + self.leg_length * math.sin(wind_from),
                                m[1] + self.leg_length * math.cos(wind_from)), m]
-        if "next_mark" in observation:  # a course task's legs: its rules say when a mark counts
+        if "box_center" in observation:  # station keeping: to the box, across it and back, out
+            b = self._station(observation, m, wind_from)
+        elif "next_mark" in observation:  # a course task's legs: its rules say when a mark counts
             b = (float(observation["next_mark"][0]), float(observation["next_mark"][1]))
             if b != self.b:
                 self.a, self.b = (float(observation["last_mark"][0]), float(observation["last_mark"][1])), b

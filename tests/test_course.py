@@ -121,3 +121,40 @@ def test_precision_navigation_scores_as_sailbots_sheet(points, expected):
     t = np.arange(len(points), dtype=float)
     records = [{"t": ti, "position": np.array(p, dtype=float)} for ti, p in zip(t, points, strict=True)]
     assert env.task.summarise(records)["points"] == expected
+
+
+def station_track(inside_spans, end=600.0):
+    """One point a second, inside the northerly's box (centre (0, 60), half 20) during the spans."""
+    t = np.arange(0.0, end + 1.0)
+    y = np.where(np.any([(t >= a) & (t < b) for a, b in inside_spans], axis=0), 60.0, 0.0)
+    return t, np.stack([np.zeros_like(t), y], axis=1)
+
+
+@pytest.mark.parametrize("spans, expected", [
+    ([(10, 315)], {"entered_at": 10.0, "time_in_box": 300.0, "time_in_box_late": 0.0, "points": 10.0}),
+    ([(10, 410)], {"entered_at": 10.0, "time_in_box": 300.0, "time_in_box_late": 70.0,
+                   "points": 10.0 - 2.0 * 70.0 / 60.0}),  # out 100 s late: 70 s past the 30 s grace
+    ([(10, 130), (190, 310)], {"entered_at": 10.0, "time_in_box": 240.0, "time_in_box_late": 0.0,
+                               "points": 8.0}),  # out for a minute in the middle
+    ([(10, 40)], {"entered_at": 10.0, "time_in_box": 30.0, "time_in_box_late": 0.0, "points": 1.0}),
+])
+def test_station_keeping_scores_as_sailbots_sheet(spans, expected):
+    from sailmujoco.tasks.course import score_station
+
+    t, xy = station_track(spans)
+    result = score_station(t, xy, (0.0, 60.0), 20.0, 0.0)
+    assert result == pytest.approx(expected)
+
+
+def test_a_boat_that_never_enters_the_box_scores_nothing_and_the_box_turns_with_the_wind():
+    from sailmujoco.tasks.course import score_station
+
+    t, xy = station_track([(10, 20)])
+    xy[:, 0] = 21.0  # a metre beside the box, all along
+    assert score_station(t, xy, (0.0, 60.0), 20.0, 0.0)["points"] == 0.0
+    env = suite.load("eleven_metre", "station_keeping", seed=0, wind_from_deg=90.0, side=40.0, distance=60.0)
+    np.testing.assert_allclose(env.task.center, (60.0, 0.0), atol=1e-12)  # 60 m east, into an easterly
+    # an easterly's box: 15 m across (south) and 15 m up (east) is inside; 25 m up is not
+    inside = score_station([0.0, 1.0], [(75.0, -15.0), (75.0, -15.0)], env.task.center, 20.0, math.pi / 2)
+    outside = score_station([0.0, 1.0], [(85.0, 0.0), (85.0, 0.0)], env.task.center, 20.0, math.pi / 2)
+    assert inside["entered_at"] == 0.0 and math.isnan(outside["entered_at"])

@@ -78,6 +78,8 @@ Observations
     desired_heading, desired_course  rad    [-pi, pi]        the task's reference, wrapped
     target_position                  m      [-area, area]    the sailing area
     last_mark, next_mark             m      [-area, area]    a course's leg (its marks)
+    box_center                       m      [-area, area]    station keeping's box
+    box_time_left                    s      [-time, time]    of its five minutes (negative after)
     ===============================  =====  ===============  ==========================================
 
     With ``include_true_state=True`` the privileged full state (:mod:`sailmujoco.controllers.base`

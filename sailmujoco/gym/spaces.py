@@ -45,6 +45,8 @@ BOUNDS = {
     "target_position": ("-area", "area"),
     "last_mark": ("-area", "area"),
     "next_mark": ("-area", "area"),
+    "box_center": ("-area", "area"),
+    "box_time_left": ("-time", "time"),
     "speed_through_water": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED),  # instruments: a log's reading
     "true_wind_estimate": (-MAX_AIR_SPEED, MAX_AIR_SPEED),  # instruments: speed m/s, direction rad
     **{f"true_state.{key}": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED) for key in ("u", "v", "w", "u_r", "v_r")},
@@ -79,7 +81,7 @@ def bounds(area: float, time: float, length: float, wrenches=()) -> dict:
     wrenches : iterable of str
         The true state's ``<term>_wrench`` keys.
     """
-    fill = {"area": area, "-area": -area, "time": time}
+    fill = {"area": area, "-area": -area, "time": time, "-time": -time}
     limits = {key: (fill.get(low, low), fill.get(high, high)) for key, (low, high) in BOUNDS.items()}
     high = wrench_bound(length)
     limits.update({f"true_state.{key}": (-high, high) for key in wrenches})
@@ -188,7 +190,7 @@ def outside(measured: dict, limits: dict) -> str | None:
         if key in WRAPPED:
             value = wrap_angle(value)
         if not np.all((value >= low) & (value <= high)):  # NaN is outside too
-            if top in ("position", "target_position", "last_mark", "next_mark"):
+            if top in ("position", "target_position", "last_mark", "next_mark", "box_center"):
                 return f"left the sailing area (|x| or |y| > {high:g} m)"
             low, high = (np.array2string(np.asarray(b), precision=3) if np.ndim(b) else f"{b:g}"
                          for b in (low, high))
