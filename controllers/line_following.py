@@ -43,7 +43,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-STATION_WINDOW = 300.0  # s: station keeping's five minutes (sailmujoco.tasks.course)
+STATION_WINDOW = 300.0  # s: station keeping's five minutes (sailmujoco.tasks.station)
 
 
 def sawtooth(x: float) -> float:

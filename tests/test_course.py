@@ -139,7 +139,7 @@ def station_track(inside_spans, end=600.0):
     ([(10, 40)], {"entered_at": 10.0, "time_in_box": 30.0, "time_in_box_late": 0.0, "points": 1.0}),
 ])
 def test_station_keeping_scores_as_sailbots_sheet(spans, expected):
-    from sailmujoco.tasks.course import score_station
+    from sailmujoco.tasks.station import score_station
 
     t, xy = station_track(spans)
     result = score_station(t, xy, (0.0, 60.0), 20.0, 0.0)
@@ -147,7 +147,7 @@ def test_station_keeping_scores_as_sailbots_sheet(spans, expected):
 
 
 def test_a_boat_that_never_enters_the_box_scores_nothing_and_the_box_turns_with_the_wind():
-    from sailmujoco.tasks.course import score_station
+    from sailmujoco.tasks.station import score_station
 
     t, xy = station_track([(10, 20)])
     xy[:, 0] = 21.0  # a metre beside the box, all along
