@@ -127,6 +127,34 @@ def line_following(m, theta: float, psi: float, a, b, q: int,
     return delta_r, delta_s_max, theta_bar, q
 
 
+def mown(center, half: float, spacing: float, wind_from: float) -> list:
+    """A square mown as a lawn: rows across the wind ``spacing`` apart, from the upwind row down
+    (each row a beam reach, each move to the next one downwind: no tack), alternate rows sailed
+    either way; the rows' ends as marks.
+
+    Parameters
+    ----------
+    center : array_like, shape (2,)
+        The square's centre (east, north), m.
+    half : float
+        Half its side, m.
+    spacing : float
+        The rows' spacing, m.
+    wind_from : float
+        The compass bearing the wind comes from, rad.
+    """
+    up = (math.sin(wind_from), math.cos(wind_from))
+    across = (math.cos(wind_from), -math.sin(wind_from))
+    rows = max(1, int(2.0 * half / spacing))
+    marks = []
+    for k in range(rows):
+        height = half - (k + 0.5) * 2.0 * half / rows
+        ends = [-half + 0.5 * spacing, half - 0.5 * spacing][:: 1 if k % 2 == 0 else -1]
+        marks += [(float(center[0]) + height * up[0] + e * across[0],
+                   float(center[1]) + height * up[1] + e * across[1]) for e in ends]
+    return marks
+
+
 def _beyond(a, b, m) -> bool:
     """Whether ``m`` lies beyond the line through ``b`` square to a -> b (Jaulin's test)."""
     return (b[0] - a[0]) * (m[0] - b[0]) + (b[1] - a[1]) * (m[1] - b[1]) > 0
@@ -215,7 +243,10 @@ class LineFollower:
         wind_from = float(observation["true_state"]["wind_direction"])
         if self.a is None:
             self.a = m
-            if self.marks is None:
+            if "area_center" in observation:  # area scanning: the square mown row by row
+                self.marks = mown(observation["area_center"], float(np.ravel(observation["area_half"])[0]),
+                                  self.gains.r / 2.0, wind_from)
+            elif self.marks is None:
                 self.marks = [(m[0] + self.leg_length * math.sin(wind_from),
                                m[1] + self.leg_length * math.cos(wind_from)), m]
         if "box_center" in observation:  # station keeping: to the box, across it and back, out

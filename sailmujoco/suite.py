@@ -48,6 +48,7 @@ from .tasks import sailing  # noqa: F401
 from .tasks import position  # noqa: F401
 from .tasks import course  # noqa: F401
 from .tasks import station  # noqa: F401
+from .tasks import scanning  # noqa: F401
 # isort: on
 
 __all__ = ["SUITE", "TASKS", "WORLDS", "keyword_options", "load", "load_batch", "rollout", "task_options"]

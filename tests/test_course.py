@@ -158,3 +158,26 @@ def test_a_boat_that_never_enters_the_box_scores_nothing_and_the_box_turns_with_
     inside = score_station([0.0, 1.0], [(75.0, -15.0), (75.0, -15.0)], env.task.center, 20.0, math.pi / 2)
     outside = score_station([0.0, 1.0], [(85.0, 0.0), (85.0, 0.0)], env.task.center, 20.0, math.pi / 2)
     assert inside["entered_at"] == 0.0 and math.isnan(outside["entered_at"])
+
+
+def test_area_scanning_counts_the_cells_a_track_falls_in_on_a_grid_laid_to_the_wind():
+    from sailmujoco.tasks.scanning import cells_of
+
+    # a northerly's 60 m square about (0, 50), 2.5 m cells: the corner downwind and to port is (0, 0)
+    points = [(-29.0, 21.0), (29.0, 79.0), (31.0, 50.0), (-29.5, 21.5)]
+    assert cells_of(points, (0.0, 50.0), 30.0, 2.5, 0.0) == {(0, 0), (23, 23)}  # (31, 50) is outside
+    # an easterly's: 29 m east and 29 m north of the centre is 29 m up and 29 m to port
+    assert cells_of([(79.0, 29.0)], (50.0, 0.0), 30.0, 2.5, math.pi / 2) == {(0, 23)}
+    env = suite.load("viel_boat", "area_scanning", seed=0, wind_from_deg=90.0)
+    np.testing.assert_allclose(env.task.center, (50.0, 0.0), atol=1e-12)
+    assert env.task.cells == 576  # WRSC 2019's 24 x 24
+    with pytest.raises(ValueError, match="cell must divide side into whole cells"):
+        suite.load("viel_boat", "area_scanning", side=60.0, cell=7.0)
+
+
+def test_the_line_follower_mows_the_square_in_rows_across_the_wind_from_the_upwind_one_down():
+    from sailmujoco.controllers.line_following import mown
+
+    np.testing.assert_allclose(mown((0.0, 0.0), 10.0, 5.0, 0.0), [
+        (-7.5, 7.5), (7.5, 7.5), (7.5, 2.5), (-7.5, 2.5), (-7.5, -2.5), (7.5, -2.5), (7.5, -7.5),
+        (-7.5, -7.5)], atol=1e-12)

@@ -21,7 +21,7 @@ from sailmujoco.gym import SailGymEnv, gym_ids
 
 def test_every_boat_and_task_has_a_registered_id():
     ids = gym_ids()
-    assert len(ids) == len(set(ids)) == len(BOATS) * len(suite.TASKS) == 32
+    assert len(ids) == len(set(ids)) == len(BOATS) * len(suite.TASKS) == 36
     assert "sailmujoco/WilleYacht-HeadingHold-v0" in ids
     assert "sailmujoco/SaoudRobot-BeamReachRoll-v0" in ids
     assert "sailmujoco/VielBoat-PositionKeeping-v0" in ids
@@ -37,7 +37,8 @@ def test_every_boat_and_task_has_a_registered_id():
             assert spec.max_episode_steps == {"heading_hold": 600, "speed_trial": 600,
                                               "course_hold": 2000, "position_keeping": 2000,
                                               "beam_reach_roll": 3000, "upwind_downwind": 6000,
-                                              "precision_navigation": 6000, "station_keeping": 6000}[task]
+                                              "precision_navigation": 6000, "station_keeping": 6000,
+                                              "area_scanning": 9000}[task]
             assert spec.vector_entry_point == "sailmujoco.gym:SailVectorEnv"
     for env_id, boat, task in (("sailmujoco/WilleYacht-CourseHold-v0", "wille_yacht", "course_hold"),
                                ("sailmujoco/SaoudRobot-BeamReachRoll-v0", "saoud_robot", "beam_reach_roll"),

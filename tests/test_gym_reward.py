@@ -99,7 +99,8 @@ def test_the_reward_is_the_sum_of_its_named_terms(boat, task, world, options):
     assert names == {"heading_hold": {"heading", "rudder"}, "course_hold": {"course"},
                      "beam_reach_roll": {"speed", "heel"}, "speed_trial": {"speed"},
                      "position_keeping": {"distance"}, "upwind_downwind": {"to_go"},
-                     "precision_navigation": {"to_go"}, "station_keeping": {"box"}}[task]
+                     "precision_navigation": {"to_go"}, "station_keeping": {"box"},
+                     "area_scanning": {"cells"}}[task]
 
 
 def test_the_reward_floors_hold_their_definitions():
@@ -112,7 +113,8 @@ def test_the_reward_floors_hold_their_definitions():
         floors[task] = env.task.reward_floor(env.physics)
     assert floors == {"heading_hold": pytest.approx(HEADING_HOLD_FLOOR, rel=1e-15), "course_hold": -1.0,
                       "beam_reach_roll": BEAM_REACH_FLOOR, "speed_trial": 0.0, "position_keeping": -100.0,
-                      "upwind_downwind": -100.0, "precision_navigation": -100.0, "station_keeping": -100.0}
+                      "upwind_downwind": -100.0, "precision_navigation": -100.0, "station_keeping": -100.0,
+                      "area_scanning": 0.0}
     env = suite.load("viel_boat", "position_keeping", "paper", d_target=7.0)
     env.reset()
     far = {"position": np.array([1e4, 0.0])}

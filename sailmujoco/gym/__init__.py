@@ -80,6 +80,7 @@ Observations
     last_mark, next_mark             m      [-area, area]    a course's leg (its marks)
     box_center                       m      [-area, area]    station keeping's box
     box_time_left                    s      [-time, time]    of its five minutes (negative after)
+    area_center, area_half           m      [-area, area]    area scanning's square
     ===============================  =====  ===============  ==========================================
 
     With ``include_true_state=True`` the privileged full state (:mod:`sailmujoco.controllers.base`

@@ -47,6 +47,8 @@ BOUNDS = {
     "next_mark": ("-area", "area"),
     "box_center": ("-area", "area"),
     "box_time_left": ("-time", "time"),
+    "area_center": ("-area", "area"),
+    "area_half": (0.0, "area"),
     "speed_through_water": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED),  # instruments: a log's reading
     "true_wind_estimate": (-MAX_AIR_SPEED, MAX_AIR_SPEED),  # instruments: speed m/s, direction rad
     **{f"true_state.{key}": (-MAX_BOAT_SPEED, MAX_BOAT_SPEED) for key in ("u", "v", "w", "u_r", "v_r")},
@@ -190,7 +192,7 @@ def outside(measured: dict, limits: dict) -> str | None:
         if key in WRAPPED:
             value = wrap_angle(value)
         if not np.all((value >= low) & (value <= high)):  # NaN is outside too
-            if top in ("position", "target_position", "last_mark", "next_mark", "box_center"):
+            if top in ("position", "target_position", "last_mark", "next_mark", "box_center", "area_center"):
                 return f"left the sailing area (|x| or |y| > {high:g} m)"
             low, high = (np.array2string(np.asarray(b), precision=3) if np.ndim(b) else f"{b:g}"
                          for b in (low, high))
