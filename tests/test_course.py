@@ -181,3 +181,36 @@ def test_the_line_follower_mows_the_square_in_rows_across_the_wind_from_the_upwi
     np.testing.assert_allclose(mown((0.0, 0.0), 10.0, 5.0, 0.0), [
         (-7.5, 7.5), (7.5, 7.5), (7.5, 2.5), (-7.5, 2.5), (-7.5, -2.5), (7.5, -2.5), (7.5, -7.5),
         (-7.5, -7.5)], atol=1e-12)
+
+
+def test_a_course_of_ones_own_is_laid_to_the_wind_and_sailed(tmp_path):
+    from sailmujoco.controllers.factories import line_following
+
+    path = tmp_path / "triangle.toml"
+    path.write_text("[course]\nmarks = [[0, 60], [40, 30]]\nline = 16\nradius = 6\n")
+    env = suite.load("viel_boat", "upwind_downwind", seed=0, wind_from_deg=90.0, course=str(path),
+                     gusts=False, wander=False)
+    # an easterly: up is east, across (starboard, facing east) is south
+    np.testing.assert_allclose(env.task.marks, [(60.0, 0.0), (30.0, -40.0)], atol=1e-12)
+    np.testing.assert_allclose(env.task.finish, [(0.0, 8.0), (0.0, -8.0)], atol=1e-12)
+    assert env.task.radius == 6.0 and env.task.leg == pytest.approx(60.0)
+    suite.rollout(env, line_following(env))
+    assert env.task.metrics()["marks_reached"] == 2 and env.task.metrics()["finished"] == 1
+
+
+@pytest.mark.parametrize("text, message", [
+    ("[course]\nmarks = [[0, 6000]]\n", "mark 1 at [0.0, 6000.0] lies 6000 m from the start, beyond"),
+    ("[course]\nmarks = [[0, 60], [3, 62]]\n", "mark 2 at [3.0, 62.0] lies within the 5 m radius of mark 1"),
+    ("[course]\nmarks = [[0, 3]]\n", "mark 1 at [0.0, 3.0] lies within the 5 m radius of the start"),
+    ("[course]\nmarks = [0, 60]\n", "marks must be a list of [across, up] pairs"),
+    ("[course]\nmarks = [[0, 60]]\nlaps = 2\n", "unknown key 'laps'"),
+    ("[course]\nmarks = [[0, 60]]\nline = -1\n", "line"),
+    ("marks = [[0, 60]]\n", "the file holds one table, [course]"),
+    ("[course\n", "does not parse as TOML"),
+])
+def test_a_bad_course_file_is_one_line(tmp_path, text, message):
+    path = tmp_path / "course.toml"
+    path.write_text(text)
+    with pytest.raises(ValueError) as err:
+        suite.load("viel_boat", "upwind_downwind", course=str(path))
+    assert message in str(err.value) and "\n" not in str(err.value)

@@ -34,6 +34,67 @@ from .sailing import check_wind_speed
 
 FAR = 100.0  # legs: the distance term's floor is -FAR
 MARK_RADIUS = 5.0  # m, WRSC 2019: a mark is reached within 5 m
+REACH = 5000.0  # m: the farthest a mark may lie from the start (the Gymnasium adapter's sailing area)
+COURSE_KEYS = ("marks", "line", "radius")
+
+
+def read_course(path) -> dict:
+    """A course of one's own from a small TOML file, checked: each problem one line.
+
+    The file holds one table, ``[course]``: ``marks``, a list of [across, up] pairs, metres in
+    the wind's frame from the start line's middle (:func:`lay`: up is towards the wind's eye,
+    across to its right); and optionally ``line`` (the start and finish line's length, m) and
+    ``radius`` (a mark is reached within it, m)::
+
+        [course]
+        marks = [[0, 150], [40, 80], [0, 150]]
+        line = 20
+        radius = 5
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The file.
+
+    Returns
+    -------
+    dict
+        ``marks`` (an (n, 2) array) and, where given, ``line`` and ``radius``.
+    """
+    from ..tomlfile import read_toml
+
+    where = f"course file {str(path)!r}"
+    data = read_toml(path, "course file")
+    table = data.get("course")
+    if set(data) != {"course"} or not isinstance(table, dict):
+        raise ValueError(f"{where}: the file holds one table, [course], with marks = [[across, up], ...]")
+    unknown = sorted(set(table) - set(COURSE_KEYS))
+    if unknown:
+        raise ValueError(f"{where}: unknown key {unknown[0]!r}; the keys are {', '.join(COURSE_KEYS)}")
+    marks = table.get("marks")
+    try:
+        marks = np.asarray(marks, dtype=float)
+    except (TypeError, ValueError):
+        marks = None
+    if marks is None or marks.ndim != 2 or marks.shape[1] != 2 or len(marks) == 0 \
+            or not np.all(np.isfinite(marks)):
+        raise ValueError(f"{where}: marks must be a list of [across, up] pairs in metres, "
+                         f"e.g. [[0, 150], [40, 80]]")
+    out = {"marks": marks}
+    for key in ("line", "radius"):
+        if key in table:
+            out[key] = check_number(f"{where}: {key}", table[key], 0.0, low_open=True, unit="m")
+    radius = out.get("radius", MARK_RADIUS)
+    for i, mark in enumerate(marks):
+        before = marks[i - 1] if i else np.zeros(2)
+        if math.hypot(*mark) > REACH:
+            raise ValueError(f"{where}: mark {i + 1} at {mark.tolist()} lies {math.hypot(*mark):.0f} m from "
+                             f"the start, beyond the {REACH:g} m a boat can be sent")
+        if math.hypot(*(mark - before)) <= radius:
+            what = f"mark {i}" if i else "the start"
+            raise ValueError(f"{where}: mark {i + 1} at {mark.tolist()} lies within the {radius:g} m radius "
+                             f"of {what}: it would be reached without sailing to it")
+    return out
 
 
 def lay(layout, wind_from: float, origin=(0.0, 0.0)) -> np.ndarray:
@@ -131,6 +192,10 @@ class UpwindDownwind(SailTask):
         The start and finish line's length, m, > 0.
     radius : float
         A mark is reached within this distance, m (WRSC 2019: 5).
+    course : str or os.PathLike, optional
+        A course of one's own (:func:`read_course`): its marks replace the windward mark and
+        the laps, its ``line`` and ``radius`` these options; ``leg`` becomes its farthest mark's
+        distance.
     **kwargs
         Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
     """
@@ -140,7 +205,7 @@ class UpwindDownwind(SailTask):
 
     def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
                  wander: bool = True, leg: float = 100.0, laps: int = 1, line: float = 20.0,
-                 radius: float = MARK_RADIUS, **kwargs):
+                 radius: float = MARK_RADIUS, course=None, **kwargs):
         super().__init__(seed, **kwargs)
         self.wind_speed = check_wind_speed(wind_speed)
         self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
@@ -152,7 +217,13 @@ class UpwindDownwind(SailTask):
         self.line = check_number("line", line, 0.0, low_open=True, unit="m")
         self.radius = check_number("radius", radius, 0.0, low_open=True, unit="m")
         windward, leeward = (0.0, self.leg), (0.0, -10.0)
-        self.marks = lay([windward, leeward] * (self.laps - 1) + [windward], self.wind_from)
+        layout = [windward, leeward] * (self.laps - 1) + [windward]
+        if course is not None:
+            own = read_course(course)
+            layout = own["marks"]
+            self.line, self.radius = own.get("line", self.line), own.get("radius", self.radius)
+            self.leg = float(np.max(np.hypot(*layout.T)))
+        self.marks = lay(layout, self.wind_from)
         self.finish = lay([(-self.line / 2, 0.0), (self.line / 2, 0.0)], self.wind_from)
         self.reached, self.finished, self._last_position = 0, False, None  # the spec asks before a reset
 
@@ -263,6 +334,8 @@ class PrecisionNavigation(UpwindDownwind):
     duration = 600.0
 
     def __init__(self, seed=None, distance: float = 50.0, gap: float = 20.0, line: float = 10.0, **kwargs):
+        if kwargs.get("course") is not None:
+            raise ValueError("precision_navigation lays its own buoys; a course file is for upwind_downwind")
         super().__init__(seed, leg=distance, line=line, **kwargs)
         self.gap = check_number("gap", gap, 0.0, unit="m")
         self.marks = lay([(-self.gap / 2, -self.leg), (self.gap / 2, -self.leg)], self.wind_from)
