@@ -214,3 +214,13 @@ def test_a_bad_course_file_is_one_line(tmp_path, text, message):
     with pytest.raises(ValueError) as err:
         suite.load("viel_boat", "upwind_downwind", course=str(path))
     assert message in str(err.value) and "\n" not in str(err.value)
+
+
+def test_videos_and_the_map_get_the_box_and_the_square_as_their_corners():
+    from sailmujoco.video.recording import scene_of
+
+    env = suite.load("viel_boat", "station_keeping", seed=0, wind_from_deg=90.0, side=40.0, distance=60.0)
+    _, _, _, target = scene_of("viel_boat", env, {})
+    # an easterly's box about (60, 0): corners downwind-port, downwind-starboard, up-starboard, up-port
+    np.testing.assert_allclose(target["corners"], [(40.0, 20.0), (40.0, -20.0), (80.0, -20.0), (80.0, 20.0)],
+                               atol=1e-12)

@@ -122,7 +122,8 @@ def add_target(scene, target: dict, h: float) -> None:
         The scene drawn.
     target : dict
         ``{"position": (x, y), "radii": (d_T, d_M)}`` (m); a course adds ``"marks"`` (its marks,
-        the first at ``position``, each ringed at d_T) and ``"line"`` (its line's two ends).
+        the first at ``position``, each ringed at d_T) and ``"line"`` (its line's two ends); a
+        box or a square, ``"corners"`` (its four corners, drawn instead of the circles).
     h : float
         Masthead height (m): the scale of the buoy.
     """
@@ -130,6 +131,14 @@ def add_target(scene, target: dict, h: float) -> None:
 
     x, y = target["position"]
     d_target, d_pre = target["radii"]
+    if target.get("corners"):  # a box or a square: its sides as ropes on the water
+        corners = [np.array([cx, cy, 0.06]) for cx, cy in target["corners"]]
+        for a, b in zip(corners, corners[1:] + corners[:1], strict=True):
+            geom = add_geom(scene, mujoco.mjtGeom.mjGEOM_CAPSULE, np.zeros(3), np.zeros(3), np.eye(3),
+                            (1.0, 1.0, 0.6, 1.0))
+            if geom is not None:
+                mujoco.mjv_connector(geom, mujoco.mjtGeom.mjGEOM_CAPSULE, 0.004 * d_target + 0.03, a, b)
+        return
     flat = mujoco.mjtGeom.mjGEOM_CYLINDER
     # cylinder size: (radius, half-height, unused)
     add_geom(scene, flat, (d_pre, 0.01, 0.0), (x, y, 0.02), np.eye(3), COLOURS["prearrival_area"])

@@ -273,6 +273,9 @@ def _map_target(draw, target: dict, to_px, scale: float, position, line: int) ->
     """The target buoy, its circles, and a dashed line from the boat to it."""
     x, y = target["position"]
     cx, cy = to_px((x, y))
+    if target.get("corners"):  # a box or a square
+        draw.polygon([to_px(corner) for corner in target["corners"]], outline=DESIRED, width=line)
+        return
     for radius, colour in zip(target["radii"], (DESIRED, TRACK), strict=True):
         r = radius * scale
         draw.ellipse((cx - r, cy - r, cx + r, cy + r), outline=colour, width=line)

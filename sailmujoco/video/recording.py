@@ -139,6 +139,14 @@ def scene_of(boat: str, env, options: dict) -> tuple[bool, object, str, dict | N
     if getattr(env.task, "target", None) is not None:
         target = {"position": tuple(env.task.target), "start": getattr(env.task, "start", None),
                   "radii": (env.task.d_target, env.task.d_prearrival)}
+    elif getattr(env.task, "half", None) is not None:  # a box or a square: its corners
+        from ..tasks.course import lay
+
+        half, center = env.task.half, env.task.center
+        square = [(-half, -half), (half, -half), (half, half), (-half, half)]
+        corners = lay(square, env.task.wind_from, center)
+        target = {"position": tuple(map(float, center)), "start": (0.0, 0.0), "radii": (half, half),
+                  "corners": [tuple(map(float, c)) for c in corners]}
     elif getattr(env.task, "marks", None) is not None:  # a course: its marks and its line
         marks = [tuple(map(float, mark)) for mark in env.task.marks]
         target = {"position": marks[0], "start": (0.0, 0.0), "radii": (env.task.radius, env.task.radius),
