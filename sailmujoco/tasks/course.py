@@ -169,8 +169,44 @@ def score_race(t, xy, marks, finish, radius: float = MARK_RADIUS) -> dict:
             "finish_time": finish_time}
 
 
+class EventTask(SailTask):
+    """What every event here shares: a wind of a given speed from a given bearing, the event
+    laid to it, the boat started on a beam reach at 1 m/s (not in irons).
+
+    Parameters
+    ----------
+    seed : int, optional
+        Seeds the initial-heading jitter and the wind's gusts.
+    wind_speed : float
+        Mean true wind at 10 m, m/s, in [0, 100].
+    wind_from_deg : float
+        Compass bearing the wind comes from, degrees; the event is laid to it.
+    gusts, wander : bool
+        Gusts in speed, slow wander of the direction.
+    **kwargs
+        Passed to :class:`~sailmujoco.tasks.base.SailTask`: ``heading_jitter_deg``.
+    """
+
+    def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
+                 wander: bool = True, **kwargs):
+        super().__init__(seed, **kwargs)
+        self.wind_speed = check_wind_speed(wind_speed)
+        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
+        self.gusts, self.wander = gusts, wander
+
+    def wind(self):
+        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
+                          wander=self.wander, seed=0 if self.seed is None else self.seed)
+
+    def initial_heading(self):
+        return self.wind_from + math.pi / 2  # a beam reach on starboard tack
+
+    def initial_speed(self):
+        return 1.0
+
+
 @register_task
-class UpwindDownwind(SailTask):
+class UpwindDownwind(EventTask):
     """A windward-leeward race: from the start line, round the windward mark ``laps`` times,
     finish across the line (the module docstring gives the rules and the sources).
 
@@ -206,10 +242,7 @@ class UpwindDownwind(SailTask):
     def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
                  wander: bool = True, leg: float = 100.0, laps: int = 1, line: float = 20.0,
                  radius: float = MARK_RADIUS, course=None, **kwargs):
-        super().__init__(seed, **kwargs)
-        self.wind_speed = check_wind_speed(wind_speed)
-        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
-        self.gusts, self.wander = gusts, wander
+        super().__init__(seed, wind_speed, wind_from_deg, gusts, wander, **kwargs)
         self.leg = check_number("leg", leg, 0.0, low_open=True, unit="m")
         if laps not in range(1, 6):
             raise ValueError(f"upwind_downwind: laps must be an integer 1-5, got {laps!r}")
@@ -226,16 +259,6 @@ class UpwindDownwind(SailTask):
         self.marks = lay(layout, self.wind_from)
         self.finish = lay([(-self.line / 2, 0.0), (self.line / 2, 0.0)], self.wind_from)
         self.reached, self.finished, self._last_position = 0, False, None  # the spec asks before a reset
-
-    def wind(self):
-        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
-                          wander=self.wander, seed=0 if self.seed is None else self.seed)
-
-    def initial_heading(self):
-        return self.wind_from + math.pi / 2  # a beam reach on starboard tack across the line
-
-    def initial_speed(self):
-        return 1.0
 
     def initialize_episode(self, physics):
         super().initialize_episode(physics)

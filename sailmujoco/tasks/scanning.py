@@ -7,11 +7,9 @@ import math
 
 import numpy as np
 
-from ..forces.wind import WindConfig
-from .base import SailTask, check_number
-from .course import lay
+from .base import check_number
+from .course import EventTask, lay
 from .registry import register_task
-from .sailing import check_wind_speed
 
 
 def cells_of(xy, center, half: float, cell: float, wind_from: float) -> set:
@@ -42,7 +40,7 @@ def cells_of(xy, center, half: float, cell: float, wind_from: float) -> set:
 
 
 @register_task
-class AreaScanning(SailTask):
+class AreaScanning(EventTask):
     """WRSC's area scanning: visit as many cells of a square area as the time allows.
 
     WRSC 2019's rules (github.com/WRSC/rules, main.tex) count a cell visited when a point of the
@@ -82,10 +80,7 @@ class AreaScanning(SailTask):
     def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
                  wander: bool = True, side: float = 60.0, cell: float = 2.5, distance: float = 50.0,
                  **kwargs):
-        super().__init__(seed, **kwargs)
-        self.wind_speed = check_wind_speed(wind_speed)
-        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
-        self.gusts, self.wander = gusts, wander
+        super().__init__(seed, wind_speed, wind_from_deg, gusts, wander, **kwargs)
         side = check_number("side", side, 0.0, low_open=True, unit="m")
         self.cell = check_number("cell", cell, 0.0, side, low_open=True, unit="m (at most side)")
         if abs(side / self.cell - round(side / self.cell)) > 1e-9:
@@ -96,16 +91,6 @@ class AreaScanning(SailTask):
         self.center = lay([(0.0, self.distance)], self.wind_from)[0]
         self.cells = round(side / self.cell) ** 2
         self.visited, self.fresh = set(), 0
-
-    def wind(self):
-        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
-                          wander=self.wander, seed=0 if self.seed is None else self.seed)
-
-    def initial_heading(self):
-        return self.wind_from + math.pi / 2
-
-    def initial_speed(self):
-        return 1.0
 
     def initialize_episode(self, physics):
         super().initialize_episode(physics)

@@ -7,11 +7,9 @@ import math
 
 import numpy as np
 
-from ..forces.wind import WindConfig
-from .base import SailTask, check_number
-from .course import FAR, lay
+from .base import check_number
+from .course import FAR, EventTask, lay
 from .registry import register_task
-from .sailing import check_wind_speed
 
 WINDOW = 300.0  # s, SailBot: stay inside the box for 5 minutes
 GRACE = 30.0  # s, then exit within 30 seconds
@@ -59,7 +57,7 @@ def score_station(t, xy, center, half: float, wind_from: float) -> dict:
 
 
 @register_task
-class StationKeeping(SailTask):
+class StationKeeping(EventTask):
     """SailBot's station keeping: enter a 40 m x 40 m box, stay inside it for five minutes,
     then leave it within 30 seconds.
 
@@ -99,24 +97,11 @@ class StationKeeping(SailTask):
 
     def __init__(self, seed=None, wind_speed: float = 5.0, wind_from_deg: float = 0.0, gusts: bool = True,
                  wander: bool = True, side: float = 40.0, distance: float = 60.0, **kwargs):
-        super().__init__(seed, **kwargs)
-        self.wind_speed = check_wind_speed(wind_speed)
-        self.wind_from = math.radians(check_number("wind_from_deg", wind_from_deg))
-        self.gusts, self.wander = gusts, wander
+        super().__init__(seed, wind_speed, wind_from_deg, gusts, wander, **kwargs)
         self.half = 0.5 * check_number("side", side, 0.0, low_open=True, unit="m")
         self.distance = check_number("distance", distance, 0.0, unit="m")
         self.center = lay([(0.0, self.distance)], self.wind_from)[0]
         self.entered_at = None
-
-    def wind(self):
-        return WindConfig(speed=self.wind_speed, direction_from=self.wind_from, gusts=self.gusts,
-                          wander=self.wander, seed=0 if self.seed is None else self.seed)
-
-    def initial_heading(self):
-        return self.wind_from + math.pi / 2
-
-    def initial_speed(self):
-        return 1.0
 
     def initialize_episode(self, physics):
         super().initialize_episode(physics)
