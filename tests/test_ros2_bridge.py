@@ -30,7 +30,7 @@ def python():
     return ros_python()
 
 
-def client(python, *args, timeout=120):
+def client(python, *args, timeout=240):
     """Run tests/ros2_client.py in the namespace; its JSON report."""
     done = in_namespace([python, ROOT / "tests" / "ros2_client.py", *args], timeout=timeout)
     assert done.returncode == 0, done.stderr[-2000:]
@@ -162,7 +162,7 @@ def test_an_independent_cyclone_dds_reader_decodes_the_fix_rclpy_sees(python, tm
     script = (f'"$1" {ROOT}/tests/ros2_cyclone_reader.py 12 > {tmp_path}/cyclone.json & '
               f'"$1" {ROOT}/tests/ros2_client.py answer -- eleven_metre --seconds 40 '
               f'> {tmp_path}/rclpy.json; wait')
-    done = in_namespace(["sh", "-c", script, "sh", python], timeout=120)
+    done = in_namespace(["sh", "-c", script, "sh", python], timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     cyclone = json.loads((tmp_path / "cyclone.json").read_text())
     report = json.loads((tmp_path / "rclpy.json").read_text().strip().splitlines()[-1])
@@ -183,7 +183,7 @@ def test_the_recipes_heading_hold_node_sails_its_course(python):
     10 deg over its second half, every step answered (125 of the 0.1 s steps in each 12.5 s)."""
     script = ('"$1" -m sailmujoco ros2 eleven_metre --set wind_from_deg=90 --seconds 100 > /dev/null & '
               '"$1" examples/ros2/heading_hold.py --legs 0:25,300:25,210:25,150:25 --json; wait $!')
-    done = in_namespace(["sh", "-c", script, "sh", python], timeout=180)
+    done = in_namespace(["sh", "-c", script, "sh", python], timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     legs = json.loads(done.stdout.strip().splitlines()[-1])
     assert [leg["heading_deg"] for leg in legs] == [0, 300, 210, 150]
@@ -208,16 +208,18 @@ def test_lock_step_with_no_command_ends_after_its_timeout_and_free_running_needs
 
 
 def test_a_second_bridge_on_the_same_domain_is_one_line_and_the_first_sails_on(python, tmp_path):
-    """The ROS analogue of a port in use: a clock already published on the domain."""
-    script = (f'"$1" -m sailmujoco ros2 eleven_metre --seconds 5 --timeout 8 > {tmp_path}/first.txt & '
-              f'until grep -q publishing {tmp_path}/first.txt; do sleep 0.2; done; '  # the first has begun
+    """The ROS analogue of a port in use: a clock already published on the domain. The first
+    bridge waits (lock-step, no commands) until the second has been refused, then is stopped."""
+    script = (f'"$1" -m sailmujoco ros2 eleven_metre --seconds 5 --timeout 120 > {tmp_path}/first.txt & '
+              f'first=$!; until grep -q publishing {tmp_path}/first.txt; do sleep 0.2; done; '
               f'"$1" -m sailmujoco ros2 eleven_metre --seconds 5 2> {tmp_path}/second.err; '
-              f'echo $? > {tmp_path}/second.rc; wait $!; echo $? > {tmp_path}/first.rc')
-    done = in_namespace(["sh", "-c", script, "sh", python], timeout=120)
+              f'echo $? > {tmp_path}/second.rc; kill -TERM $first; wait $first; '
+              f'echo $? > {tmp_path}/first.rc')
+    done = in_namespace(["sh", "-c", script, "sh", python], timeout=300)
     assert done.returncode == 0, done.stderr[-2000:]
     assert (tmp_path / "second.rc").read_text().strip() == "2"
     assert (tmp_path / "second.err").read_text().strip().splitlines() == [
         "sailmujoco ros2: another node already publishes /clock on ROS_DOMAIN_ID 42 "
         "(a bridge still running?): stop it, or give this one another ROS_DOMAIN_ID"]
     assert (tmp_path / "first.rc").read_text().strip() == "0"
-    assert "ended: no command for 8 s" in (tmp_path / "first.txt").read_text()
+    assert "ended: terminated" in (tmp_path / "first.txt").read_text()

@@ -111,7 +111,7 @@ def run_cli(args) -> int:
     from .. import suite
     from ..boat.catalogue import boat_label
     from ..ros2.contract import DEFAULT_ORIGIN, read_remap
-    from ..ros2.node import Bridge, BridgeError, RclpyMissing
+    from ..ros2.node import Bridge, BridgeError, RclpyMissing, require_rclpy
     from ..ros2.record import McapLog, RosbagsMissing, check_log_path
 
     check_settings(args.set, args.task)
@@ -124,6 +124,11 @@ def run_cli(args) -> int:
         check_log_path(args.record, "--record")
     if waves is not None:
         settings["waves"] = waves
+    try:
+        require_rclpy()  # before a first run's minute of compiling, not after it
+    except RclpyMissing as err:
+        print(f"sailmujoco ros2: {err}", file=sys.stderr)
+        return 1
     env = suite.load(args.boat, args.task, seed=args.seed, time_limit=args.seconds, **settings)
     # a first run compiles numba's kernels on the first step: a throwaway copy takes it before the
     # clock starts, so that the stack's nodes do not wait through it mid-run

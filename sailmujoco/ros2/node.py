@@ -42,7 +42,7 @@ RESEND = 0.5
 """Seconds of wall time between the lock-step's resends of a step's messages."""
 GRAPH_CHECK = 1.0
 """Seconds of wall time between checks of the command topics' types on the ROS graph."""
-DISCOVERY = 2.0
+DISCOVERY = 3.0
 """Seconds of wall time the bridge looks for another clock on its domain before it starts."""
 PROGRESS = 60.0
 """Simulated seconds between progress lines."""
@@ -56,7 +56,8 @@ class BridgeError(RuntimeError):
     """The bridge cannot go on: ROS 2 did not start, or a topic carries another type (one line)."""
 
 
-def _rclpy():
+def require_rclpy():
+    """rclpy, its executor and its QoS profile; :class:`RclpyMissing` (one line) without it."""
     try:
         import rclpy
         from rclpy.executors import SingleThreadedExecutor
@@ -179,7 +180,7 @@ class Bridge:
         BridgeError
             ROS 2 did not start, or a topic of the contract carries another type.
         """
-        rclpy, executor_class, qos = _rclpy()
+        rclpy, executor_class, qos = require_rclpy()
         context = rclpy.Context()
         try:
             rclpy.init(context=context)
