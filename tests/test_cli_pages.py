@@ -37,7 +37,8 @@ def test_list_names_every_boat_task_world_controller_and_study_on_one_line(capsy
     assert "8.80 m" in boats["wille_yacht"]  # Wille's 8.8 m yacht
     tasks = _section(out, "tasks")
     assert list(tasks) == ["heading_hold", "course_hold", "beam_reach_roll", "speed_trial",
-                           "position_keeping"]
+                           "position_keeping", "upwind_downwind", "precision_navigation",
+                           "station_keeping", "area_scanning"]
     assert tasks["heading_hold"] == "Hold a compass heading in a steady, gusty wind."
     assert set(_section(out, "worlds")) == {"mujoco", "paper"}
     controllers = _section(out, "controllers")
