@@ -180,7 +180,9 @@ class StandIn:
 
 
 def test_lock_step_one_answer_per_packet_resends_and_a_restart():
-    backend = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)
+    other = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)
+    fresh = other.handle(servo_packet(NEUTRAL, 400, 0))  # a first answer, made before the clock runs:
+    backend = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)  # 0.5 s of silence ends it
     sitl = StandIn(backend, timeout=0.5)
     lines = [sitl.send(NEUTRAL, k) for k in range(50)]
     assert all(line is not None for line in lines)
@@ -188,8 +190,6 @@ def test_lock_step_one_answer_per_packet_resends_and_a_restart():
     np.testing.assert_allclose(stamps, backend.dt * np.arange(1, 51), rtol=0, atol=1e-12)  # a step each
     again = sitl.send(NEUTRAL, 49)  # the last frame sent again: the same answer, the boat still
     assert again == lines[-1] and backend.physics.data.time == pytest.approx(50 * backend.dt)
-    other = JsonBackend("saoud_robot", wind_speed=5.0, wind_from_deg=90.0)
-    fresh = other.handle(servo_packet(NEUTRAL, 400, 0))
     restart = sitl.send(NEUTRAL, 0)  # SITL restarted: the boat starts again, nothing stale
     assert json.loads(restart)["timestamp"] == pytest.approx(backend.dt)  # backwards: SITL's reset
     assert restart == fresh

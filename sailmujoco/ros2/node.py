@@ -15,10 +15,11 @@ Two ways to keep time:
   slower than :data:`RESEND` s does. With no command for ``timeout`` s the run ends (as
   ``sailmujoco sitl`` ends when ArduPilot stops).
 
-Before it publishes, the bridge looks on its domain for :data:`DISCOVERY` s: another node that
-already publishes the clock (a bridge still running) is refused in one line, as a taken port is.
 * **free-running** (``rate``): the steps are paced at ``rate`` times real time and take the
   latest commands whenever they came (zero until the first).
+
+Before it publishes, the bridge looks on its domain for :data:`DISCOVERY` s: another node that
+already publishes the clock (a bridge still running) is refused in one line, as a taken port is.
 
 rclpy is imported only here, when a bridge starts: ``pip install 'sailmujoco[ros2]'`` (the
 PyPI build of Jazzy's rclpy) or a sourced ROS 2 install gives it.
