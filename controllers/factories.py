@@ -382,7 +382,7 @@ def viel(env, d_M: float = 14.0, d_T: float = 7.0, k_s: float = 5.0, k_p: float 
 
 
 def line_following(env, marks=None, leg: float = 200.0, r: float = 10.0, zeta_deg: float = 60.0,
-                   gamma_inf_deg: float = 45.0, beta_deg: float = 45.0) -> Bounded:
+                   gamma_inf_deg: float = 45.0, beta_deg: float = 45.0, rudder: str = "listing") -> Bounded:
     """Jaulin and Le Bars' line following with tacking, mark by mark
     (:class:`controllers.line_following.LineFollower`).
 
@@ -399,6 +399,8 @@ def line_following(env, marks=None, leg: float = 200.0, r: float = 10.0, zeta_de
         Cut-off distance, m.
     zeta_deg, gamma_inf_deg, beta_deg : float
         Close-hauled angle, incidence angle, the sail's angle abeam, deg.
+    rudder : str
+        "listing" (the IRSC listing's sin rudder) or "sawtooth" (Jaulin's book form).
 
     Returns
     -------
@@ -409,5 +411,6 @@ def line_following(env, marks=None, leg: float = 200.0, r: float = 10.0, zeta_de
 
     spec = env.action_spec()
     gains = LineFollowingGains(r=r, zeta=math.radians(zeta_deg), gamma_inf=math.radians(gamma_inf_deg),
-                               delta_r_max=float(spec.maximum[0]), beta=math.radians(beta_deg))
+                               delta_r_max=float(spec.maximum[0]), beta=math.radians(beta_deg),
+                               rudder=rudder)
     return Bounded(LineFollower(marks, leg, gains), spec.minimum, spec.maximum)

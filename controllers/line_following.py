@@ -11,24 +11,30 @@ x east, y north, angles counter-clockwise from east, and psi the direction the w
 Inputs: the boat's position m, its heading theta, the wind's direction psi, the line from a to
 b; state: the tack q in {-1, 1}. Parameters: the cut-off distance r, the close-hauled angle zeta
 (half the no-go cone, from the wind's eye), the incidence angle gamma_inf (the angle at which a
-boat far from the line heads back to it), the largest rudder angle and the sail's beta.
+boat far from the line heads back to it), the largest rudder angle and the sail's beta::
 
-1. e = det((b - a)/|b - a|, m - a)                   (signed distance, > 0 left of a -> b)
-2. if |e| > r/2: q = sign(e)                          (the hysteresis: the tack keeps until then)
-3. phi = angle(b - a)
-4. theta* = phi - (2 gamma_inf / pi) atan(e / r)     (the heading that brings the boat to the line)
-5. if cos(psi - theta*) + cos(zeta) < 0               (theta* lies in the no-go cone)
-6.    or (|e| < r and cos(psi - phi) + cos(zeta) < 0) (or the line does, and the boat is near it)
-7.    then theta_bar = pi + psi - q zeta              (close-hauled on tack q)
-8.    else theta_bar = theta*
-9. (end if)
-10-11. the rudder from theta - theta_bar: here delta_r = (delta_r_max / pi) sawtooth(theta -
-   theta_bar), sawtooth(x) = 2 atan(tan(x / 2)) in (-pi, pi], Jaulin's book form (the IRSC
-   listing's sin/sign rudder differs only in its gain); a positive delta_r turns the boat
-   clockwise in Jaulin's model, so the package's rudder (positive: to port) is -delta_r.
-12. delta_s_max = (pi/2) ((cos(psi - theta_bar) + 1) / 2) ** (log(pi / (2 beta)) / log 2)
-   (the sheet's length as an angle: beta abeam, pi/2 before the wind, 0 head to wind); the
-   package's sail angle is delta_s_max to leeward.
+    1. e = det((b - a)/|b - a|, m - a)                   (signed distance, > 0 left of a -> b)
+    2. if |e| > r/2: q = sign(e)                          (the hysteresis: the tack keeps until then)
+    3. phi = angle(b - a)
+    4. theta* = phi - (2 gamma_inf / pi) atan(e / r)     (the heading that brings the boat to the line)
+    5. if cos(psi - theta*) + cos(zeta) < 0               (theta* lies in the no-go cone)
+    6.    or (|e| < r and cos(psi - phi) + cos(zeta) < 0) (or the line does, and the boat is near it)
+    7.    then theta_bar = pi + psi - q zeta              (close-hauled on tack q)
+    8.    else theta_bar = theta*
+    9. (end if)
+    10. if cos(theta - theta_bar) >= 0: delta_r = delta_r_max sin(theta - theta_bar)
+    11.    else delta_r = delta_r_max sign(sin(theta - theta_bar))  (full rudder beyond 90 deg)
+       A positive delta_r turns the boat clockwise in Jaulin's model, so the package's rudder
+       (positive: to port) is -delta_r.
+    12. delta_s_max = (pi/2) ((cos(psi - theta_bar) + 1) / 2) ** (log(pi / (2 beta)) / log 2)
+       (the sheet's length as an angle: beta abeam, pi/2 before the wind, 0 head to wind); the
+       package's sail angle is delta_s_max to leeward.
+
+Steps 10-11 are the IRSC listing's. Jaulin's book writes the rudder as (delta_r_max / pi)
+sawtooth(theta - theta_bar), sawtooth(x) = 2 atan(tan(x / 2)): the same sign, a third of the
+gain near the heading (1/pi against 1 per rad). With it Wille's 8.8 m yacht, 0.5 m/s
+close-hauled, cannot hold its heading against its weather helm and stalls in its tacks; the book's
+form is the switch ``rudder="sawtooth"``.
 
 The defaults are IRSC 2012's as its citing implementations carry them (zeta = pi/3, gamma_inf =
 pi/4, the tack's threshold r/2) with beta = pi/4 (the book's, for which step 12 reduces to the
@@ -43,6 +49,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+RUDDER_LAWS = ("listing", "sawtooth")  # steps 10-11 as IRSC 2012 lists them; Jaulin's book form
 STATION_WINDOW = 300.0  # s: station keeping's five minutes (sailmujoco.tasks.station)
 
 
@@ -74,6 +81,9 @@ class LineFollowingGains:
         The largest rudder angle, rad.
     beta : float
         The sail's angle with the wind abeam, rad.
+    rudder : str
+        "listing": steps 10-11 of the IRSC listing (sin, full rudder beyond 90 deg); "sawtooth":
+        Jaulin's book form, (delta_r_max / pi) sawtooth(theta - theta_bar).
     """
 
     r: float = 10.0
@@ -81,6 +91,11 @@ class LineFollowingGains:
     gamma_inf: float = math.pi / 4.0
     delta_r_max: float = math.radians(35.0)
     beta: float = math.pi / 4.0
+    rudder: str = "listing"
+
+    def __post_init__(self):
+        if self.rudder not in RUDDER_LAWS:
+            raise ValueError(f"rudder must be one of {', '.join(RUDDER_LAWS)}, got {self.rudder!r}")
 
 
 def line_following(m, theta: float, psi: float, a, b, q: int,
@@ -121,7 +136,13 @@ def line_following(m, theta: float, psi: float, a, b, q: int,
         theta_bar = math.pi + psi - q * gains.zeta  # 7
     else:
         theta_bar = theta_star  # 8
-    delta_r = gains.delta_r_max / math.pi * sawtooth(theta - theta_bar)  # 10-11
+    error = theta - theta_bar
+    if gains.rudder == "sawtooth":
+        delta_r = gains.delta_r_max / math.pi * sawtooth(error)  # the book's 10-11
+    elif math.cos(error) >= 0.0:  # 10
+        delta_r = gains.delta_r_max * math.sin(error)
+    else:  # 11
+        delta_r = math.copysign(gains.delta_r_max, math.sin(error))
     exponent = math.log(math.pi / (2.0 * gains.beta)) / math.log(2.0)
     delta_s_max = math.pi / 2.0 * ((math.cos(psi - theta_bar) + 1.0) / 2.0) ** exponent  # 12
     return delta_r, delta_s_max, theta_bar, q
@@ -200,34 +221,34 @@ class LineFollower:
             Unused (the law is deterministic).
         """
         self.marks, self.a, self.b, self.leg, self.q, self.tacks = self.given, None, None, 0, 1, 0
+        self.station = None  # station keeping's two ends and its way out, once laid
 
     def _station(self, observation, m, wind_from: float):
         """Station keeping's leg: from the start to the box's centre until the five minutes
         start; then to and fro across the wind through the centre between points ``r`` either
         side of it (a beam reach each way: the boat never stops, as a sailboat cannot); once
-        they are over, out of the box 4 ``r`` straight downwind of its centre. Sets ``a``; the
-        leg's end."""
+        they are over, out of the box 4 ``r`` straight downwind of its centre. The points are
+        laid once, to the wind when the five minutes start (a wind that wanders does not move
+        them). Sets ``a``; returns the leg's end."""
         c = (float(observation["box_center"][0]), float(observation["box_center"][1]))
         left = float(np.asarray(observation["box_time_left"]).reshape(-1)[0])
         r = self.gains.r
-        across = (math.cos(wind_from), -math.sin(wind_from))
+        if left >= STATION_WINDOW:
+            self.b = c
+            return c
+        if self.station is None:
+            across = (math.cos(wind_from), -math.sin(wind_from))
+            self.station = ((c[0] + r * across[0], c[1] + r * across[1]),
+                            (c[0] - r * across[0], c[1] - r * across[1]),
+                            (c[0] - 4 * r * math.sin(wind_from), c[1] - 4 * r * math.cos(wind_from)))
+            self.a, self.b = self.station[1], self.station[0]
+        ends, out = self.station[:2], self.station[2]
         if left <= 0.0:
-            b = (c[0] - 4 * r * math.sin(wind_from), c[1] - 4 * r * math.cos(wind_from))
-            if self.b != b:
-                self.a = m
-        elif left < STATION_WINDOW:
-            ends = [(c[0] + r * across[0], c[1] + r * across[1]),
-                    (c[0] - r * across[0], c[1] - r * across[1])]
-            if self.b not in ends:
-                self.a, b = ends[1], ends[0]
-            else:
-                b = self.b
-                if _beyond(self.a, b, m):
-                    self.a, b = b, ends[1] if b == ends[0] else ends[0]
-        else:
-            b = c
-        self.b = b
-        return b
+            if self.b != out:
+                self.a, self.b = m, out
+        elif _beyond(self.a, self.b, m):
+            self.a, self.b = self.b, ends[1] if self.b == ends[0] else ends[0]
+        return self.b
 
     def __call__(self, timestep):
         """[rudder, sail] for this step.

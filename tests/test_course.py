@@ -76,7 +76,7 @@ def test_the_distance_to_go_rises_not_falls_at_a_rounding():
     assert task.reached == 1 and task.distance_to_go((0.0, 96.0)) == pytest.approx(96.0)
 
 
-@pytest.mark.parametrize("boat", ["eleven_metre", "viel_boat"])
+@pytest.mark.parametrize("boat", ["eleven_metre", "viel_boat", "wille_yacht", "saoud_robot"])
 def test_the_line_follower_sails_the_course_with_tacks_in_calm_water(boat):
     from sailmujoco.controllers.factories import line_following
 

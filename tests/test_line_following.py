@@ -24,7 +24,34 @@ def test_beyond_the_cut_off_it_heads_back_at_the_incidence_angles_share():
     assert theta_bar == pytest.approx(-0.5 * math.atan(2.0), abs=1e-15)
     assert q == 1  # |e| = 20 > r/2: the tack follows the side
     # heading east, the wanted heading is to the right (clockwise): Jaulin's rudder is positive
-    assert delta_r == pytest.approx(G.delta_r_max / math.pi * 0.5 * math.atan(2.0), abs=1e-15)
+    assert delta_r == pytest.approx(G.delta_r_max * math.sin(0.5 * math.atan(2.0)), abs=1e-15)  # step 10
+
+
+@pytest.mark.parametrize("theta, expected", [
+    (math.radians(100.0), 1.0),  # 100 deg left of the line's heading: cos < 0, full rudder clockwise (11)
+    (math.radians(-135.0), -1.0),  # 135 deg right of it: full rudder the other way
+    (math.radians(-90.0), -1.0),  # cos(-90 deg) is 6e-17 >= 0: step 10, sin(-90 deg) = -1, as full
+])
+def test_beyond_ninety_degrees_off_the_heading_the_rudder_is_full(theta, expected):
+    """On an eastward line with the wind abeam, theta_bar = 0: the error is theta itself."""
+    delta_r, _, theta_bar, _ = line_following((50.0, 0.0), theta, math.pi / 2, *EAST_LINE, 1)
+    assert theta_bar == 0.0 and delta_r == pytest.approx(expected * G.delta_r_max, abs=1e-15)
+
+
+def test_the_books_sawtooth_rudder_is_a_third_of_the_listings_gain_near_the_heading():
+    """(delta_r_max / pi) sawtooth(0.2) against delta_r_max sin(0.2), and 170 deg off: 17/18 of
+    the largest angle against all of it."""
+    book = LineFollowingGains(rudder="sawtooth")
+    for theta, listing in ((0.2, G.delta_r_max * math.sin(0.2)), (math.radians(170.0), G.delta_r_max)):
+        delta_r, *_ = line_following((50.0, 0.0), theta, math.pi / 2, *EAST_LINE, 1, book)
+        assert delta_r == pytest.approx(G.delta_r_max / math.pi * theta, abs=1e-15)
+        assert line_following((50.0, 0.0), theta, math.pi / 2, *EAST_LINE, 1)[0] == pytest.approx(listing,
+                                                                                              abs=1e-15)
+
+
+def test_an_unknown_rudder_law_is_refused_in_one_line():
+    with pytest.raises(ValueError, match=r"rudder must be one of listing, sawtooth, got 'sine'"):
+        LineFollowingGains(rudder="sine")
 
 
 @pytest.mark.parametrize("q, expected", [(1, math.pi / 6), (-1, 5 * math.pi / 6)])
