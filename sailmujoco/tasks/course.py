@@ -17,8 +17,9 @@ Observation: the sailing observation (:mod:`sailmujoco.tasks.sailing`) plus ``la
 Reward terms: ``to_go`` = -min(D, 100 leg) / leg with D the course's distance left along its
 legs (to the next mark, then mark to mark to the finish), 0 once finished: it grows as the boat
 sails the course, never drops at a rounding, and pays nothing for stopping (a stop earns less
-than sailing on, :mod:`sailmujoco.tasks.base`). Metrics: ``marks_reached``, ``finished``
-(1 or 0), ``finish_time`` (s; nan without a finish), ``distance_to_go`` (m, at the end).
+than sailing on, :mod:`sailmujoco.tasks.base`). The episode ends at the finish. Metrics:
+``marks_reached``, ``finished`` (1 or 0), ``finish_time`` (s; nan without a finish),
+``distance_to_go`` (m, at the end).
 """
 
 from __future__ import annotations
@@ -312,6 +313,17 @@ class UpwindDownwind(EventTask):
 
     def reward_floor(self, physics):
         return -FAR
+
+    def get_termination(self, physics):
+        """0.0 once the finish line is crossed (the race is over; sailing on would earn 0 a step,
+        as the finish does), else the base task's (a stopped world).
+
+        Parameters
+        ----------
+        physics : World
+            The world the task runs on.
+        """
+        return 0.0 if self.finished else super().get_termination(physics)
 
     def summarise(self, records):
         t = np.array([r["t"] for r in records])

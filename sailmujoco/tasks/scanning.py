@@ -94,14 +94,14 @@ class AreaScanning(EventTask):
 
     def initialize_episode(self, physics):
         super().initialize_episode(physics)
-        self.visited, self.fresh = self._cells(physics), 0
+        self.visited, self.fresh = self._cells(physics.truth().position), 0
 
-    def _cells(self, physics) -> set:
-        return cells_of([physics.truth().position], self.center, self.half, self.cell, self.wind_from)
+    def _cells(self, position) -> set:
+        return cells_of([position], self.center, self.half, self.cell, self.wind_from)
 
     def after_step(self, physics):
-        super().after_step(physics)
-        fresh = self._cells(physics) - self.visited
+        super().after_step(physics)  # this step's record: the true position, as the score reads it
+        fresh = self._cells(self._records[-1]["position"]) - self.visited
         self.visited |= fresh
         self.fresh = len(fresh)  # this step's reward: read as often as asked
 
