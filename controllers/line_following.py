@@ -148,10 +148,11 @@ def line_following(m, theta: float, psi: float, a, b, q: int,
     return delta_r, delta_s_max, theta_bar, q
 
 
-def mown(center, half: float, spacing: float, wind_from: float) -> list:
+def mown(center, half: float, spacing: float, wind_from: float, shift: float = 0.0) -> list:
     """A square mown as a lawn: rows across the wind ``spacing`` apart, from the upwind row down
     (each row a beam reach, each move to the next one downwind: no tack), alternate rows sailed
-    either way; the rows' ends as marks.
+    either way; the rows' ends as marks. ``shift`` moves every row that far downwind (rows on or
+    beyond the square's edge left out): ``spacing`` / 2 lays the rows between the first ones.
 
     Parameters
     ----------
@@ -163,13 +164,17 @@ def mown(center, half: float, spacing: float, wind_from: float) -> list:
         The rows' spacing, m.
     wind_from : float
         The compass bearing the wind comes from, rad.
+    shift : float
+        The rows' offset downwind, m.
     """
     up = (math.sin(wind_from), math.cos(wind_from))
     across = (math.cos(wind_from), -math.sin(wind_from))
     rows = max(1, int(2.0 * half / spacing))
     marks = []
     for k in range(rows):
-        height = half - (k + 0.5) * 2.0 * half / rows
+        height = half - (k + 0.5) * 2.0 * half / rows - shift
+        if abs(height) >= half:
+            continue
         ends = [-half + 0.5 * spacing, half - 0.5 * spacing][:: 1 if k % 2 == 0 else -1]
         marks += [(float(center[0]) + height * up[0] + e * across[0],
                    float(center[1]) + height * up[1] + e * across[1]) for e in ends]
@@ -222,6 +227,7 @@ class LineFollower:
         """
         self.marks, self.a, self.b, self.leg, self.q, self.tacks = self.given, None, None, 0, 1, 0
         self.station = None  # station keeping's two ends and its way out, once laid
+        self.square, self.passes = None, 0  # area scanning's square and the passes mown over it
 
     def _station(self, observation, m, wind_from: float):
         """Station keeping's leg: from the start to the box's centre until the five minutes
@@ -265,8 +271,9 @@ class LineFollower:
         if self.a is None:
             self.a = m
             if "area_center" in observation:  # area scanning: the square mown row by row
-                self.marks = mown(observation["area_center"], float(np.ravel(observation["area_half"])[0]),
-                                  self.gains.r / 2.0, wind_from)
+                self.square = ((float(observation["area_center"][0]), float(observation["area_center"][1])),
+                               float(np.ravel(observation["area_half"])[0]), self.gains.r / 2.0, wind_from)
+                self.marks = mown(*self.square)
             elif self.marks is None:
                 self.marks = [(m[0] + self.leg_length * math.sin(wind_from),
                                m[1] + self.leg_length * math.cos(wind_from)), m]
@@ -283,6 +290,12 @@ class LineFollower:
             if _beyond(self.a, b, m) and self.leg < len(self.marks) - 1:
                 self.a, self.leg = b, self.leg + 1
                 b = self.marks[self.leg]
+            elif _beyond(self.a, b, m) and self.square is not None:  # mown: again, the other way,
+                self.passes += 1  # every other pass between the first pass's rows
+                marks = mown(*self.square, shift=self.square[2] / 2.0 if self.passes % 2 else 0.0)
+                self.marks = marks[::-1] if self.passes % 2 else marks
+                self.a, self.leg = b, 0
+                b = self.marks[0]
         theta = math.pi / 2.0 - float(observation["heading"])
         psi = -math.pi / 2.0 - wind_from
         delta_r, delta_s, _, q = line_following(m, theta, psi, self.a, b, self.q, self.gains)

@@ -183,6 +183,15 @@ def test_the_line_follower_mows_the_square_in_rows_across_the_wind_from_the_upwi
         (-7.5, -7.5)], atol=1e-12)
 
 
+def test_the_second_pass_of_the_mown_square_lies_between_the_first_passs_rows():
+    """A 20 m square, rows 5 m apart at 7.5, 2.5, -2.5, -7.5 m up; shifted 2.5 m downwind they
+    lie at 5, 0, -5 m (the one at -10 m is the square's edge, left out)."""
+    from sailmujoco.controllers.line_following import mown
+
+    rows = sorted({round(y, 9) for _, y in mown((0.0, 0.0), 10.0, 5.0, 0.0, shift=2.5)})
+    assert rows == [-5.0, 0.0, 5.0]
+
+
 def test_a_course_of_ones_own_is_laid_to_the_wind_and_sailed(tmp_path):
     from sailmujoco.controllers.factories import line_following
 
