@@ -118,3 +118,28 @@ def test_a_sitl_runs_log_holds_its_trajectory_table_stamped_with_sitls_clock(tmp
     wind = [m.vector for _, m in decoded["/wind/apparent"]]
     assert [math.degrees(apparent_wind_angle((v.x, v.y, v.z))) for v in wind] == \
         pytest.approx(table["vane_deg"].tolist(), abs=1e-9)
+
+
+def test_a_course_tasks_marks_are_logged_and_published_as_points_in_the_map_frame(tmp_path):
+    """The race's legs on /course/last_mark and /course/next_mark: the start (0, 0) and the
+    windward mark 100 m up a wind from 90 deg, i.e. (100, 0) east, as laid by hand."""
+    from sailmujoco.controllers.factories import line_following
+    from sailmujoco.ros2.node import Bridge
+
+    path = tmp_path / "race.mcap"
+    env = suite.load("viel_boat", "upwind_downwind", seed=0, time_limit=2.0, wind_from_deg=90.0)
+    assert {k: v for k, v in Bridge(env).topics.items() if k.startswith("/course")} == {
+        "/course/last_mark": "geometry_msgs/msg/PointStamped", "/course/next_mark": "geometry_msgs/msg/PointStamped"}
+    with McapLog(env, path) as log:
+        table = suite.rollout(env, line_following(env), record=log)
+    points = {}
+    with open(path, "rb") as f:
+        reader = mcap_reader.make_reader(f, decoder_factories=[mcap_ros2_decoder.DecoderFactory()])
+        for schema, channel, _, value in reader.iter_decoded_messages(topics=["/course/last_mark",
+                                                                             "/course/next_mark"]):
+            assert schema.name == "geometry_msgs/msg/PointStamped" and value.header.frame_id == "map"
+            points.setdefault(channel.topic, set()).add((value.point.x, value.point.y, value.point.z))
+    assert len(table) == 21
+    assert points["/course/last_mark"] == {(0.0, 0.0, 0.0)}
+    next_mark = points["/course/next_mark"].pop()
+    assert next_mark == pytest.approx((100.0, 0.0, 0.0), abs=1e-9) and not points["/course/next_mark"]

@@ -19,6 +19,11 @@ Published once per control step, stamped with the simulation's time (the fields 
 * ``/sim/wind/true`` (geometry_msgs/Vector3Stamped, frame ``map``): the true wind at the sail
   (east, north), where it blows to.
 
+A course task (:mod:`sailmujoco.tasks.course`) adds its references (:data:`REFERENCES`), each
+as ``/course/<key>`` (geometry_msgs/PointStamped, frame ``map``, ENU, m): the leg's
+``last_mark`` and ``next_mark``, station keeping's ``box_center``, area scanning's
+``area_center`` (:func:`course_topics`).
+
 Subscribed (:data:`COMMANDS`): ``/rudder/command`` and ``/sail/command`` (std_msgs/Float64),
 radians, the package's signs: a positive angle swings the trailing edge to port (a positive
 rudder turns the boat to port; a positive sail angle is the boom to port, the leeward side with
@@ -50,6 +55,9 @@ TOPICS = {
     "/sim/wind/true": "geometry_msgs/msg/Vector3Stamped",
 }
 """Published topic -> its ROS 2 message type."""
+REFERENCES = ("last_mark", "next_mark", "box_center", "area_center")
+"""A course task's references (observation keys, (east, north) m), published as ``/course/<key>``."""
+POINT = "geometry_msgs/msg/PointStamped"
 COMMANDS = {"/rudder/command": "std_msgs/msg/Float64", "/sail/command": "std_msgs/msg/Float64"}
 """Subscribed topic -> its ROS 2 message type: the action's rudder and sail angles, rad, in order."""
 DEFAULT_ORIGIN = Origin(latitude=59.9, longitude=10.7)  # the Oslo fjord, where the 11:Metre class sails
@@ -118,8 +126,21 @@ def read_remap(path) -> dict:
     return names
 
 
+def course_topics(keys) -> dict:
+    """``/course/<key>`` -> geometry_msgs/PointStamped for each of :data:`REFERENCES` in ``keys``.
+
+    Parameters
+    ----------
+    keys : iterable of str
+        A task's observation keys (its observation spec's, or an observation's).
+    """
+    keys = set(keys)
+    return {f"/course/{key}": POINT for key in REFERENCES if key in keys}
+
+
 def step_row(observation: dict, position) -> dict:
-    """The values a step's messages carry: the instruments' and the truth's, SI, ENU.
+    """The values a step's messages carry: the instruments' and the truth's, SI, ENU, and under
+    ``course`` a course task's references (:data:`REFERENCES`, [east, north] m).
 
     Parameters
     ----------
@@ -129,8 +150,10 @@ def step_row(observation: dict, position) -> dict:
         The true position of CO in the world (east, north, up), m.
     """
     ts = observation["true_state"]
-    return {"t": float(ts["time"]), "true_x": float(position[0]), "true_y": float(position[1]),
-            "true_z": float(position[2]),
+    course = {key: [float(observation[key][0]), float(observation[key][1])]
+              for key in REFERENCES if key in observation}
+    return {**({"course": course} if course else {}), "t": float(ts["time"]), "true_x": float(position[0]),
+            "true_y": float(position[1]), "true_z": float(position[2]),
             "x": float(observation["position"][0]), "y": float(observation["position"][1]),
             "vel_e": float(observation["velocity"][0]), "vel_n": float(observation["velocity"][1]),
             "heading": float(observation["heading"]), "heel": float(observation["heel"]),
@@ -159,7 +182,7 @@ def topic_fields(row: dict, origin: Origin, stamp: int) -> dict:
     Returns
     -------
     dict
-        Topic (:data:`TOPICS`) -> its message's fields.
+        Topic (:data:`TOPICS`, and a course's :func:`course_topics`) -> its message's fields.
     """
     measured = quat_from_euler(row["heel"], row["true_pitch"], yaw_from_heading(row["heading"]))
     true = quat_from_euler(row["true_heel"], row["true_pitch"], row["true_yaw"])
@@ -168,6 +191,8 @@ def topic_fields(row: dict, origin: Origin, stamp: int) -> dict:
     odom = messages.odometry((row["true_x"], row["true_y"], row["true_z"]), true,
                              (row["u"], row["v"], row["w"]),
                              (row["true_roll_rate"], row["true_pitch_rate"], row["true_yaw_rate"]))
+    course = {f"/course/{key}": {"frame_id": "map", "point": messages.vector3((x, y, 0.0))}
+              for key, (x, y) in row.get("course", {}).items()}
     return {"/clock": {"clock": messages.time(stamp)}, "/gps/fix": {"frame_id": "gps", **fix},
             "/gps/vel": {"frame_id": "map", "twist": messages.twist_enu((row["vel_e"], row["vel_n"], 0.0))},
             "/imu/data": {"frame_id": "base_link", **imu},
@@ -175,4 +200,5 @@ def topic_fields(row: dict, origin: Origin, stamp: int) -> dict:
                                "vector": messages.apparent_wind(row["awa"], row["aws"])},
             "/sim/odom": {"frame_id": "map", "child_frame_id": "base_link", **odom},
             "/sim/wind/true": {"frame_id": "map",
-                               "vector": messages.vector3((row["true_wind_e"], row["true_wind_n"], 0.0))}}
+                               "vector": messages.vector3((row["true_wind_e"], row["true_wind_n"], 0.0))},
+            **course}

@@ -34,7 +34,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .contract import COMMANDS, DEFAULT_ORIGIN, TOPICS, step_row, topic_fields
+from .contract import COMMANDS, DEFAULT_ORIGIN, TOPICS, course_topics, step_row, topic_fields
 from .geodesy import Origin
 
 INSTALL = ("the ROS 2 bridge needs rclpy: pip install 'sailmujoco[ros2]' (Linux x86_64), or run it "
@@ -164,6 +164,9 @@ class Bridge:
                  rate: float | None = None, timeout: float = 30.0, record=None, say=print):
         self.env, self.origin, self.rate, self.timeout = env, origin, rate, timeout
         self.names = {topic: topic for topic in {**TOPICS, **COMMANDS}} if names is None else dict(names)
+        self.topics = {**TOPICS, **course_topics(env.observation_spec())}  # published: name -> type
+        for topic in self.topics:
+            self.names.setdefault(topic, topic)
         self.record, self.say = record, say
         self.counters = Counters()
         spec = env.action_spec()
@@ -194,7 +197,7 @@ class Bridge:
             self._check_alone()
             self._publishers = {topic: self.node.create_publisher(message_class(kind), self.names[topic],
                                                                   qos(depth=10))
-                                for topic, kind in TOPICS.items()}
+                                for topic, kind in self.topics.items()}
             for index, (topic, kind) in enumerate(COMMANDS.items()):
                 self.node.create_subscription(message_class(kind), self.names[topic],
                                               self._on_command(topic, index), qos(depth=10))
@@ -248,7 +251,7 @@ class Bridge:
         row = (self.record(step, timestep, action) if self.record is not None
                else step_row(observation, self.env.physics.position()))
         stamp = int(round(row["t"] * 1e9))
-        self._messages = [(self._publishers[topic], fill(message_class(TOPICS[topic])(), fields,
+        self._messages = [(self._publishers[topic], fill(message_class(self.topics[topic])(), fields,
                                                          self._stamp(stamp)))
                           for topic, fields in topic_fields(row, self.origin, stamp).items()]
         self._send()
@@ -302,7 +305,7 @@ class Bridge:
 
     def _check_graph(self) -> None:
         """A topic of the contract that someone publishes or reads with another type: one line."""
-        wanted = {self.names[topic]: kind for topic, kind in {**TOPICS, **COMMANDS}.items()}
+        wanted = {self.names[topic]: kind for topic, kind in {**self.topics, **COMMANDS}.items()}
         for name, kinds in self.node.get_topic_names_and_types():
             other = [kind for kind in kinds if name in wanted and kind != wanted[name]]
             if other:

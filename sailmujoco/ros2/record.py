@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from . import messages
-from .contract import DEFAULT_ORIGIN, TOPICS, step_row, topic_fields
+from .contract import DEFAULT_ORIGIN, TOPICS, course_topics, step_row, topic_fields
 from .geodesy import Origin
 
 __all__ = ["DEFAULT_ORIGIN", "DISTROS", "INSTALL", "TOPICS", "McapLog", "RosbagsMissing", "check_log_path"]
@@ -90,8 +90,9 @@ class McapLog:
         self._folder = Path(tempfile.mkdtemp(prefix="sailmujoco-mcap-"))
         self._writer = Writer(self._folder / self.path.stem, version=9, storage_plugin=StoragePlugin.MCAP)
         self._writer.open()
+        self.topics = {**TOPICS, **(course_topics(env.observation_spec()) if env is not None else {})}
         self._connections = {topic: self._writer.add_connection(topic, kind, typestore=self._store)
-                             for topic, kind in TOPICS.items()}
+                             for topic, kind in self.topics.items()}
         self.messages = 0
 
     def __enter__(self) -> McapLog:
@@ -136,7 +137,8 @@ class McapLog:
         """
         stamp = int(round(row["t"] * 1e9))
         for topic, fields in topic_fields(row, self.origin, stamp).items():
-            raw = self._store.serialize_cdr(self._message(TOPICS[topic], fields, stamp), TOPICS[topic])
+            kind = self.topics[topic]
+            raw = self._store.serialize_cdr(self._message(kind, fields, stamp), kind)
             self._writer.write(self._connections[topic], stamp, raw)
             self.messages += 1
 
