@@ -67,14 +67,15 @@ _FORCES, _PARAMS = "forces", "params"
 
 
 def task_options(task: str) -> tuple:
-    """The option names the task ``task`` takes (its constructor's and its bases', less seed).
+    """The option names the task ``task`` takes (its constructor's and its bases', less seed and
+    the base's options the task lays itself, its ``fixed_options``).
 
     Parameters
     ----------
     task : str
         A registered task (``TASKS``).
     """
-    names = []
+    names = list(getattr(TASKS[task], "fixed_options", ()))
     for cls in TASKS[task].__mro__:
         init = vars(cls).get("__init__")
         if init is None:
@@ -83,7 +84,7 @@ def task_options(task: str) -> tuple:
             if (p.kind in (p.POSITIONAL_OR_KEYWORD, p.KEYWORD_ONLY)
                     and name not in ("self", "seed") and name not in names):
                 names.append(name)
-    return tuple(names)
+    return tuple(names[len(getattr(TASKS[task], "fixed_options", ())):])
 
 
 def keyword_options(task: str) -> tuple:

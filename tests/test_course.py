@@ -233,3 +233,10 @@ def test_videos_and_the_map_get_the_box_and_the_square_as_their_corners():
     # an easterly's box about (60, 0): corners downwind-port, downwind-starboard, up-starboard, up-port
     np.testing.assert_allclose(target["corners"], [(40.0, 20.0), (40.0, -20.0), (80.0, -20.0), (80.0, 20.0)],
                                atol=1e-12)
+
+
+@pytest.mark.parametrize("option", ["leg", "laps", "course"])
+def test_precision_navigation_refuses_the_races_own_options_in_one_line(option):
+    message = rf"^unknown option '{option}' in suite.load \(accepted: .*distance, "
+    with pytest.raises(ValueError, match=message):
+        suite.load("viel_boat", "precision_navigation", **{option: 2})

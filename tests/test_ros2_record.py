@@ -124,12 +124,14 @@ def test_a_course_tasks_marks_are_logged_and_published_as_points_in_the_map_fram
     """The race's legs on /course/last_mark and /course/next_mark: the start (0, 0) and the
     windward mark 100 m up a wind from 90 deg, i.e. (100, 0) east, as laid by hand."""
     from sailmujoco.controllers.factories import line_following
+
     from sailmujoco.ros2.node import Bridge
 
     path = tmp_path / "race.mcap"
     env = suite.load("viel_boat", "upwind_downwind", seed=0, time_limit=2.0, wind_from_deg=90.0)
+    point = "geometry_msgs/msg/PointStamped"
     assert {k: v for k, v in Bridge(env).topics.items() if k.startswith("/course")} == {
-        "/course/last_mark": "geometry_msgs/msg/PointStamped", "/course/next_mark": "geometry_msgs/msg/PointStamped"}
+        "/course/last_mark": point, "/course/next_mark": point}
     with McapLog(env, path) as log:
         table = suite.rollout(env, line_following(env), record=log)
     points = {}

@@ -367,10 +367,13 @@ class PrecisionNavigation(UpwindDownwind):
 
     name = "precision_navigation"
     duration = 600.0
+    fixed_options = ("leg", "laps", "course")  # the race's, which this event lays itself
 
     def __init__(self, seed=None, distance: float = 50.0, gap: float = 20.0, line: float = 10.0, **kwargs):
-        if kwargs.get("course") is not None:
-            raise ValueError("precision_navigation lays its own buoys; a course file is for upwind_downwind")
+        given = [name for name in self.fixed_options if name in kwargs]
+        if given:
+            raise ValueError(f"precision_navigation lays its own buoys (distance, gap, line): {given[0]} "
+                             "is upwind_downwind's option")
         super().__init__(seed, leg=distance, line=line, **kwargs)
         self.gap = check_number("gap", gap, 0.0, unit="m")
         self.marks = lay([(-self.gap / 2, -self.leg), (self.gap / 2, -self.leg)], self.wind_from)
