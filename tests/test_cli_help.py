@@ -14,7 +14,7 @@ def test_study_help_lists_every_registered_study_with_its_title(capsys):
     assert done.value.code == 0
     out = capsys.readouterr().out
     names = [ep.name for ep in metadata.entry_points(group="sailmujoco.studies")]
-    assert len(names) == 8
+    assert len(names) == 9  # the eight paper and boat studies and the courses
     for name in names:
         line = next((x for x in out.splitlines() if x.split()[:1] == [name]), None)
         assert line is not None, name
